@@ -1,0 +1,301 @@
+"""Stage (2.20)/(4.2): the Maclaurin coefficients of the layer kernel.
+
+    L(s)/s = A (1 + m_1 s^2 + m_2 s^4 + ...)            (2.20)
+    s/L(s) = A^{-1} (1 + M_1 s^2 + M_2 s^4 + ...),
+    M_k = - sum_{j=0}^{k-1} m_{k-j} M_j,  M_0 = 1       (4.2)
+
+Computed by power-series arithmetic on the closed-form Taylor coefficients of the
+numerator and denominator of L(s)/s (never by ``sympy.series`` on the whole expression):
+
+* symbolic nu (or kappa): fraction-free division in the polynomial ring QQ[nu]; the
+  denominators are products of powers of the factors of ``N_0`` and ``D_0`` and are
+  cancelled by exact division, which avoids a gcd per coefficient;
+* exact rational nu: arithmetic in QQ;
+* float nu: mpmath at the layer's precision.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
+
+import mpmath
+import sympy as sp
+from sympy import QQ
+from sympy.polys.rings import ring
+
+from . import symbols as S
+from ._series import powers, quotient_field, quotient_fraction_free, reciprocal_recurrence
+from .kernels import LayerKernel, _check_order
+from .results import checked_lambdify
+
+
+class _PolyDomain:
+    """Polynomials in one symbol over QQ (sympy's sparse ring)."""
+
+    kind = "poly"
+
+    def __init__(self, layer: LayerKernel):
+        sym = layer.parameter
+        self.ring, self.gen = ring([sym], QQ)
+        self.one, self.zero = self.ring.one, self.ring.zero
+        if sym == S.kappa or not hasattr(layer, "kappa"):
+            self.kappa = self.gen
+        else:
+            self.kappa = 3 - 4 * self.gen
+
+    def const(self, p: int, q: int) -> Any:
+        return self.ring(QQ(p, q))
+
+
+class _RationalDomain:
+    kind = "rational"
+    one, zero = QQ(1), QQ(0)
+
+    def __init__(self, layer: LayerKernel):
+        k = getattr(layer, "kappa", None)
+        self.kappa = QQ(int(k.p), int(k.q)) if k is not None else None
+
+    @staticmethod
+    def const(p: int, q: int) -> Any:
+        return QQ(p, q)
+
+
+class _MpmathDomain:
+    kind = "mpmath"
+
+    def __init__(self, layer: Any):
+        self.dps = layer.dps
+        with mpmath.workdps(self.dps + 10):
+            self.kappa = mpmath.mpf(layer.kappa)
+            self.one, self.zero = mpmath.mpf(1), mpmath.mpf(0)
+
+    def const(self, p: int, q: int) -> Any:
+        with mpmath.workdps(self.dps + 10):
+            return mpmath.mpf(p) / q
+
+
+def _domain(layer: LayerKernel):
+    if layer.parameter is not None:
+        return _PolyDomain(layer)
+    nu = getattr(layer, "nu", None)
+    if isinstance(nu, mpmath.mpf):
+        return _MpmathDomain(layer)
+    return _RationalDomain(layer)
+
+
+def _cancel_known(num, den_factors: dict, content) -> tuple[Any, dict, Any]:
+    """Cancel ``num / (content * prod f^e)`` by exact division by the known factors f."""
+    out = dict(den_factors)
+    for f, e in den_factors.items():
+        while e > 0 and num:
+            q, r = num.div(f)
+            if r:
+                break
+            num, e = q, e - 1
+        out[f] = e
+    return num, out, content
+
+
+def _poly_ratio_expr(num, den_factors: dict, content, domain: _PolyDomain) -> sp.Expr:
+    """sympy expression ``num / (content * prod f^e)`` with the denominator kept factored."""
+    c, prim = num.primitive() if num else (QQ(0), num)
+    if not num:
+        return sp.Integer(0)
+    # make the leading coefficient of the primitive part positive
+    if prim.LC < 0:
+        c, prim = -c, -prim
+    den = sp.Mul(*[sp.Pow(f.as_expr(), e) for f, e in den_factors.items() if e])
+    return sp.Rational(int((c / content).numerator), int((c / content).denominator)) * prim.as_expr() / den
+
+
+@dataclass(frozen=True)
+class KernelCoefficients:
+    """A, (m_0..m_order) of (2.20) and (M_0..M_order) of (4.2) for one layer.
+
+    For a symbolic layer the entries are sympy expressions (rational functions of nu or
+    kappa with factored denominators); for an exact nu, sympy Rationals; for a float nu,
+    mpmath numbers at the layer's precision.
+
+    Attributes
+    ----------
+    layer, order, A, m, M
+    """
+
+    layer: LayerKernel
+    order: int
+    A: Any
+    m: tuple
+    M: tuple
+
+    equation = "2.20"
+
+    @property
+    def A_expr(self) -> sp.Expr:
+        return _to_expr(self.A, self.layer)
+
+    def m_expr(self, n: int) -> sp.Expr:
+        return _to_expr(self.m[n], self.layer)
+
+    def M_expr(self, k: int) -> sp.Expr:
+        return _to_expr(self.M[k], self.layer)
+
+    def series(self, s: sp.Expr = S.s) -> sp.Expr:
+        """The truncated series (2.20): ``A (1 + m_1 s^2 + ... + m_order s^(2 order))``."""
+        return self.A_expr * sp.Add(*[self.m_expr(k) * s ** (2 * k) for k in range(self.order + 1)])
+
+    def reciprocal_series(self, s: sp.Expr = S.s) -> sp.Expr:
+        """The truncated ``s/L(s) = A^{-1}(1 + M_1 s^2 + ...)`` of section 5."""
+        return sp.Add(*[self.M_expr(k) * s ** (2 * k) for k in range(self.order + 1)]) / self.A_expr
+
+    def latex(self) -> str:
+        """LaTeX of A (2.4), the m_n (2.20) and the M_k (4.2)."""
+        lines = [rf"\mathcal{{A}} = {sp.latex(self.A_expr)} \tag{{2.4}}"]
+        for n in range(1, self.order + 1):
+            lines.append(rf"m_{{{n}}} = {sp.latex(self.m_expr(n))} \tag{{2.20}}")
+        for k in range(1, self.order + 1):
+            lines.append(rf"M_{{{k}}} = {sp.latex(self.M_expr(k))} \tag{{4.2}}")
+        return " \\\\\n".join(lines)
+
+    def lambdify(self, backend: str = "numpy"):
+        """Numeric function ``f(nu) -> (A, m_1..m_order, M_1..M_order)`` (symbolic layers only).
+
+        The argument is the layer's parameter (nu, or kappa when ``parameter='kappa'``).
+        """
+        p = self.layer.parameter
+        if p is None:
+            raise ValueError("the coefficients of a numeric layer are numbers already")
+        exprs = [self.A_expr] + [self.m_expr(n) for n in range(1, self.order + 1)]
+        exprs += [self.M_expr(k) for k in range(1, self.order + 1)]
+        return checked_lambdify([p], exprs, backend)
+
+
+def _to_expr(x: Any, layer: LayerKernel) -> sp.Expr:
+    if isinstance(x, sp.Basic):
+        return x
+    if isinstance(x, mpmath.mpf):
+        return sp.Float(x, getattr(layer, "dps", 15))
+    return sp.sympify(x)
+
+
+@lru_cache(maxsize=256)
+def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
+    """A, m_n (2.20) and M_k by the recurrence (4.2), for n, k <= ``order``.
+
+    Parameters
+    ----------
+    layer:
+        Any :class:`~thinlayer.kernels.LayerKernel` with a small-s expansion.
+    order:
+        Highest index n of m_n and M_n (a non-negative integer).
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer, kernel_coefficients
+    >>> c = kernel_coefficients(BondedLayer(), 1)
+    >>> c.m[1]
+    -nu*(1 - 4*nu)/(3*(1 - 2*nu)*(1 - nu))
+    """
+    order = _check_order(order, "order")
+    dom = _domain(layer)
+    num, den = layer.series_parts(order, dom)
+    if dom.kind == "poly":
+        A, m, M = _coefficients_poly(num, den, order, dom)
+    elif dom.kind == "mpmath":
+        with mpmath.workdps(dom.dps + 10):
+            q = quotient_field(num, den, order)
+            m = [qi / q[0] for qi in q]
+            M = reciprocal_recurrence(m, order, dom.one, dom.zero)
+            A = q[0]
+        with mpmath.workdps(dom.dps):
+            A, m, M = +A, [+x for x in m], [+x for x in M]
+    else:
+        q = quotient_field(num, den, order)
+        m = [qi / q[0] for qi in q]
+        M = reciprocal_recurrence(m, order, dom.one, dom.zero)
+        A = sp.Rational(int(q[0].numerator), int(q[0].denominator))
+        m = [sp.Rational(int(x.numerator), int(x.denominator)) for x in m]
+        M = [sp.Rational(int(x.numerator), int(x.denominator)) for x in M]
+    return KernelCoefficients(layer, order, A, tuple(m), tuple(M))
+
+
+def _pretty_nu(expr: sp.Expr, sym: sp.Symbol) -> sp.Expr:
+    """Write linear factors ``a nu - b`` with a positive constant (``1 - 2 nu`` rather than ``2 nu - 1``)."""
+    return expr
+
+
+def _coefficients_poly(num, den, order, dom: _PolyDomain):
+    T = quotient_fraction_free(num, den, order, dom.one)
+    T0, d0 = T[0], den[0]
+    c_T0, f_T0 = T0.factor_list()
+    c_d0, f_d0 = d0.factor_list()
+    d0p = powers(d0, order, dom.one)
+
+    def ratio(numer, eT0: int, ed0: int) -> sp.Expr:
+        factors: dict = {}
+        for f, e in f_T0:
+            factors[f] = factors.get(f, 0) + e * eT0
+        for f, e in f_d0:
+            factors[f] = factors.get(f, 0) + e * ed0
+        content = c_T0**eT0 * c_d0**ed0
+        numer, factors, content = _cancel_known(numer, factors, content)
+        return _sign_normal(_poly_ratio_expr(numer, factors, content, dom))
+
+    A = ratio(T0, 0, 1)
+    # m_n = T_n / (T_0 d0^n)
+    m = [sp.Integer(1)] + [ratio(T[n], 1, n) for n in range(1, order + 1)]
+    # (4.2) with a common denominator: M_k = U_k / (T_0^k d0^k),
+    # U_k = - sum_{j<k} T_{k-j} U_j T_0^{k-j-1}
+    T0p = powers(T0, order, dom.one)
+    U = [dom.one]
+    for k in range(1, order + 1):
+        acc = dom.zero
+        for j in range(k):
+            acc -= T[k - j] * U[j] * T0p[k - j - 1]
+        U.append(acc)
+    M = [sp.Integer(1)] + [ratio(U[k], k, k) for k in range(1, order + 1)]
+    del d0p
+    return A, m, M
+
+
+def _sign_normal(expr: sp.Expr) -> sp.Expr:
+    """Rewrite factors ``(c*x - d)`` with negative constant as ``-(d - c*x)`` for readability."""
+    num, den = sp.fraction(expr)
+    sign = 1
+    new = []
+    for base, e in (den.as_powers_dict().items() if den != 1 else []):
+        if base.is_Add and base.as_coeff_Add()[0] < 0:
+            new.append((-base) ** e)
+            sign *= (-1) ** e
+        else:
+            new.append(base**e)
+    return sign * num / sp.Mul(*new)
+
+
+def reciprocal_by_inversion(layer: LayerKernel, order: int) -> tuple:
+    """M_0..M_order from the direct inversion ``s/L(s) = D(s^2)/N(s^2)`` (independent of (4.2)).
+
+    Used to cross-check the recurrence (4.2).  Returns sympy objects (or mpmath numbers).
+    """
+    order = _check_order(order, "order")
+    dom = _domain(layer)
+    num, den = layer.series_parts(order, dom)
+    if dom.kind == "poly":
+        T = quotient_fraction_free(den, num, order, dom.one)  # r_k = T_k / N_0^(k+1)
+        out = [sp.cancel(T[k].as_expr() / (T[0].as_expr() * num[0].as_expr() ** k)) for k in range(order + 1)]
+        return tuple(out)
+    ctx = mpmath.workdps(dom.dps + 10) if dom.kind == "mpmath" else _nullcontext()
+    with ctx:
+        r = quotient_field(den, num, order)
+        out = [x / r[0] for x in r]
+    if dom.kind == "rational":
+        return tuple(sp.Rational(int(x.numerator), int(x.denominator)) for x in out)
+    return tuple(out)
+
+
+class _nullcontext:
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *a):
+        return False

@@ -1,0 +1,104 @@
+"""Immutable result objects: every stage of the derivation returns one.
+
+A result knows the paper's equation number it reproduces, prints itself as LaTeX and
+turns into numeric functions through :func:`checked_lambdify`, which refuses any
+expression with a free symbol that is not among the named arguments.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+BACKENDS = ("numpy", "mpmath", "math", "sympy")
+
+
+class MissingArgumentError(ValueError):
+    """An expression has free symbols that are not among the lambdify arguments."""
+
+
+def _as_symbols(args: Sequence[sp.Symbol] | sp.Symbol) -> tuple[sp.Symbol, ...]:
+    if isinstance(args, sp.Basic):
+        args = (args,)
+    args = tuple(args)
+    for a in args:
+        if not isinstance(a, sp.Symbol):
+            raise TypeError(f"lambdify arguments must be sympy Symbols, got {a!r} ({type(a).__name__})")
+    if len(set(args)) != len(args):
+        raise ValueError(f"lambdify arguments repeat a symbol: {args}")
+    return args
+
+
+def checked_lambdify(
+    args: Sequence[sp.Symbol] | sp.Symbol,
+    exprs: sp.Expr | Iterable[sp.Expr],
+    backend: str = "numpy",
+) -> Callable:
+    """``sympy.lambdify(args, exprs)`` that first checks every free symbol is an argument.
+
+    Parameters
+    ----------
+    args:
+        The arguments of the numeric function, in call order.
+    exprs:
+        One expression or a sequence of them (the function then returns a tuple).
+    backend:
+        ``"numpy"`` (vectorised), ``"mpmath"`` (arbitrary precision, uses ``mpmath.mp.dps``),
+        ``"math"`` or ``"sympy"``.
+
+    Raises
+    ------
+    MissingArgumentError
+        naming each free symbol missing from ``args``.
+    """
+    if backend not in BACKENDS:
+        raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")
+    args = _as_symbols(args)
+    single = isinstance(exprs, sp.Basic)
+    items = [exprs] if single else list(exprs)
+    free: set[sp.Symbol] = set()
+    for e in items:
+        free |= sp.sympify(e).free_symbols
+    missing = sorted(free - set(args), key=lambda q: q.name)
+    if missing:
+        names = ", ".join(m.name for m in missing)
+        raise MissingArgumentError(
+            f"the expression has free symbol(s) {names} missing from the arguments "
+            f"({', '.join(a.name for a in args) or 'none'}); add them to the argument list "
+            f"or substitute values first"
+        )
+    modules = {"numpy": "numpy", "mpmath": "mpmath", "math": "math", "sympy": "sympy"}[backend]
+    f = sp.lambdify(args, items[0] if single else tuple(items), modules=modules, cse=True)
+    if backend == "numpy" and single and not any(items[0].has(a) for a in args):
+        # a constant expression must still broadcast like its arguments
+        const = f
+
+        def f(*xs, _c=const):  # type: ignore[no-redef]
+            import numpy as np
+
+            shape = np.broadcast(*[np.asarray(x) for x in xs]).shape if xs else ()
+            return np.full(shape, float(_c(*xs))) if shape else _c(*xs)
+
+    f.__doc__ = f"numeric function of ({', '.join(a.name for a in args)}) [{backend}]"
+    return f
+
+
+@dataclass(frozen=True)
+class Equation:
+    """A single named equation ``lhs = rhs`` with its number in the paper."""
+
+    lhs: sp.Expr
+    rhs: sp.Expr
+    number: str
+
+    def latex(self) -> str:
+        return rf"{sp.latex(self.lhs)} = {sp.latex(self.rhs)} \tag{{{self.number}}}"
+
+
+def latex_equation(lhs: sp.Expr | str, rhs: sp.Expr | str, number: str | None) -> str:
+    """LaTeX of ``lhs = rhs`` with an optional ``\\tag`` of the paper's equation number."""
+    l = lhs if isinstance(lhs, str) else sp.latex(lhs)
+    r = rhs if isinstance(rhs, str) else sp.latex(rhs)
+    tag = rf" \tag{{{number}}}" if number else ""
+    return f"{l} = {r}{tag}"

@@ -1,0 +1,50 @@
+"""Canonical sympy symbols of thinlayer, named as in the paper.
+
+Every stage function uses these symbols, so results from different stages can be
+combined and substituted into each other without renaming.
+
+===============  =====================================================  ==========
+symbol           meaning                                                paper
+===============  =====================================================  ==========
+``x1, x2``       dimensional surface coordinates                        (1.1)
+``xi1, xi2``     scaled coordinates, ``x_j = H_* xi_j``                 (2.8)
+``nu``           Poisson ratio                                          (1.3)
+``kappa``        ``3 - 4 nu``                                           (2.3)
+``mu``           shear modulus                                          (1.3)
+``vartheta``     ``mu / (1 - nu)``                                      (2.1)
+``H``            layer thickness                                        (1.2)
+``delta0``       indentation depth                                      (1.2)
+``epsilon``      small parameter                                        (1.2)
+``Lambda``       large parameter ``1/epsilon``                          (2.9)
+``H_s``          scaled thickness ``H_*`` (``H = epsilon H_*``)          (1.2)
+``delta0_s``     scaled indentation ``delta_0^*``                       (1.2)
+``s, u``         Fourier variable of the kernel                         (2.3)
+===============  =====================================================  ==========
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+x1, x2 = sp.symbols("x_1 x_2", real=True)
+xi1, xi2 = sp.symbols("xi_1 xi_2", real=True)
+nu = sp.Symbol("nu", real=True)
+kappa = sp.Symbol("kappa", positive=True)
+mu = sp.Symbol("mu", positive=True)
+vartheta = sp.Symbol("vartheta", positive=True)
+H = sp.Symbol("H", positive=True)
+delta0 = sp.Symbol("delta_0", positive=True)
+epsilon = sp.Symbol("epsilon", positive=True)
+Lambda = sp.Symbol("Lambda", positive=True)
+H_s = sp.Symbol("H_*", positive=True)
+delta0_s = sp.Symbol("delta_0^*", positive=True)
+s = sp.Symbol("s", nonnegative=True)
+u = sp.Symbol("u", nonnegative=True)
+z = sp.Symbol("z")  # z = s**2, the variable of the series (2.20)
+
+#: vartheta in terms of the material constants, (2.1)
+VARTHETA = mu / (1 - nu)
+
+
+def starred(sym: sp.Symbol) -> sp.Symbol:
+    """The scaled ("starred") counterpart of a punch parameter, as in (1.2): ``R_1 -> R_1^*``."""
+    return sp.Symbol(sym.name + "^*", **sym.assumptions0)
