@@ -1,12 +1,37 @@
-"""thinlayer: symbolic asymptotics of a rigid punch on a thin elastic layer."""
+"""thinlayer: symbolic asymptotics of a rigid punch pressed into a thin elastic layer.
+
+Stages of the paper, each a pure function returning an immutable result with ``latex()``
+and ``lambdify()``:
+
+``kernel_coefficients`` (2.20), (4.2) -> ``kernel_moment`` (2.15), (2.21) ->
+``moment_expansion`` (2.22) -> ``inner_pressure`` (2.24)-(2.31), (4.1).
+"""
+from . import errata, symbols
 from .coefficients import KernelCoefficients, kernel_coefficients
-from .kernels import BondedLayer, FrictionlessLayer, HalfSpace, LayerKernel
+from .inner import InnerPressure, inner_pressure
+from .kernels import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace, IncompressibleLayerError, LayerKernel
+from .moments import MomentExpansion, kernel_moment, moment_expansion
+from .punch import Punch, PunchError
+from .results import MissingArgumentError, checked_lambdify
 
 __all__ = [
     "BondedLayer",
     "FrictionlessLayer",
+    "GenericLayer",
     "HalfSpace",
+    "IncompressibleLayerError",
     "LayerKernel",
     "KernelCoefficients",
     "kernel_coefficients",
+    "kernel_moment",
+    "MomentExpansion",
+    "moment_expansion",
+    "Punch",
+    "PunchError",
+    "InnerPressure",
+    "inner_pressure",
+    "MissingArgumentError",
+    "checked_lambdify",
+    "errata",
+    "symbols",
 ]

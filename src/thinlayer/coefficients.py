@@ -26,7 +26,7 @@ from sympy.polys.rings import ring
 
 from . import symbols as S
 from ._series import powers, quotient_field, quotient_fraction_free, reciprocal_recurrence
-from .kernels import LayerKernel, _check_order
+from .kernels import GenericLayer, LayerKernel, _check_order
 from .results import checked_lambdify
 
 
@@ -197,6 +197,10 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     -nu*(1 - 4*nu)/(3*(1 - 2*nu)*(1 - nu))
     """
     order = _check_order(order, "order")
+    if isinstance(layer, GenericLayer):
+        m = [sp.Integer(1)] + [layer.m_symbol(n) for n in range(1, order + 1)]
+        M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
+        return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
     dom = _domain(layer)
     num, den = layer.series_parts(order, dom)
     if dom.kind == "poly":
@@ -219,17 +223,11 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     return KernelCoefficients(layer, order, A, tuple(m), tuple(M))
 
 
-def _pretty_nu(expr: sp.Expr, sym: sp.Symbol) -> sp.Expr:
-    """Write linear factors ``a nu - b`` with a positive constant (``1 - 2 nu`` rather than ``2 nu - 1``)."""
-    return expr
-
-
 def _coefficients_poly(num, den, order, dom: _PolyDomain):
     T = quotient_fraction_free(num, den, order, dom.one)
     T0, d0 = T[0], den[0]
     c_T0, f_T0 = T0.factor_list()
     c_d0, f_d0 = d0.factor_list()
-    d0p = powers(d0, order, dom.one)
 
     def ratio(numer, eT0: int, ed0: int) -> sp.Expr:
         factors: dict = {}
@@ -254,7 +252,6 @@ def _coefficients_poly(num, den, order, dom: _PolyDomain):
             acc -= T[k - j] * U[j] * T0p[k - j - 1]
         U.append(acc)
     M = [sp.Integer(1)] + [ratio(U[k], k, k) for k in range(1, order + 1)]
-    del d0p
     return A, m, M
 
 
@@ -278,6 +275,10 @@ def reciprocal_by_inversion(layer: LayerKernel, order: int) -> tuple:
     Used to cross-check the recurrence (4.2).  Returns sympy objects (or mpmath numbers).
     """
     order = _check_order(order, "order")
+    if isinstance(layer, GenericLayer):
+        m = [sp.Integer(1)] + [layer.m_symbol(n) for n in range(1, order + 1)]
+        M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
+        return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
     dom = _domain(layer)
     num, den = layer.series_parts(order, dom)
     if dom.kind == "poly":

@@ -314,3 +314,34 @@ class HalfSpace(LayerKernel):
         if backend == "mpmath":
             return 1 / mpmath.mpf(u) if over_u else mpmath.mpf(1)
         raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+
+
+@dataclass(frozen=True)
+class GenericLayer(LayerKernel):
+    """A layer known only through its coefficients: ``A`` and ``m_n`` stay plain symbols.
+
+    Results built on it read like the paper's formulas, e.g. (2.30) in terms of ``A`` and
+    ``m_1``; the ``M_k`` follow from (4.2) as polynomials in the ``m_n``.
+    """
+
+    name: str = field(default="generic", init=False)
+    equation: str = field(default="2.20", init=False)
+
+    A_symbol = sp.Symbol("mathcal{A}", positive=True)
+
+    @staticmethod
+    def m_symbol(n: int) -> sp.Symbol:
+        return sp.Symbol(f"m_{n}")
+
+    def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        raise ValueError("a GenericLayer has no closed-form L(u); use BondedLayer or FrictionlessLayer")
+
+    def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
+        raise ValueError("a GenericLayer has no Taylor data; its coefficients are symbols")
+
+    def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
+        raise ValueError("a GenericLayer cannot be evaluated numerically")
+
+    @property
+    def parameter(self) -> sp.Symbol | None:
+        return self.A_symbol

@@ -1,0 +1,164 @@
+"""The punch shape Phi(x1, x2): the surface ``x3 = -Phi(x1, x2)`` of a rigid polynomial punch (1.1).
+
+A :class:`Punch` holds a polynomial in the canonical coordinates ``thinlayer.symbols.x1, x2``
+with symbolic or numeric coefficients.  Its *scaled* form (1.2), (2.13) is
+
+    Phi^*(xi) = Lambda * Phi(H_* xi; theta(theta^*)),
+
+where ``theta(theta^*)`` expresses the punch parameters through their scaled ("starred")
+counterparts.  For the elliptic paraboloid (1.1), ``R_j = R_j^*/epsilon = Lambda R_j^*`` and
+Phi^* reproduces (2.13).  A punch without a scaling map keeps its parameters, and then
+Lambda stays visible in Phi^*.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from . import symbols as S
+from .moments import laplacian
+
+
+class PunchError(ValueError):
+    """The punch is not a polynomial in (x1, x2) or is otherwise inadmissible."""
+
+
+@dataclass(frozen=True)
+class Punch:
+    """A rigid punch ``x3 = -Phi(x1, x2)`` with polynomial Phi (1.1).
+
+    Parameters
+    ----------
+    expr:
+        Phi as a sympy expression (or string), polynomial in ``x1, x2``.
+    x1, x2:
+        The coordinate symbols used in ``expr`` (default: the canonical ``thinlayer.symbols.x1, x2``).
+    scaling:
+        Optional mapping ``{parameter: expression in starred parameters and Lambda}`` defining
+        the scaled form (1.2).  Default: none.
+    name:
+        A label for reports.
+
+    Examples
+    --------
+    >>> from thinlayer import Punch
+    >>> p = Punch.elliptic_paraboloid()
+    >>> p.expr
+    x_1**2/(2*R_1) + x_2**2/(2*R_2)
+    >>> p.degree
+    2
+    """
+
+    expr: sp.Expr
+    scaling: tuple = ()
+    name: str = "punch"
+    _poly: sp.Poly = field(default=None, repr=False, compare=False)
+
+    def __init__(self, expr, x1: sp.Symbol = S.x1, x2: sp.Symbol = S.x2, scaling: dict | None = None,
+                 name: str = "punch"):
+        if isinstance(expr, str):
+            try:
+                expr = sp.sympify(expr, locals={x1.name: x1, x2.name: x2})
+            except (sp.SympifyError, SyntaxError, TypeError) as exc:
+                raise PunchError(f"could not parse the punch expression {expr!r}: {exc}") from exc
+        expr = sp.sympify(expr)
+        if not isinstance(x1, sp.Symbol) or not isinstance(x2, sp.Symbol) or x1 == x2:
+            raise PunchError(f"x1 and x2 must be two different sympy Symbols, got {x1!r}, {x2!r}")
+        # the user's coordinates may be any symbols (also unassumed ones): map onto the canonical ones
+        expr = expr.xreplace({x1: S.x1, x2: S.x2})
+        if expr.has(sp.zoo, sp.oo, sp.nan):
+            raise PunchError(f"the punch expression {expr} is not finite")
+        if not expr.is_polynomial(S.x1, S.x2):
+            bad = [a for a in sp.preorder_traversal(expr)
+                   if isinstance(a, (sp.Function, sp.Pow)) and a.has(S.x1, S.x2)
+                   and not (isinstance(a, sp.Pow) and a.exp.is_Integer and a.exp >= 0)]
+            what = f" (offending part: {bad[0]})" if bad else ""
+            raise PunchError(
+                f"the punch Phi = {expr} is not a polynomial in {x1}, {x2}{what}; thinlayer needs "
+                "Phi(x1, x2) = sum c_ij x1^i x2^j with coefficients free of x1, x2"
+            )
+        poly = sp.Poly(expr, S.x1, S.x2)
+        if poly.total_degree() < 1:
+            raise PunchError(f"the punch Phi = {expr} is constant; it must depend on {x1} or {x2}")
+        sc = tuple(sorted((sp.sympify(scaling or {}).items()), key=lambda kv: str(kv[0])))
+        for k, _ in sc:
+            if not isinstance(k, sp.Symbol) or k not in expr.free_symbols:
+                raise PunchError(f"scaling key {k!r} is not a parameter of the punch {expr}")
+        object.__setattr__(self, "expr", expr)
+        object.__setattr__(self, "scaling", sc)
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "_poly", poly)
+
+    # ---- catalogue (models) ------------------------------------------------------------
+    @classmethod
+    def elliptic_paraboloid(cls, R1=None, R2=None) -> "Punch":
+        """``Phi = x1^2/(2 R1) + x2^2/(2 R2)`` (1.1); symbols R_1, R_2 when not given."""
+        r1 = sp.Symbol("R_1", positive=True) if R1 is None else sp.sympify(R1)
+        r2 = sp.Symbol("R_2", positive=True) if R2 is None else sp.sympify(R2)
+        for nm, r in (("R1", r1), ("R2", r2)):
+            if r.is_number and not r > 0:
+                raise PunchError(f"{nm} must be positive, got {r}")
+        scaling = {r: S.Lambda * S.starred(r) for r in (r1, r2) if isinstance(r, sp.Symbol)}
+        return cls(S.x1**2 / (2 * r1) + S.x2**2 / (2 * r2), scaling=scaling, name="elliptic paraboloid")
+
+    @classmethod
+    def paraboloid(cls, R=None) -> "Punch":
+        """Paraboloid of revolution ``Phi = (x1^2 + x2^2)/(2R)``."""
+        r = sp.Symbol("R", positive=True) if R is None else sp.sympify(R)
+        scaling = {r: S.Lambda * S.starred(r)} if isinstance(r, sp.Symbol) else {}
+        return cls((S.x1**2 + S.x2**2) / (2 * r), scaling=scaling, name="paraboloid of revolution")
+
+    @classmethod
+    def fourth_degree(cls, R=None, K=None) -> "Punch":
+        """Fourth-degree paraboloid ``Phi = (x1^2 + x2^2)/(2R) + (x1^2 + x2^2)^2/K^3`` (section 5)."""
+        r = sp.Symbol("R", positive=True) if R is None else sp.sympify(R)
+        k = sp.Symbol("K", positive=True) if K is None else sp.sympify(K)
+        rr = S.x1**2 + S.x2**2
+        return cls(rr / (2 * r) + rr**2 / k**3, name="fourth-degree paraboloid")
+
+    # ---- properties --------------------------------------------------------------------
+    @property
+    def degree(self) -> int:
+        """Total degree in (x1, x2)."""
+        return self._poly.total_degree()
+
+    @property
+    def parameters(self) -> tuple[sp.Symbol, ...]:
+        """Free symbols other than x1, x2, sorted by name."""
+        return tuple(sorted(self.expr.free_symbols - {S.x1, S.x2}, key=lambda q: q.name))
+
+    def laplacian(self, power: int = 1) -> sp.Expr:
+        """``Delta^power Phi`` in (x1, x2), computed on the polynomial representation."""
+        p = self._poly
+        for _ in range(power):
+            p = p.diff(S.x1).diff(S.x1) + p.diff(S.x2).diff(S.x2)
+        return p.as_expr()
+
+    def subs(self, values: dict) -> "Punch":
+        """A new punch with parameters replaced (scaling entries of replaced parameters dropped)."""
+        values = {sp.Symbol(k) if isinstance(k, str) else k: v for k, v in values.items()}
+        unknown = [k for k in values if k not in self.parameters]
+        if unknown:
+            raise PunchError(f"{unknown} are not parameters of the punch; its parameters are {self.parameters}")
+        sc = {k: v for k, v in self.scaling if k not in values}
+        return Punch(self.expr.subs(values), scaling=sc, name=self.name)
+
+    def scaled(self, Hs: sp.Expr = S.H_s, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2) -> sp.Expr:
+        """Phi^*(xi) = Lambda Phi(H_* xi; theta(theta^*)) (1.2), (2.13)."""
+        e = self.expr.xreplace({S.x1: Hs * v1, S.x2: Hs * v2}).xreplace(dict(self.scaling))
+        return sp.expand(S.Lambda * e)
+
+    def latex(self) -> str:
+        return rf"\Phi(x_1, x_2) = {sp.latex(self.expr)} \tag{{1.1}}"
+
+    def lambdify(self, args=None, backend: str = "numpy"):
+        """Numeric Phi; default argument order ``(x1, x2, *parameters)``."""
+        from .results import checked_lambdify
+
+        args = (S.x1, S.x2, *self.parameters) if args is None else args
+        return checked_lambdify(args, self.expr, backend)
+
+
+# re-exported helper, used by the inner expansion
+__all__ = ["Punch", "PunchError", "laplacian"]
