@@ -7,12 +7,16 @@ and ``lambdify()``:
 ``moment_expansion`` (2.22) -> ``inner_pressure`` (2.24)-(2.31), (4.1).
 """
 from . import errata, symbols
+from .contour import ContactContour, ContourAccuracy, EllipseContour, contact_contour, ellipse_contour
 from .coefficients import KernelCoefficients, kernel_coefficients
+from .direct import AxisymmetricContact, contact_for_radius, solve_axisymmetric, surface_displacement
 from .inner import InnerPressure, inner_pressure
 from .kernels import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace, IncompressibleLayerError, LayerKernel
 from .moments import MomentExpansion, kernel_moment, moment_expansion
 from .punch import Punch, PunchError
 from .results import MissingArgumentError, checked_lambdify
+from .wiener_hopf import (WienerHopfSolution, boundary_layer_exact, edge_shift_alexandrov, edge_shift_exact,
+                          edge_shift_table, wiener_hopf_solution)
 
 __all__ = [
     "BondedLayer",
@@ -33,5 +37,20 @@ __all__ = [
     "MissingArgumentError",
     "checked_lambdify",
     "errata",
+    "ContactContour",
+    "ContourAccuracy",
+    "EllipseContour",
+    "contact_contour",
+    "ellipse_contour",
+    "AxisymmetricContact",
+    "solve_axisymmetric",
+    "contact_for_radius",
+    "surface_displacement",
+    "WienerHopfSolution",
+    "boundary_layer_exact",
+    "edge_shift_alexandrov",
+    "edge_shift_exact",
+    "edge_shift_table",
+    "wiener_hopf_solution",
     "symbols",
 ]

@@ -202,7 +202,11 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
         M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
         return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
     dom = _domain(layer)
-    num, den = layer.series_parts(order, dom)
+    if dom.kind == "mpmath":
+        with mpmath.workdps(dom.dps + 10):
+            num, den = layer.series_parts(order, dom)
+    else:
+        num, den = layer.series_parts(order, dom)
     if dom.kind == "poly":
         A, m, M = _coefficients_poly(num, den, order, dom)
     elif dom.kind == "mpmath":
@@ -280,7 +284,9 @@ def reciprocal_by_inversion(layer: LayerKernel, order: int) -> tuple:
         M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
         return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
     dom = _domain(layer)
-    num, den = layer.series_parts(order, dom)
+    ctx = mpmath.workdps(dom.dps + 10) if dom.kind == "mpmath" else _nullcontext()
+    with ctx:
+        num, den = layer.series_parts(order, dom)
     if dom.kind == "poly":
         T = quotient_fraction_free(den, num, order, dom.one)  # r_k = T_k / N_0^(k+1)
         out = [sp.cancel(T[k].as_expr() / (T[0].as_expr() * num[0].as_expr() ** k)) for k in range(order + 1)]

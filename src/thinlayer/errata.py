@@ -7,7 +7,7 @@ disagrees with it.  ``tests/test_errata.py`` runs every check.
 
 >>> from thinlayer import errata
 >>> sorted({e.equation for e in errata.ENTRIES})[:3]
-['2.10', '2.17', '2.21']
+['2.1', '2.10', '2.17']
 """
 from __future__ import annotations
 
@@ -29,6 +29,7 @@ class Erratum:
     derived: str
     evidence: str
     check: Callable[[], bool] = field(compare=False, repr=False)
+    kind: str = "misprint"  # "misprint", "notation" or "ambiguous"
 
     def verify(self) -> bool:
         """Run the independent check; True when the derived form is confirmed and the print refuted."""
@@ -132,16 +133,34 @@ def _check_3_1() -> bool:
 
 
 def _check_3_21_m1() -> bool:
+    """Literal reading lim L''(s)/s gives 3 m_1; the reading (L(s)/s)'' at 0 gives m_1."""
     from .kernels import BondedLayer
 
     nu = sp.Rational(3, 10)
     k = 3 - 4 * nu
     L = (2 * k * sp.sinh(2 * S.s) - 4 * S.s) / (2 * k * sp.cosh(2 * S.s) + 1 + k**2 + 4 * S.s**2)
-    lim = sp.limit(sp.diff(L, S.s, 2) / S.s, S.s, 0)  # lim L''(s)/s, independent of the engine
+    lim_literal = sp.limit(sp.diff(L, S.s, 2) / S.s, S.s, 0)  # independent of the engine
+    lim_quotient = sp.limit(sp.diff(L / S.s, S.s, 2), S.s, 0)
     layer = BondedLayer(nu)
-    derived = lim / (6 * layer.A)
-    printed = lim / (2 * layer.A)
-    return derived == layer.m(1) and printed != layer.m(1)
+    literal_is_3m1 = lim_literal / (2 * layer.A) == 3 * layer.m(1)
+    return literal_is_3m1 and lim_quotient / (2 * layer.A) == layer.m(1) and lim_literal / (6 * layer.A) == layer.m(1)
+
+
+def _check_2_1() -> bool:
+    """Sign of (2.1): for L = 1 a positive pressure must push the surface into the layer (u_3 > 0).
+
+    Uniform unit pressure on a disc of radius a: in Hankel form (axisymmetric (2.1)),
+    u_3(0) = +-(1/vartheta) int_0^oo pbar(alpha) L dalpha with pbar = a J_1(alpha a)/alpha,
+    and the integral is a > 0 (mpmath quadrature).  (1.5) needs u_3 >= delta_0 - Phi > 0 in contact,
+    and (2.6) with its positive right-hand side follows from (2.1) only with the + sign.
+    """
+    import mpmath as mp
+
+    a = mp.mpf(1)
+    integral = mp.quadosc(lambda al: a * mp.besselj(1, al * a) / al, [0, mp.inf], period=2 * mp.pi)
+    printed_u3 = -integral  # with vartheta = 1
+    derived_u3 = +integral
+    return abs(integral - a) < 1e-10 and derived_u3 > 0 and printed_u3 < 0
 
 
 def _check_3_21_alexandrov() -> bool:
@@ -192,11 +211,21 @@ def _check_4_1() -> bool:
 
 ENTRIES: tuple[Erratum, ...] = (
     Erratum(
+        "2.1", "sign of the surface displacement",
+        r"u_3 = -\frac{1}{4\pi^2\vartheta}\iint \hat p_\varepsilon \frac{\mathcal{L}(\alpha H)}{\alpha} e^{-i\alpha\cdot x}\,d\alpha",
+        r"u_3 = +\frac{1}{4\pi^2\vartheta}\iint \hat p_\varepsilon \frac{\mathcal{L}(\alpha H)}{\alpha} e^{-i\alpha\cdot x}\,d\alpha",
+        "With x_3 into the layer and p = -sigma_33 > 0, (1.5) needs u_3 > 0 in contact; for L = 1 the plus "
+        "sign gives Boussinesq's u_3 = (1-nu)/(2 pi mu) iint p/|x-y| and (2.6) with its positive right side. "
+        "The direct numerical solver built on the plus sign satisfies (1.5) to 1e-13 (tests/test_direct.py).",
+        _check_2_1,
+    ),
+    Erratum(
         "2.10", "argument of the punch on the right-hand side",
         r"\Phi^*(\boldsymbol\eta)", r"\Phi^*(\boldsymbol\xi)",
         "Substituting (1.2), (2.8) into the right side of (2.6) gives a function of x = H_* xi, the "
         "observation point; eta is the integration variable.",
         _check_2_10,
+        "notation",
     ),
     Erratum(
         "2.17", "exponent in the moment integral",
@@ -204,6 +233,7 @@ ENTRIES: tuple[Erratum, ...] = (
         "Definition (2.15): the moment of order alpha has the weight xi_1^{alpha_1} xi_2^{alpha_2}; with "
         "xi_j^{2j} every moment would be mu_{2,4}.",
         _check_2_17,
+        "notation",
     ),
     Erratum(
         "2.21", "even kernel moments",
@@ -244,9 +274,11 @@ ENTRIES: tuple[Erratum, ...] = (
         "3.21", "m_1 through the second derivative of L",
         r"m_1 = \frac{1}{2\mathcal{A}} \lim_{s\to 0} \frac{\mathcal{L}''(s)}{s}",
         r"m_1 = \frac{1}{6\mathcal{A}} \lim_{s\to 0} \frac{\mathcal{L}''(s)}{s}",
-        "L(s) = A s + A m_1 s^3 + ... gives L''(s)/s -> 6 A m_1; checked with sympy's limit at nu = 3/10 "
-        "against the engine's m_1.",
+        "Ambiguous: read literally, lim L''(s)/s = 6 A m_1 (L(s) = A s + A m_1 s^3 + ...), so the printed "
+        "factor 1/(2A) would give 3 m_1; read as the second derivative of L(s)/s at 0 it is right. thinlayer "
+        "uses (2.20) directly. Both readings checked with sympy's limit at nu = 3/10.",
         _check_3_21_m1,
+        "ambiguous",
     ),
     Erratum(
         "3.21", "Alexandrov's second condition on B and C",
@@ -261,6 +293,7 @@ ENTRIES: tuple[Erratum, ...] = (
         "f^* is not defined; with phi^* of (2.25) the closed form equals the recursion (2.27)-(2.28) "
         "term by term (symbolic check on a non-symmetric quartic punch).",
         _check_4_1,
+        "notation",
     ),
 )
 
@@ -282,5 +315,5 @@ def equations() -> tuple[str, ...]:
 
 def latex_table() -> str:
     """The registry as a LaTeX ``longtable`` body for the report."""
-    rows = [rf"({e.equation}) & {e.quantity} & ${e.printed}$ & ${e.derived}$ \\" for e in ENTRIES]
+    rows = [rf"({e.equation}) & {e.kind}: {e.quantity} & ${e.printed}$ & ${e.derived}$ \\" for e in ENTRIES]
     return "\n".join(rows)

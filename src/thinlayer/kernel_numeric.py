@@ -83,7 +83,7 @@ def frictionless_numpy(u, over_u: bool = False):
             au = np.where(u > 0, a / np.where(u > 0, u, 1.0), 2.0)
             denu = np.where(u > 0, den / np.where(u > 0, u, 1.0), 8.0)
         return a * au / denu
-    return a * a / den
+    return np.where(u > 0, a * a / np.where(u > 0, den, 1.0), 0.0)
 
 
 def _extra_digits(u) -> int:

@@ -1,0 +1,13 @@
+"""Test configuration: long validation runs are marked ``slow`` and run only with THINLAYER_SLOW=1."""
+import os
+
+import pytest
+
+
+def pytest_collection_modifyitems(config, items):
+    if os.environ.get("THINLAYER_SLOW") == "1" or "slow" in (config.getoption("-m") or ""):
+        return
+    skip = pytest.mark.skip(reason="long validation run: set THINLAYER_SLOW=1 to run it")
+    for item in items:
+        if "slow" in item.keywords:
+            item.add_marker(skip)
