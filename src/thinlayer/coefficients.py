@@ -97,16 +97,37 @@ def _cancel_known(num, den_factors: dict, content) -> tuple[Any, dict, Any]:
     return num, out, content
 
 
+def _flip(f) -> tuple[int, Any]:
+    """(sign, f) with the constant term of f made non-negative: ``2 nu - 1 -> -(1 - 2 nu)``."""
+    return (-1, -f) if f.coeff(1) < 0 else (1, f)
+
+
 def _poly_ratio_expr(num, den_factors: dict, content, domain: _PolyDomain) -> sp.Expr:
-    """sympy expression ``num / (content * prod f^e)`` with the denominator kept factored."""
-    c, prim = num.primitive() if num else (QQ(0), num)
+    """sympy expression ``num / (content * prod f^e)``: factored denominator, and a factored
+    numerator when its degree is small enough for factoring to be cheap."""
     if not num:
         return sp.Integer(0)
-    # make the leading coefficient of the primitive part positive
-    if prim.LC < 0:
-        c, prim = -c, -prim
-    den = sp.Mul(*[sp.Pow(f.as_expr(), e) for f, e in den_factors.items() if e])
-    return sp.Rational(int((c / content).numerator), int((c / content).denominator)) * prim.as_expr() / den
+    c, prim = num.primitive()
+    sign = 1
+    if prim.degree() <= 12:
+        fc, flist = prim.factor_list()
+        c = c * fc
+        nfac = []
+        for f, e in flist:
+            sg, f = _flip(f)
+            sign *= sg**e
+            nfac.append(sp.Pow(f.as_expr(), e))
+        numer = sp.Mul(*nfac)
+    else:
+        numer = prim.as_expr()
+    dfac = []
+    for f, e in den_factors.items():
+        if e:
+            sg, f = _flip(f)
+            sign *= sg**e
+            dfac.append(sp.Pow(f.as_expr(), e))
+    ratio = sign * c / content
+    return sp.Rational(int(ratio.numerator), int(ratio.denominator)) * numer / sp.Mul(*dfac)
 
 
 @dataclass(frozen=True)
@@ -241,7 +262,7 @@ def _coefficients_poly(num, den, order, dom: _PolyDomain):
             factors[f] = factors.get(f, 0) + e * ed0
         content = c_T0**eT0 * c_d0**ed0
         numer, factors, content = _cancel_known(numer, factors, content)
-        return _sign_normal(_poly_ratio_expr(numer, factors, content, dom))
+        return _poly_ratio_expr(numer, factors, content, dom)
 
     A = ratio(T0, 0, 1)
     # m_n = T_n / (T_0 d0^n)
@@ -257,20 +278,6 @@ def _coefficients_poly(num, den, order, dom: _PolyDomain):
         U.append(acc)
     M = [sp.Integer(1)] + [ratio(U[k], k, k) for k in range(1, order + 1)]
     return A, m, M
-
-
-def _sign_normal(expr: sp.Expr) -> sp.Expr:
-    """Rewrite factors ``(c*x - d)`` with negative constant as ``-(d - c*x)`` for readability."""
-    num, den = sp.fraction(expr)
-    sign = 1
-    new = []
-    for base, e in (den.as_powers_dict().items() if den != 1 else []):
-        if base.is_Add and base.as_coeff_Add()[0] < 0:
-            new.append((-base) ** e)
-            sign *= (-1) ** e
-        else:
-            new.append(base**e)
-    return sign * num / sp.Mul(*new)
 
 
 def reciprocal_by_inversion(layer: LayerKernel, order: int) -> tuple:

@@ -36,8 +36,15 @@ class Erratum:
         return bool(self.check())
 
     def latex(self) -> str:
-        return (rf"\textbf{{({self.equation})}} {self.quantity}: printed ${self.printed}$; "
-                rf"derived ${self.derived}$. {self.evidence}")
+        return (rf"\textbf{{({self.equation})}} {_escape(self.quantity)} [{self.kind}]: printed ${self.printed}$; "
+                rf"derived ${self.derived}$. {_escape(self.evidence)}")
+
+
+def _escape(text: str) -> str:
+    """Plain prose -> LaTeX text mode."""
+    rep = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
+           "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
+    return "".join(rep.get(ch, ch) for ch in text)
 
 
 # --------------------------------------------------------------------------- checks

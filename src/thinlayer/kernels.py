@@ -160,7 +160,7 @@ class BondedLayer(LayerKernel):
     --------
     >>> from thinlayer import BondedLayer
     >>> BondedLayer().A
-    (1 - 2*nu)/(2*(1 - nu)**2)
+    (1/2 - nu)/(1 - nu)**2
     >>> BondedLayer("3/10").m(1)
     1/14
     """

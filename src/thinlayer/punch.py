@@ -44,8 +44,8 @@ class Punch:
     --------
     >>> from thinlayer import Punch
     >>> p = Punch.elliptic_paraboloid()
-    >>> p.expr
-    x_1**2/(2*R_1) + x_2**2/(2*R_2)
+    >>> p.parameters
+    (R_1, R_2)
     >>> p.degree
     2
     """

@@ -1,0 +1,26 @@
+"""Run every benchmark module (benchmarks/bench_*.py) and print one table: ``python benchmarks/run.py``."""
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+
+def main(names: list[str]) -> int:
+    here = Path(__file__).parent
+    mods = sorted(here.glob("bench_*.py"))
+    if names:
+        mods = [m for m in mods if any(n in m.stem for n in names)]
+    print(f"{'benchmark':<62} {'seconds':>10}  target")
+    print("-" * 86)
+    for path in mods:
+        spec = importlib.util.spec_from_file_location(path.stem, path)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        for name, secs, target in mod.run():
+            print(f"{name[:62]:<62} {secs:>10.4f}  {target}", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,62 @@
+"""Derivation files, the LaTeX report and the command line."""
+import shutil
+from pathlib import Path
+
+import pytest
+
+from thinlayer.cli import main
+from thinlayer.derivation import DerivationFileError, load_derivation, report_latex, write_report
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_default_derivation_report(tmp_path):
+    der = load_derivation(ROOT / "derivations" / "quartic_punch.toml")
+    tex = write_report(der, tmp_path)
+    text = tex.read_text()
+    for tag in ("2.3", "2.20", "4.2", "2.21", "2.22", "2.27", "4.1", "2.26"):
+        assert rf"\tag{{{tag}}}" in text
+    assert "Errata" in text and text.count(r"\item") >= 9
+
+
+def test_cli_and_no_overwrite(tmp_path, capsys):
+    f = ROOT / "derivations" / "quartic_punch.toml"
+    assert main(["derive", str(f), "--out", str(tmp_path)]) == 0
+    assert main(["derive", str(f), "--out", str(tmp_path)]) == 0  # our own file: replaced
+    mine = tmp_path / "quartic_punch.tex"
+    mine.write_text("my notes\n")
+    assert main(["derive", str(f), "--out", str(tmp_path)]) == 2
+    assert "not written by thinlayer" in capsys.readouterr().err
+    assert mine.read_text() == "my notes\n"
+    assert main(["derive", str(f), "--out", str(tmp_path), "--force"]) == 0
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="needs pdflatex (installed by .ci/run)")
+def test_report_compiles_to_pdf(tmp_path):
+    der = load_derivation(ROOT / "derivations" / "elliptic_paraboloid.toml")
+    tex = write_report(der, tmp_path, pdf=True)
+    assert tex.with_suffix(".pdf").stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("content, message", [
+    ("[derivation]\nname='x'\n", "[layer]"),
+    ("[derivation]\nname='x'\n[layer]\nnu=0.7\n[punch]\nkind='elliptic_paraboloid'\n", "-1 < nu < 1/2"),
+    ("[derivation]\nname='x'\n[layer]\nmodel='rubber'\n[punch]\nkind='paraboloid'\n", "valid models"),
+    ("[derivation]\nname='x'\n[layer]\n[punch]\nexpr='exp(x_1)'\n", "not a polynomial"),
+    ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='cone'\n", "valid kinds"),
+    ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[inner]\norder=0\n", "positive integer"),
+    ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[extra]\n", "unknown table"),
+    ("[derivation\n", "not valid TOML"),
+])
+def test_malformed_derivation_files(tmp_path, content, message):
+    f = tmp_path / "bad.toml"
+    f.write_text(content)
+    with pytest.raises(DerivationFileError) as exc:
+        load_derivation(f)
+    assert message in str(exc.value)
+
+
+def test_report_contains_edge_shift_table():
+    der = load_derivation(ROOT / "derivations" / "elliptic_paraboloid.toml")
+    text = report_latex(der)
+    assert "Wiener" in text and r"\tag{3.1}" in text
