@@ -109,7 +109,7 @@ def _poly_ratio_expr(num, den_factors: dict, content, domain: _PolyDomain) -> sp
         return sp.Integer(0)
     c, prim = num.primitive()
     sign = 1
-    if prim.degree() <= 12:
+    if prim.degree() <= 4:
         fc, flist = prim.factor_list()
         c = c * fc
         nfac = []

@@ -117,6 +117,15 @@ class Punch:
         rr = S.x1**2 + S.x2**2
         return cls(rr / (2 * r) + rr**2 / k**3, name="fourth-degree paraboloid")
 
+    @classmethod
+    def general(cls, degree: int, prefix: str = "c") -> "Punch":
+        """The general polynomial of a degree: ``sum_{1 <= i+j <= degree} c_{ij} x1^i x2^j`` with symbolic c_ij."""
+        if isinstance(degree, bool) or not isinstance(degree, int) or degree < 1:
+            raise PunchError(f"degree must be a positive integer, got {degree!r}")
+        terms = [sp.Symbol(f"{prefix}_{i}{j}" if degree < 10 else f"{prefix}_{i},{j}") * S.x1**i * S.x2**j
+                 for i in range(degree + 1) for j in range(degree + 1 - i) if i + j]
+        return cls(sp.Add(*terms), name=f"general polynomial of degree {degree}")
+
     # ---- properties --------------------------------------------------------------------
     @property
     def degree(self) -> int:
