@@ -165,7 +165,11 @@ def _cosine_integral(f: Any, tt: Any, s0: int = 32) -> Any:
     """
     n = max(8, int(mpmath.ceil(s0 * tt / mpmath.pi)) + 1)
     head = mpmath.quad(f, mpmath.linspace(0, s0, n + 1))
-    return head + mpmath.quadosc(f, [s0, mpmath.inf], omega=tt)
+    # quadosc's ``omega`` places the zeros at n pi/omega counted from 0, not from the lower
+    # limit: for a lower limit s0 > pi/omega it would integrate [pi/omega, s0] twice.  Give the
+    # half-period points from s0 explicitly.
+    half = mpmath.pi / tt
+    return head + mpmath.quadosc(f, [s0, mpmath.inf], zeros=lambda k: s0 + k * half)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -199,7 +203,7 @@ def boundary_layer_kernel(layer: LayerKernel, t: Any, method: str = "bessel2") -
         raise ValueError(f"method must be 'bessel2' or 'bessel1', got {method!r}")
     tt = _check_t(t)
     with mpmath.extradps(5):
-        F = lambda s: layer.L_numeric(s, backend="mpmath", over_u=True)  # noqa: E731
+        F = lambda s: layer.L_numeric(s, backend="mpmath", over_u=True)
         if method == "bessel2":
             def rem(s):
                 r = 1 / mpmath.sqrt(s * s + 1)
@@ -320,7 +324,10 @@ def _h_symbolic(par: AlexandrovParameters) -> sp.Expr:
     return r / o - den / (2 * out)
 
 
-def _sqrt_pulled(expr: sp.Expr, extra: sp.Expr = sp.Integer(1)) -> tuple[sp.Expr, sp.Expr]:
+_ONE = sp.Integer(1)
+
+
+def _sqrt_pulled(expr: sp.Expr, extra: sp.Expr = _ONE) -> tuple[sp.Expr, sp.Expr]:
     """``sqrt(expr) = sqrt(R)/out`` with fourth powers of real factors of the denominator pulled out.
 
     ``sqrt(f^4) = f^2`` for real f, so this is exact for a real parameter.
@@ -531,7 +538,7 @@ class AlexandrovSolution:
             Q = (tau + h) erf sqrt(B tau) + sqrt(tau/(pi B)) e^{-B tau}
                 + (h - h_0) sqrt(A/(pi tau)) e^{-B tau},     h_0 = 1/sqrt(C) - 1/(2B).
         """
-        A, B, C, h0 = self._BCh()
+        A, B, C, _ = self._BCh()
         hh = sp.Symbol("h", real=True) if h is None else sp.sympify(h)
         e = sp.exp(-B * tau_)
         return (
