@@ -4,17 +4,24 @@ Stages of the paper, each a pure function returning an immutable result with ``l
 and ``lambdify()``:
 
 ``kernel_coefficients`` (2.20), (4.2) -> ``kernel_moment`` (2.15), (2.21) ->
-``moment_expansion`` (2.22) -> ``inner_pressure`` (2.24)-(2.31), (4.1).
+``moment_expansion`` (2.22) -> ``inner_pressure`` (2.24)-(2.31), (4.1) ->
+``contact_contour`` (3.1)-(3.14) -> ``alexandrov_solution`` / ``boundary_layer_exact`` (3.15)-(3.25) ->
+``force_law`` (1.8) and ``composite_pressure``; ``solve`` joins them for numeric parameters.
 """
 from . import errata, symbols
 from .contour import ContactContour, ContourAccuracy, EllipseContour, contact_contour, ellipse_contour
+from .boundary_layer import (AlexandrovParameters, AlexandrovSolution, alexandrov_kernel, alexandrov_parameters,
+                             alexandrov_solution, boundary_layer_kernel)
+from .composite import CompositePressure, composite_pressure
 from .coefficients import KernelCoefficients, kernel_coefficients
 from .direct import AxisymmetricContact, contact_for_radius, solve_axisymmetric, surface_displacement
+from .force_law import ForceLaw, ForceValues, boundary_layer_force_defect, force_law
 from .inner import InnerPressure, inner_pressure
 from .kernels import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace, IncompressibleLayerError, LayerKernel
 from .moments import MomentExpansion, kernel_moment, moment_expansion
 from .punch import Punch, PunchError
 from .results import MissingArgumentError, checked_lambdify
+from .solution import ContactSolution, solve
 from .wiener_hopf import (WienerHopfSolution, boundary_layer_exact, edge_shift_alexandrov, edge_shift_exact,
                           edge_shift_table, wiener_hopf_solution)
 
@@ -53,4 +60,18 @@ __all__ = [
     "edge_shift_table",
     "wiener_hopf_solution",
     "symbols",
+    "AlexandrovParameters",
+    "AlexandrovSolution",
+    "alexandrov_kernel",
+    "alexandrov_parameters",
+    "alexandrov_solution",
+    "boundary_layer_kernel",
+    "CompositePressure",
+    "composite_pressure",
+    "ForceLaw",
+    "ForceValues",
+    "boundary_layer_force_defect",
+    "force_law",
+    "ContactSolution",
+    "solve",
 ]

@@ -146,7 +146,8 @@ class Punch:
 
     def subs(self, values: dict) -> "Punch":
         """A new punch with parameters replaced (scaling entries of replaced parameters dropped)."""
-        values = {sp.Symbol(k) if isinstance(k, str) else k: v for k, v in values.items()}
+        by_name = {q.name: q for q in self.parameters}
+        values = {by_name.get(k, sp.Symbol(k)) if isinstance(k, str) else k: v for k, v in values.items()}
         unknown = [k for k in values if k not in self.parameters]
         if unknown:
             raise PunchError(f"{unknown} are not parameters of the punch; its parameters are {self.parameters}")

@@ -1,0 +1,71 @@
+"""Timings of the contact solution (thinlayer.solution, force_law, composite).
+
+``run()`` returns ``(name, seconds, target)`` rows (best of a few repetitions where the call is
+repeatable); nothing runs at import.  Targets (issue 3): ``solve`` for an elliptic paraboloid
+with numeric parameters under 0.2 s; the composite pressure on 10^6 points under 0.2 s.
+"""
+from __future__ import annotations
+
+import time
+
+
+def _best(fn, repeat: int = 3) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def run() -> list[tuple[str, float, str]]:
+    import numpy as np
+
+    from thinlayer import BondedLayer, Punch, solve
+    from thinlayer.coefficients import kernel_coefficients
+    from thinlayer.solution import _edge_shifts
+
+    punch = Punch.elliptic_paraboloid(4, 1)
+    rows = []
+
+    # cold: a Poisson ratio not seen before (edge shift, coefficients and symbolic law computed)
+    def cold(nu=[0.21]):
+        nu[0] += 0.001
+        kernel_coefficients.cache_clear()
+        _edge_shifts.cache_clear()
+        solve(BondedLayer(round(nu[0], 6)), punch, delta0=0.5, H=0.05)
+
+    cold()  # imports
+    rows.append(("solve(elliptic paraboloid), fresh nu (cold caches)", _best(cold), "< 0.2 s"))
+    layer = BondedLayer(0.3)
+    solve(layer, punch, delta0=0.5, H=0.05)
+    rows.append(("solve(elliptic paraboloid), same nu, new delta0, H",
+                 _best(lambda: solve(layer, punch, delta0=0.4, H=0.04)), "< 0.2 s"))
+    rows.append(("solve(elliptic paraboloid, force=P) inverse problem",
+                 _best(lambda: solve(layer, punch, force=20.0, H=0.04)), "< 0.2 s"))
+    quartic = Punch.fourth_degree(1, 1)
+    rows.append(("solve(fourth-degree paraboloid) (numeric contour)",
+                 _best(lambda: solve(layer, quartic, delta0=0.5, H=0.05)), "< 0.5 s"))
+    rows.append(("solve(fourth-degree paraboloid, force=P) inverse (Brent)",
+                 _best(lambda: solve(layer, quartic, force=20.0, H=0.05), 1), "< 2 s"))
+
+    sol = solve(layer, punch, delta0=0.5, H=0.05)
+    t0 = time.perf_counter()
+    comp = sol.composite
+    rows.append(("composite pressure build, exact boundary layer (first use per nu)",
+                 time.perf_counter() - t0, "< 10 s"))
+    rng = np.random.default_rng(0)
+    x1 = rng.uniform(-2.1, 2.1, 10**6)
+    x2 = rng.uniform(-1.05, 1.05, 10**6)
+    comp(x1, x2)
+    rows.append(("composite pressure on 10^6 points (box around the ellipse)",
+                 _best(lambda: comp(x1, x2)), "< 0.2 s"))
+    alex = solve(layer, punch, delta0=0.5, H=0.05, boundary_layer="alexandrov").composite
+    rows.append(("composite pressure on 10^6 points, Alexandrov boundary layer",
+                 _best(lambda: alex(x1, x2)), "< 0.2 s"))
+    return rows
+
+
+if __name__ == "__main__":  # pragma: no cover
+    for name, sec, target in run():
+        print(f"{name:70s} {sec:9.4f} s   target {target}")

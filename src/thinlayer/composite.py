@@ -1,0 +1,202 @@
+r"""Composite (uniformly valid) contact pressure: inner expansion + boundary layer - common part.
+
+For a point ``x`` near the contour Gamma_0 = {Phi = delta0} let ``n`` be its distance from
+Gamma_0 along the gradient line of Phi (positive inside omega_0), ``v = n/H`` and ``g = |grad Phi|``
+at the foot point on Gamma_0.  The inner expansion (2.26) near the edge is
+``p_in = (vartheta/(A H)) (delta0 - Phi) = (vartheta g/A) v + O(H)``; the boundary layer (3.24) in
+the same normalisation is ``(vartheta g/A) Qhat(v)`` with ``Qhat(v) ~ v`` as ``v -> oo`` and
+``Qhat = 0`` for ``v <= h^*``.  Their common part is ``(vartheta g/A) v``, so
+
+    p_c(x) = p_in(x) + (vartheta g/A) (Qhat(v) - v)      for v > h^*,     p_c = 0 otherwise,
+
+and ``Qhat(v) - v`` decays exponentially into omega_0 (``e^{-sigma v}``), so away from the edge
+``p_c = p_in`` exactly.  ``Qhat`` is either the exact Wiener--Hopf solution
+(:func:`thinlayer.boundary_layer_exact`, kernel (2.3)) or Alexandrov's closed form (3.24).
+
+Accuracy: the boundary layer is its leading term, so ``p_c`` is uniformly valid with an error
+``O(p_max H/a)`` (a the contact half-width); away from the edge it is as accurate as the inner
+expansion.  Near the edge the neglected ``O(H/a)`` terms (``p_1``, curvature of Gamma_0) may make
+the sum slightly negative in a zone of width ``o(H)``; ``p_c`` is clipped at 0 there.
+
+The foot point is found by a few Newton steps on ``Phi(x + t e) = delta0`` along
+``e = grad Phi(x)/|grad Phi(x)|``; the gradient line meets Gamma_0 at a point whose distance
+differs from the normal distance by ``O(n^2/R)``, inside the error above.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+import numpy as np
+import sympy as sp
+
+from . import symbols as S
+from .inner import InnerPressure, _vartheta, inner_pressure
+from .kernels import LayerKernel
+from .punch import Punch
+
+__all__ = ["CompositePressure", "composite_pressure", "BOUNDARY_LAYERS"]
+
+BOUNDARY_LAYERS = ("exact", "alexandrov")
+_NEWTON_STEPS = 8
+#: nodes of the interpolation table of Qhat(v) - v, uniform in sqrt(v - h)
+_TABLE_NODES = 2**14 + 1
+
+
+@dataclass(frozen=True, eq=False)
+class CompositePressure:
+    r"""Uniformly valid pressure ``p_c(x1, x2)`` (module docstring); call it like a numpy function.
+
+    Attributes
+    ----------
+    inner:
+        The :class:`~thinlayer.InnerPressure` used (``inner.order`` terms).
+    boundary_layer:
+        ``"exact"`` or ``"alexandrov"``.
+    h:
+        The edge shift used (3.25): the pressure vanishes for ``v = n/H <= h``.
+    amplitude:
+        ``vartheta/A``: the boundary layer is ``amplitude * g * Qhat(v)``.
+    band:
+        ``Qhat(v) - v`` is taken as 0 beyond ``v = band`` (below double precision there).
+    """
+
+    layer: LayerKernel
+    punch: Punch
+    delta0: float
+    H: float
+    mu: float
+    inner: InnerPressure
+    boundary_layer: str
+    h: float
+    amplitude: float
+    band: float
+    _p_in: Callable = field(repr=False)
+    _phi: Callable = field(repr=False)
+    _Q: Callable = field(repr=False)
+    _table: tuple = field(repr=False)
+
+    def local(self, x1: Any, x2: Any) -> tuple[np.ndarray, np.ndarray]:
+        """``(v, g)``: scaled distance ``n/H`` from Gamma_0 (inward positive) and ``|grad Phi|`` at the foot.
+
+        Newton on the gradient line, to 1e-13 of ``H``; ``v = +inf`` where the gradient vanishes.
+        """
+        x1, x2 = np.broadcast_arrays(np.asarray(x1, dtype=float), np.asarray(x2, dtype=float))
+        f, fx, fy = self._phi(x1, x2)
+        return self._newton(x1, x2, f, fx, fy)
+
+    def _newton(self, x1, x2, f, fx, fy):
+        gn = np.hypot(fx, fy)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ex, ey = fx / gn, fy / gn
+            t = (self.delta0 - f) / gn
+            ok = np.isfinite(t)
+            t = np.where(ok, t, 0.0)
+            for _ in range(_NEWTON_STEPS):
+                f, fx, fy = self._phi(x1 + t * ex, x2 + t * ey)
+                step = (f - self.delta0) / (fx * ex + fy * ey)
+                t = t - step
+                # converged where it matters (inside the band; elsewhere the correction is 0)
+                if not np.any((np.abs(step) > 1e-13 * self.H) & (np.abs(t) < 2 * self.band * self.H)):
+                    break
+            g = np.hypot(fx, fy)
+        v = np.where(ok & np.isfinite(t), t / self.H, np.inf)
+        return v, g
+
+    def __call__(self, x1: Any, x2: Any) -> np.ndarray:
+        """``p_c(x1, x2)``, vectorised over broadcastable arrays."""
+        x1, x2 = np.broadcast_arrays(np.asarray(x1, dtype=float), np.asarray(x2, dtype=float))
+        shape = x1.shape
+        x1, x2 = x1.ravel(), x2.ravel()
+        f, fx, fy = self._phi(x1, x2)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            v_est = (self.delta0 - f) / (np.hypot(fx, fy) * self.H)
+        p = np.where(v_est > 0, self._p_in(x1, x2), 0.0)
+        # first-order distance first; the Newton foot point only near the edge
+        near = np.flatnonzero((v_est < 1.25 * self.band + 1) & (v_est > min(self.h, 0.0) - 1))
+        if near.size:
+            xn, yn = x1[near], x2[near]
+            v, g = self._newton(xn, yn, f[near], fx[near], fy[near])
+            corr = self._correction(v)
+            p[near] = np.where(v > self.h, self._p_in(xn, yn) + self.amplitude * g * corr, 0.0)
+        return np.maximum(p, 0.0).reshape(shape)
+
+    def _correction(self, v: np.ndarray) -> np.ndarray:
+        """``Qhat(v) - v`` for ``v > h`` (interpolated table), 0 beyond the band."""
+        zt, ct = self._table
+        dz = zt[1]
+        w = np.sqrt(np.clip(v - self.h, 0.0, None)) / dz
+        i = np.minimum(w.astype(np.intp), len(zt) - 2)
+        w -= i
+        out = ct[i] * (1 - w) + ct[i + 1] * w  # linear interpolation on the uniform sqrt grid
+        return np.where(v < self.band, out, 0.0)
+
+    def lambdify(self) -> Callable:
+        """The numeric pressure function ``(x1, x2) -> p_c`` (this object: it is already vectorised)."""
+        return self
+
+    def latex(self) -> str:
+        th = sp.latex(_vartheta(self.layer))
+        kind = "exact (2.3)" if self.boundary_layer == "exact" else "Alexandrov (3.24)"
+        return (
+            r"p_c(\mathbf{x}) = p_{\mathrm{in}}(\mathbf{x}) + \frac{" + th + r"\,|\nabla\Phi(s)|}{\mathcal{A}}"
+            r"\left(\hat Q\!\left(\frac{n}{H}\right) - \frac{n}{H}\right),\quad \hat Q = 0 \ \text{for}\ "
+            rf"\frac{{n}}{{H}} \le h^* = {self.h:.10g}\ (\text{{{kind} boundary layer}})"
+        )
+
+
+def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float, mu: float = 1.0,
+                       terms: int = 2, boundary_layer: str = "exact") -> CompositePressure:
+    """Uniformly valid contact pressure for a numeric layer and punch (module docstring).
+
+    Parameters
+    ----------
+    layer:
+        A :class:`~thinlayer.BondedLayer` with a numeric Poisson ratio.
+    punch:
+        A :class:`~thinlayer.Punch` with numeric coefficients.
+    delta0, H, mu:
+        Indentation, thickness, shear modulus (numbers > 0; checked by :func:`thinlayer.solve`).
+    terms:
+        Number of inner terms ``p_0 .. p_{terms-1}`` (2.26).
+    boundary_layer:
+        ``"exact"`` (Wiener--Hopf, kernel (2.3); its table is built once per nu, ~2 s) or
+        ``"alexandrov"`` (closed form (3.24)).
+    """
+    from .boundary_layer import alexandrov_solution
+    from .wiener_hopf import boundary_layer_exact
+
+    if boundary_layer not in BOUNDARY_LAYERS:
+        raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
+    inner = inner_pressure(layer, punch, order=terms)
+    vals = {S.delta0: delta0, S.H: H, S.mu: mu}
+    p_expr = inner.pressure.subs(vals)
+    th = float(_vartheta(layer).subs(vals))
+    p_lam = sp.lambdify((S.x1, S.x2), p_expr, modules="numpy", cse=True)
+
+    def p_in(a, b):
+        q = p_lam(a, b)
+        return q if np.ndim(q) else np.full(np.shape(a), float(q))
+
+    Phi = punch.expr
+    phi = sp.lambdify((S.x1, S.x2), (Phi, sp.diff(Phi, S.x1), sp.diff(Phi, S.x2)), modules="numpy", cse=True)
+
+    def phi3(a, b):
+        return tuple(q if np.ndim(q) else np.full(np.shape(a), float(q)) for q in phi(a, b))
+
+    if boundary_layer == "exact":
+        sol = boundary_layer_exact(layer)
+        h = float(sol.h)
+        band = h + sol.tau_max
+        Q = sol.pressure
+    else:
+        sol = alexandrov_solution(layer)
+        h = float(sol.h)
+        band = h + 40.0 / float(sol.params.B)  # erfc(sqrt(40)) ~ 1e-19
+        Q = sol.q_numeric
+    zt = np.linspace(0.0, np.sqrt(band - h), _TABLE_NODES)
+    vt = h + zt * zt
+    ct = np.asarray(Q(vt), dtype=float) - vt
+    ct[0] = -h  # Qhat(h) = 0 (3.18)
+    return CompositePressure(layer, punch, float(delta0), float(H), float(mu), inner, boundary_layer, h,
+                             th / float(layer.A), float(band), p_in, phi3, Q, (zt, ct))

@@ -1,0 +1,486 @@
+r"""Force--indentation law (1.8) and contact area, each with its first correction in H.
+
+Derivation (any polynomial punch with a smooth, simply connected contact area)
+------------------------------------------------------------------------------
+The uniformly valid pressure is the inner expansion (2.26) plus the boundary layer (3.24) minus
+their common part.  Near the contour Gamma_0, with ``n`` the inward distance, ``v = n/H`` and
+``g(s) = |grad Phi|`` on Gamma_0, the leading inner term is ``p_0 ~ (vartheta g/A) v`` and the
+boundary layer is ``(vartheta g/A) Qhat(v)`` with ``Qhat ~ v`` far from the edge, ``Qhat = 0`` for
+``v < h^*``.  Integrating over the plane (``P = iint p``, (1.8)):
+
+    P = iint_{omega_0} p_0 + iint_{omega_0} p_1 + oint_{Gamma_0} (vartheta g/A) H D ds + ...,
+    D = int (Qhat(v) - max(v, 0)) dv                       (the boundary layer's force defect).
+
+* ``p_0 = vartheta (delta0 - Phi)/(A H)`` (2.27), ``p_1 = (vartheta H/A) M_1 Laplacian Phi`` (4.1);
+  ``iint_{omega_0} Laplacian Phi = oint_{Gamma_0} |grad Phi| ds =: J`` (divergence theorem; on the
+  level set the outward normal is ``grad Phi/|grad Phi|``).
+* ``D`` follows from the Laplace transform of the boundary layer: ``int_0^oo (Q(h + tau) - tau - h)
+  dtau`` is the ``p^0`` coefficient of ``Q~(p) - 1/p^2 - h/p`` and ``D`` is that minus ``h^2/2``.
+  :func:`boundary_layer_force_defect` carries this out on Alexandrov's transform and, with the
+  condition (3.21) (``1/C - 1/(2B^2) = -m_1``), obtains ``D = m_1/2``.  The identity depends on the
+  kernel only through ``m_1`` (the second moment of ``F``); for the exact kernel it is checked by
+  quadrature of the Wiener--Hopf solution (tests).
+
+Hence, with ``V = iint_{omega_0} (delta0 - Phi) dx`` and ``M_1 = -m_1`` (4.2),
+
+    P = (vartheta/(A H)) V + (vartheta H/A) (M_1 + m_1/2) J + O((H/a)^3) relative,
+
+the boundary layer cancelling half of the inner correction.  The remainder comes from the
+next boundary-layer order (curvature of Gamma_0, ``b_2``, matching ``p_1``): ``O(H/a)`` relative
+to the boundary layer's own ``O((H/a)^2)`` contribution.  ``p_2`` is ``O((H/a)^4)``.
+
+The true contact edge lies at the distance ``h^* H`` inside Gamma_0 (3.25), so the contact area is
+
+    |omega| = |omega_0| - h^* H |Gamma_0| + O((H/a)^2) relative.
+
+Closed forms are produced for a quadratic punch ``Phi = x^T K x/2 + b^T x + c`` with ``K``
+positive definite (the elliptic paraboloid (1.1)): ``omega_0`` is an ellipse with
+``|omega_0| = 2 pi D0/sqrt(det K)``, ``V = pi D0^2/sqrt(det K)``, ``J = tr K |omega_0|``,
+``D0 = delta0 - min Phi``; and for a radial monomial ``Phi = c r^{2k}``: ``a = (delta0/c)^{1/2k}``,
+``|omega_0| = pi a^2``, ``V = pi a^2 delta0 k/(k + 1)``, ``J = 4 pi k delta0``.  Any other punch is
+evaluated numerically on the spectral contour (:func:`thinlayer.contact_contour`).
+"""
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
+
+import mpmath
+import sympy as sp
+
+from . import symbols as S
+from .inner import _vartheta, inner_pressure
+from .kernels import LayerKernel
+from .punch import Punch, PunchError
+from .results import checked_lambdify, latex_equation
+
+__all__ = [
+    "ForceLaw",
+    "ForceValues",
+    "P",
+    "h_star",
+    "boundary_layer_force_defect",
+    "force_law",
+]
+
+#: total force on the punch (1.8)
+P = sp.Symbol("P", positive=True)
+#: the edge shift (3.25) as a symbol in the contact-area law (its value is numeric, per nu)
+h_star = sp.Symbol("h^*", real=True)
+
+_V, _J, _A0, _L0 = sp.symbols(r"V J |\omega_0| |\Gamma_0|", positive=True)
+
+#: order of accuracy of each result, as (exponent of H/a, statement)
+ORDERS = {
+    "force": (3, "P = P_0 + P_1 + O(P_0 (H/a)^3)"),
+    "contact_area": (2, "|omega| = |omega_0| - h^* H |Gamma_0| + O(|omega_0| (H/a)^2)"),
+    "pressure_interior": (None, "inner expansion with K terms: O(p_0 (H/a)^(2K)) away from the edge"),
+    "pressure_composite": (1, "composite pressure: O(p_max H/a) uniformly (leading-order boundary layer)"),
+}
+
+
+@lru_cache(maxsize=1)
+def boundary_layer_force_defect() -> sp.Expr:
+    r"""``D = int (Qhat(v) - max(v, 0)) dv = m_1/2``, derived from the boundary layer's Laplace transform.
+
+    With ``Q~(p) = int_0^oo Q(h + tau) e^{-p tau} dtau = sqrt(A) (p + sqrt C)/(p^2 sqrt(p + B))``
+    (3.23)-(3.24), ``int_0^oo (Q - tau - h) dtau`` is the ``p^0`` term of ``Q~ - 1/p^2 - h/p``;
+    the part ``v < h`` (or ``0 < v < h``) contributes ``-h^2/2``.  Eliminating ``A = B/C`` (3.20)
+    and ``C`` by (3.21) leaves a function of ``m_1`` alone.  Returns ``m_1/2`` in the symbol
+    ``m_1`` (as an expression in ``thinlayer.kernels`` naming, ``Symbol('m_1')``).
+    """
+    B, C, p = sp.symbols("B C p", positive=True)
+    m1 = sp.Symbol("m_1", real=True)
+    A = B / C  # (3.20)
+    h = 1 / sp.sqrt(C) - 1 / (2 * B)  # (3.25)
+    Qt = sp.sqrt(A) * (p + sp.sqrt(C)) / (p**2 * sp.sqrt(p + B))
+    rest = sp.series(Qt - 1 / p**2 - h / p, p, 0, 1).removeO()
+    if rest.has(p):
+        raise ArithmeticError(f"the Laplace transform has an unexpected singular part at p = 0: {rest}")
+    D = sp.expand(rest - h**2 / 2)
+    # (3.21): 1/C - 1/(2 B^2) = -m_1
+    D = sp.simplify(D.subs(C, 1 / (1 / (2 * B**2) - m1)))
+    if D.has(B):
+        raise ArithmeticError(f"the force defect does not reduce to a function of m_1: {D}")
+    return D
+
+
+def _force_defect(layer: LayerKernel) -> sp.Expr:
+    return boundary_layer_force_defect().subs(sp.Symbol("m_1", real=True), layer.m(1))
+
+
+# ---------------------------------------------------------------------------------------------
+# the shape of the punch: closed-form classes
+# ---------------------------------------------------------------------------------------------
+def _quadratic_data(expr: sp.Expr):
+    """``(K, b, c)`` if Phi is quadratic with a constant Hessian K, else None."""
+    poly = sp.Poly(expr, S.x1, S.x2)
+    if poly.total_degree() != 2:
+        return None
+    X = sp.Matrix([S.x1, S.x2])
+    K = sp.hessian(expr, (S.x1, S.x2))
+    b = sp.Matrix([sp.diff(expr, v).subs({S.x1: 0, S.x2: 0}) for v in X])
+    c = expr.subs({S.x1: 0, S.x2: 0})
+    return K, b, c
+
+
+def _radial_monomial(expr: sp.Expr):
+    """``(c, k)`` if Phi = c (x1^2 + x2^2)^k, else None."""
+    poly = sp.Poly(expr, S.x1, S.x2)
+    d = poly.total_degree()
+    if d < 2 or d % 2:
+        return None
+    k = d // 2
+    c = poly.coeff_monomial(S.x1**d)
+    if c == 0 or sp.expand(expr - c * (S.x1**2 + S.x2**2) ** k) != 0:
+        return None
+    return c, k
+
+
+def _positive_definite(K: sp.Matrix, name: str) -> None:
+    det = sp.simplify(K.det())
+    tr = sp.simplify(K.trace())
+    for q, what in ((det, "det"), (tr, "trace")):
+        if q.is_positive is False or (q.is_number and not q > 0):
+            raise PunchError(
+                f"the quadratic punch {name} has a Hessian with {what} = {q}: it is not positive definite, "
+                "so the contact area {delta0 - Phi > 0} is not bounded (the punch must be convex)"
+            )
+
+
+# ---------------------------------------------------------------------------------------------
+# the result objects
+# ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class ForceValues:
+    """Numbers of the force law and the area law at one set of parameters.
+
+    ``P0, P1`` leading force and first correction (``force = P0 + P1``); ``area0`` = |omega_0|,
+    ``perimeter`` = |Gamma_0|, ``area`` = contact area with its first correction; ``V``, ``J``
+    the two integrals of the derivation (module docstring); ``half_width`` = 2|omega_0|/|Gamma_0|
+    (the radius for a circle), the ``a`` of the error orders.
+    """
+
+    delta0: float
+    H: float
+    P0: float
+    P1: float
+    area0: float
+    perimeter: float
+    edge_shift: float
+    V: float
+    J: float
+
+    @property
+    def force(self) -> float:
+        return self.P0 + self.P1
+
+    @property
+    def area(self) -> float:
+        return self.area0 - self.edge_shift * self.H * self.perimeter
+
+    @property
+    def half_width(self) -> float:
+        return 2 * self.area0 / self.perimeter
+
+    @property
+    def H_over_a(self) -> float:
+        return self.H / self.half_width
+
+
+@dataclass(frozen=True)
+class ForceLaw:
+    r"""``P(delta0)`` and ``|omega|(delta0)`` with their first corrections in H (1.8), (3.25).
+
+    Attributes
+    ----------
+    layer, punch:
+        The layer kernel and the punch (symbolic or numeric parameters).
+    kind:
+        ``"quadratic"`` (closed form, the elliptic paraboloid (1.1)), ``"radial-monomial"``
+        (closed form, ``Phi = c r^{2k}``) or ``"contour"`` (numeric integrals over omega_0).
+    P0, P1:
+        Leading force and first correction (sympy), or ``None`` for ``kind == "contour"``.
+    area0, perimeter:
+        ``|omega_0|`` and ``|Gamma_0|`` (sympy) or ``None``.
+    coefficient:
+        ``P1 = coefficient * J`` with ``coefficient = (vartheta H/A)(M_1 + D)``, ``D = m_1/2``.
+    """
+
+    layer: LayerKernel
+    punch: Punch
+    kind: str
+    P0: sp.Expr | None
+    P1: sp.Expr | None
+    area0: sp.Expr | None
+    perimeter: sp.Expr | None
+    coefficient: sp.Expr
+    p1_factor: sp.Expr
+
+    equation = "1.8"
+
+    # ---- symbolic --------------------------------------------------------------------------
+    @property
+    def force(self) -> sp.Expr | None:
+        """``P0 + P1`` (None when the punch has no closed form)."""
+        return None if self.P0 is None else self.P0 + self.P1
+
+    @property
+    def contact_area(self) -> sp.Expr | None:
+        """``|omega_0| - h^* H |Gamma_0|`` in the symbol ``h^*`` (None without a closed form)."""
+        return None if self.area0 is None else self.area0 - h_star * S.H * self.perimeter
+
+    @property
+    def general(self) -> sp.Expr:
+        """The law in terms of the integrals ``V``, ``J`` (any punch)."""
+        th = _vartheta(self.layer)
+        return th / (self.layer.A * S.H) * _V + self.coefficient * _J
+
+    @property
+    def arguments(self) -> tuple[sp.Symbol, ...]:
+        """``(delta_0, H, mu)`` then the other free symbols (nu, punch parameters, h^*) by name."""
+        base = (S.delta0, S.H, S.mu)
+        free = set()
+        for e in (self.force, self.contact_area):
+            if e is not None:
+                free |= e.free_symbols
+        return base + tuple(sorted(free - set(base), key=lambda q: q.name))
+
+    def lambdify(self, args=None, backend: str = "numpy"):
+        """``(P, |omega|)`` as one numeric function of :attr:`arguments` (closed forms only)."""
+        if self.P0 is None:
+            raise ValueError(
+                f"the force law of {self.punch.name} ({self.punch.expr}) has no closed form; "
+                "use .evaluate(delta0, H, mu, ...) (numeric integrals over the contact contour)"
+            )
+        args = self.arguments if args is None else args
+        exprs = (self.force, self.contact_area)
+        if backend == "numpy" and any(e.has(sp.elliptic_e) for e in exprs):
+            from scipy.special import ellipe  # E(m), the parameter convention of sympy's elliptic_e
+
+            checked_lambdify(args, exprs, "sympy")  # names any missing argument
+            return sp.lambdify(args, exprs, modules=[{"elliptic_e": ellipe}, "numpy"], cse=True)
+        return checked_lambdify(args, exprs, backend)
+
+    def codegen_expressions(self):
+        """``(arguments, {name: expression})`` for :mod:`thinlayer.codegen` (closed forms only)."""
+        if self.P0 is None:
+            raise ValueError(f"no closed-form force law for {self.punch.name}; code generation needs one")
+        return self.arguments, {"force": self.force, "contact_area": self.contact_area}
+
+    def latex(self) -> str:
+        th = _vartheta(self.layer)
+        names = {_V: r"\iint_{\omega_0}(\delta_0 - \Phi)\,d\mathbf{x}",
+                 _J: r"\oint_{\Gamma_0}|\nabla\Phi|\,ds"}
+        rem_P = r" + O\!\left(P_0 \frac{H^3}{a^3}\right)"
+        rem_A = r" + O\!\left(|\omega_0| \frac{H^2}{a^2}\right)"
+        lead = sp.latex(sp.factor(th / (self.layer.A * S.H)))
+        corr = sp.latex(sp.factor(self.coefficient))
+        lines = [
+            latex_equation("P", lead + names[_V] + _signed(corr) + names[_J] + rem_P, "1.8"),
+            latex_equation(r"\int_{-\infty}^{\infty}(\hat Q(v) - \max(v, 0))\,dv",
+                           sp.latex(boundary_layer_force_defect()), None),
+        ]
+        if self.P0 is not None:
+            rel = sp.factor(sp.cancel(self.P1 / self.P0))
+            lines.append(latex_equation("P", sp.latex(sp.factor(self.P0)) + r"\left(1"
+                                        + _signed(sp.latex(rel)) + r"\right)" + rem_P, "1.8"))
+            lines.append(latex_equation(r"|\omega|", sp.latex(self.area0) + " - "
+                                        + sp.latex(h_star * S.H * self.perimeter) + rem_A, "3.25"))
+        else:
+            lines.append(latex_equation(r"|\omega|", r"|\omega_0| - h^* H |\Gamma_0|" + rem_A, "3.25"))
+        return " \\\\\n".join(lines)
+
+    # ---- numeric -----------------------------------------------------------------------------
+    def _numeric_values(self, values: dict) -> dict:
+        """``{name or symbol: value}`` -> ``{punch parameter symbol: value}`` (matched by name)."""
+        by_name = {q.name: q for q in self.punch.parameters}
+        out = {}
+        for k, v in values.items():
+            name = k if isinstance(k, str) else getattr(k, "name", None)
+            if name not in by_name:
+                raise ValueError(f"{k!r} is not a parameter of the punch; its parameters are "
+                                 f"{', '.join(by_name) or 'none'}")
+            out[by_name[name]] = v
+        return out
+
+    def evaluate(self, delta0: Any, H: Any, mu: Any = 1.0, edge_shift: Any = 0.0,
+                 parameters: dict | None = None, contour=None) -> ForceValues:
+        """Numbers of the law at one point (float).
+
+        Parameters
+        ----------
+        delta0, H, mu:
+            Indentation, thickness, shear modulus (numbers > 0).
+        edge_shift:
+            ``h^*`` for the area law (e.g. :func:`thinlayer.edge_shift_exact`).
+        parameters:
+            Values of the punch parameters (``{symbol or name: number}``) if it has any.
+        contour:
+            A precomputed :class:`thinlayer.ContactContour` for ``kind == "contour"``.
+        """
+        d0, HH, mm = (_positive(x, nm) for x, nm in ((delta0, "delta0"), (H, "H"), (mu, "mu")))
+        vals = self._numeric_values(parameters or {})
+        nu_free = {S.nu, S.kappa} & set().union(*(e.free_symbols for e in (self.coefficient, self.p1_factor)))
+        if nu_free:
+            raise ValueError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
+        sub = {S.delta0: d0, S.H: HH, S.mu: mm, **vals}
+        th = float(_vartheta(self.layer).subs(sub))
+        A = float(self.layer.A)
+        if self.kind != "contour":
+            _, _, area0, per, V, J = self._closed_numbers(sub)
+        else:
+            from .contour import contact_contour
+
+            Phi = self.punch.expr.subs(vals)
+            free = Phi.free_symbols - {S.x1, S.x2}
+            if free:
+                raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+            c = contour if contour is not None else contact_contour(Phi, d0)
+            area0, per = c.area, c.perimeter
+            V = c.integrate(lambda a, b: d0 - c.phi(a, b))
+            J = c.boundary_integral(c.g, of="s")
+        coef = float(self.coefficient.subs(sub))
+        return ForceValues(d0, HH, th / (A * HH) * V, coef * J, float(area0), float(per),
+                           float(edge_shift), float(V), float(J))
+
+    def _closed_numbers(self, sub):
+        def f(e):
+            return float(sp.N(e.subs(sub), 17))
+
+        free = (self.P0.free_symbols | self.area0.free_symbols) - set(sub)
+        if free:
+            raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+        th = _vartheta(self.layer)
+        V = f(self.P0 * self.layer.A * S.H / th)
+        J = f(self.P1 / self.coefficient)
+        return f(self.P0), f(self.P1), f(self.area0), f(self.perimeter), V, J
+
+    def indentation(self, force: Any, H: Any, mu: Any = 1.0, parameters: dict | None = None) -> float:
+        """The inverse problem: ``delta0`` with ``P0(delta0) + P1(delta0) = force`` (numbers).
+
+        For the quadratic punch the truncated law is a quadratic in ``D0 = delta0 - min Phi``,
+        solved in closed form (its positive root); otherwise a bracketing root search (Brent) on
+        :meth:`evaluate`.
+        """
+        Pt, HH, mm = (_positive(x, nm) for x, nm in ((force, "force P"), (H, "H"), (mu, "mu")))
+        vals = self._numeric_values(parameters or {})
+        if self.kind == "quadratic":
+            D0 = sp.Symbol("D_0", positive=True)
+            K, b, c = _quadratic_data(self.punch.expr)
+            phimin = c - (b.T * K.inv() * b)[0, 0] / 2
+            sub = {S.H: HH, S.mu: mm, **vals}
+            law = sp.expand((self.force - Pt).subs(S.delta0, D0 + phimin).subs(sub))
+            a2, a1, a0 = (float(sp.N(law.coeff(D0, k))) for k in (2, 1, 0))
+            disc = a1 * a1 - 4 * a2 * a0
+            root = (-a1 + math.sqrt(disc)) / (2 * a2) if a1 < 0 else (-2 * a0) / (a1 + math.sqrt(disc))
+            return float(sp.N(phimin.subs(sub))) + root
+        Phi = self.punch.expr.subs(vals)
+        from .contour import contact_contour
+
+        lo_c = contact_contour(Phi, 1.0)  # a first look for the minimum of Phi
+        phimin = lo_c.min_value
+
+        def resid(d):
+            return self.evaluate(d, HH, mm, parameters=vals).force - Pt
+
+        span = max(abs(phimin), 1.0)
+        hi = phimin + span
+        while resid(hi) < 0:
+            span *= 2
+            hi = phimin + span
+            if span > 1e12:
+                raise ValueError(f"no indentation gives the force {Pt}")
+        lo = phimin + span * 1e-9
+        import scipy.optimize as opt
+
+        if resid(lo) > 0:
+            lo = phimin + span * 1e-3
+        return float(opt.brentq(resid, lo, hi, xtol=1e-14 * span, rtol=1e-13))
+
+
+def _signed(tex: str) -> str:
+    """`` + tex`` or `` - rest`` when tex starts with a minus sign."""
+    return " - " + tex[1:].lstrip() if tex.startswith("-") else " + " + tex
+
+
+def _positive(value: Any, name: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (numbers.Real, sp.Number, mpmath.mpf)):
+        raise TypeError(f"{name} must be a positive number, got {value!r} ({type(value).__name__})")
+    v = float(value)
+    if not (math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
+    return v
+
+
+# ---------------------------------------------------------------------------------------------
+# the stage function
+# ---------------------------------------------------------------------------------------------
+def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
+    r"""Force--indentation law with its first correction in H (1.8), and the contact-area law (3.25).
+
+    Built from the inner terms ``p_0, p_1`` of :func:`thinlayer.inner_pressure` and the boundary
+    layer's force defect :func:`boundary_layer_force_defect` (module docstring).
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer, Punch
+    >>> law = force_law(BondedLayer(), Punch.paraboloid())
+    >>> law.kind
+    'quadratic'
+    >>> import sympy as sp
+    >>> sp.factor(sp.simplify(law.force / law.P0 - 1))     # = -2 m_1 H^2/(R delta0)
+    -2*H**2*nu*(4*nu - 1)/(3*R*delta_0*(nu - 1)*(2*nu - 1))
+    """
+    if not isinstance(layer, LayerKernel):
+        raise TypeError(f"layer must be a thinlayer layer kernel (e.g. BondedLayer(0.3)), got {layer!r}")
+    if not isinstance(punch, Punch):
+        punch = Punch(punch)
+    if layer.name == "half-space":
+        raise ValueError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
+    inner = inner_pressure(layer, punch, order=2)
+    lap = punch.laplacian()
+    p1 = inner.terms[1]
+    th = _vartheta(layer)
+    # p_1 = (vartheta H / A) M_1 Laplacian(Phi) (4.1): read the factor off the derived term
+    p1_factor = sp.cancel(p1 / lap) if lap != 0 else th * S.H * layer.M(1) / layer.A
+    if p1_factor.has(S.x1) or p1_factor.has(S.x2):
+        raise ArithmeticError(f"p_1 = {p1} is not proportional to Laplacian(Phi) = {lap}")
+    coefficient = sp.factor(p1_factor + th * S.H * _force_defect(layer) / layer.A)
+    expr = punch.expr
+    quad = _quadratic_data(expr)
+    if quad is not None:
+        K, b, c = quad
+        _positive_definite(K, str(expr))
+        detK = sp.factor(K.det())
+        phimin = sp.simplify(c - (b.T * K.inv() * b)[0, 0] / 2)
+        D0 = S.delta0 - phimin
+        area0 = 2 * sp.pi * D0 / sp.sqrt(detK)
+        V = sp.pi * D0**2 / sp.sqrt(detK)
+        J = sp.factor(K.trace()) * area0
+        lam = list(K.eigenvals(multiple=True))
+        a1, a2 = (sp.sqrt(2 * D0 / q) for q in lam)
+        perimeter = 4 * a1 * sp.elliptic_e(sp.simplify(1 - a2**2 / a1**2))
+        if (lam[0] - lam[1]).is_zero:
+            perimeter = 2 * sp.pi * a1
+        kind = "quadratic"
+    else:
+        rm = _radial_monomial(expr)
+        if rm is not None:
+            cc, k = rm
+            if cc.is_number and not cc > 0:
+                raise PunchError(f"the punch {expr} opens downwards (coefficient {cc} <= 0): no bounded contact")
+            a = (S.delta0 / cc) ** sp.Rational(1, 2 * k)
+            area0 = sp.pi * a**2
+            V = sp.pi * a**2 * S.delta0 * sp.Rational(k, k + 1)
+            J = 4 * sp.pi * k * S.delta0
+            perimeter = 2 * sp.pi * a
+            kind = "radial-monomial"
+        else:
+            return ForceLaw(layer, punch, "contour", None, None, None, None, coefficient, p1_factor)
+    P0 = th / (layer.A * S.H) * V
+    P1 = coefficient * J
+    return ForceLaw(layer, punch, kind, P0, P1, area0, perimeter, coefficient, p1_factor)

@@ -1,0 +1,317 @@
+r"""One call for users: the contact solution for numeric parameters.
+
+:func:`solve` joins the stages of the paper for a layer of thickness ``H``, shear modulus ``mu``
+and Poisson ratio ``nu`` indented by ``delta0`` (or pressed by a force ``P``):
+
+* the leading contact area omega_0 = {delta0 - Phi > 0} and its contour Gamma_0 (3.1)-(3.14)
+  (:func:`thinlayer.contact_contour`, closed form for the elliptic paraboloid);
+* the edge shift h^* (3.25), exact (Wiener--Hopf with the kernel (2.3)) and Alexandrov's;
+* the force (1.8) and the contact area with their first corrections (:mod:`thinlayer.force_law`);
+* the composite pressure (:mod:`thinlayer.composite`), built on first use.
+
+Orders of accuracy, in the contact half-width ``a = 2|omega_0|/|Gamma_0|`` (the radius for a
+circle): force ``O((H/a)^3)`` relative, contact area ``O((H/a)^2)``, composite pressure ``O(H/a)``
+uniformly (inner terms alone: ``O((H/a)^{2K})`` away from the edge).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property, lru_cache
+from typing import Any
+
+import mpmath
+import sympy as sp
+
+from . import symbols as S
+from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
+from .force_law import ORDERS, ForceLaw, ForceValues, _positive, force_law
+from .kernels import BondedLayer, LayerKernel
+from .punch import Punch, PunchError
+
+__all__ = ["ContactSolution", "solve", "MAX_FORCE_ORDER"]
+
+#: the force and area laws are derived to their first correction in H
+MAX_FORCE_ORDER = 1
+
+
+@lru_cache(maxsize=128)
+def _edge_shifts(nu: sp.Rational) -> tuple[float, float]:
+    from .wiener_hopf import edge_shift_alexandrov, edge_shift_exact
+
+    with mpmath.workdps(20):
+        return float(edge_shift_exact(nu, dps=12)), float(edge_shift_alexandrov(nu))
+
+
+def _check_layer(layer: Any) -> BondedLayer:
+    if not isinstance(layer, LayerKernel):
+        raise TypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3); got {layer!r}")
+    if not isinstance(layer, BondedLayer):
+        raise NotImplementedError(
+            f"solve() supports the bonded layer (BondedLayer) for now, got {type(layer).__name__}; "
+            "its boundary layer and edge shift are derived for the kernel (2.3)"
+        )
+    if layer.parameter is not None:
+        raise ValueError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
+                         "not the symbolic BondedLayer()")
+    return layer
+
+
+def _numeric_punch(punch: Any, parameters: dict | None) -> Punch:
+    if not isinstance(punch, Punch):
+        punch = Punch(punch)
+    if parameters:
+        punch = punch.subs(parameters)
+    free = punch.parameters
+    if free:
+        raise PunchError(
+            f"the punch {punch.expr} has parameters {', '.join(map(str, free))} without values; "
+            f"pass parameters={{{', '.join(repr(str(q)) + ': ...' for q in free)}}} or Punch.subs(...)"
+        )
+    return punch
+
+
+@dataclass(frozen=True, eq=False)
+class ContactSolution:
+    r"""Contact solution for numeric parameters; made by :func:`solve`.
+
+    Attributes
+    ----------
+    layer, punch:
+        The layer (numeric nu) and the punch (numeric coefficients).
+    delta0, H, mu:
+        Indentation, thickness and shear modulus.
+    law:
+        The symbolic :class:`~thinlayer.force_law.ForceLaw` and ``values`` its numbers here.
+    edge_shift, edge_shift_alexandrov:
+        h^* (3.25) from the exact kernel and from Alexandrov's approximation.
+    terms:
+        Number of inner terms in the composite pressure.
+    boundary_layer:
+        ``"exact"`` or ``"alexandrov"``: which boundary layer :attr:`pressure` uses.
+    """
+
+    layer: BondedLayer
+    punch: Punch
+    delta0: float
+    H: float
+    mu: float
+    law: ForceLaw
+    values: ForceValues
+    edge_shift: float
+    edge_shift_alexandrov: float
+    terms: int = 2
+    boundary_layer: str = "exact"
+    _contour: Any = field(default=None, repr=False)
+
+    # ---- the numbers -------------------------------------------------------------------------
+    @property
+    def force(self) -> float:
+        """Total force ``P`` with its first correction (1.8); remainder ``O(P (H/a)^3)``."""
+        return self.values.force
+
+    @property
+    def force_leading(self) -> float:
+        return self.values.P0
+
+    @property
+    def contact_area(self) -> float:
+        """``|omega_0| - h^* H |Gamma_0|`` (exact h^*); remainder ``O(|omega| (H/a)^2)``."""
+        return self.values.area
+
+    @property
+    def contact_area_leading(self) -> float:
+        return self.values.area0
+
+    @property
+    def contact_area_alexandrov(self) -> float:
+        """The contact area with Alexandrov's h^* (3.25) instead of the exact one."""
+        return self.values.area0 - self.edge_shift_alexandrov * self.H * self.values.perimeter
+
+    @property
+    def half_width(self) -> float:
+        """``a = 2 |omega_0|/|Gamma_0|`` (the radius for a circle): the length in the error orders."""
+        return self.values.half_width
+
+    @property
+    def H_over_a(self) -> float:
+        return self.H / self.half_width
+
+    @property
+    def order_of_accuracy(self) -> dict[str, tuple[str, float | None]]:
+        """``{result: (statement, (H/a)^order)}``: the size of the neglected remainder, relative."""
+        eps = self.H_over_a
+        out = {}
+        for key, (k, text) in ORDERS.items():
+            if key == "pressure_interior":
+                k = 2 * self.terms
+                text = text.replace("2K", str(2 * self.terms)).replace("K", str(self.terms))
+            out[key] = (text, eps**k)
+        return out
+
+    # ---- geometry and pressure -------------------------------------------------------------
+    @cached_property
+    def contour(self):
+        """The leading contour Gamma_0 (:class:`~thinlayer.ContactContour`)."""
+        if self._contour is not None:
+            return self._contour
+        from .contour import contact_contour
+
+        return contact_contour(self.punch.expr, self.delta0)
+
+    def contains(self, x1: Any, x2: Any):
+        """Membership of the contact area (composite pressure > 0)."""
+        return self.pressure(x1, x2) > 0
+
+    @cached_property
+    def composite(self) -> CompositePressure:
+        """The composite pressure object (built on first use; the exact table once per nu)."""
+        self.contour  # noqa: B018 - raises early for a non-smooth or multiply connected contour
+        return composite_pressure(self.layer, self.punch, self.delta0, self.H, self.mu, self.terms,
+                                  self.boundary_layer)
+
+    def pressure(self, x1: Any, x2: Any):
+        """Composite contact pressure ``p_c(x1, x2)`` (vectorised numpy)."""
+        return self.composite(x1, x2)
+
+    def lambdify(self):
+        """The vectorised pressure function ``(x1, x2) -> p_c``."""
+        return self.composite
+
+    # ---- output ------------------------------------------------------------------------------
+    def latex(self) -> str:
+        v = self.values
+        nu = sp.latex(sp.nsimplify(self.layer.nu, rational=False) if isinstance(self.layer.nu, mpmath.mpf)
+                      else self.layer.nu)
+        rows = [
+            rf"\Phi = {sp.latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
+            rf"\quad H = {self.H:.6g},\quad \mu = {self.mu:.6g},\quad H/a = {self.H_over_a:.4g}",
+            rf"P = {v.P0:.8g} {'-' if v.P1 < 0 else '+'} {abs(v.P1):.8g} = {v.force:.8g}"
+            rf"\ \left(\pm {v.P0 * self.H_over_a**3:.2g}\right) \tag{{1.8}}",
+            rf"|\omega| = {v.area0:.8g} - {self.edge_shift:.8g} \cdot {self.H:.6g} \cdot {v.perimeter:.8g}"
+            rf" = {v.area:.8g}\ \left(\pm {v.area0 * self.H_over_a**2:.2g}\right) \tag{{3.25}}",
+            rf"h^* = {self.edge_shift:.10g}\ (\text{{exact}}),\quad \tilde h^* = {self.edge_shift_alexandrov:.10g}"
+            r"\ (\text{Alexandrov}) \tag{3.25}",
+        ]
+        return " \\\\\n".join(rows)
+
+    def __str__(self) -> str:
+        v = self.values
+        return (
+            f"ContactSolution({self.punch.name}: delta0={self.delta0:.6g}, H={self.H:.6g}, mu={self.mu:.6g}, "
+            f"nu={float(self.layer.nu):.6g}; H/a={self.H_over_a:.3g})\n"
+            f"  force        P = {v.force:.8g}  (leading {v.P0:.8g}, correction {v.P1:+.6g}; "
+            f"remainder ~{v.P0 * self.H_over_a**3:.1g})\n"
+            f"  contact area   = {v.area:.8g}  (leading {v.area0:.8g}; remainder ~{v.area0 * self.H_over_a**2:.1g})\n"
+            f"  edge shift h*  = {self.edge_shift:.10g} exact, {self.edge_shift_alexandrov:.10g} Alexandrov"
+        )
+
+    def _repr_latex_(self) -> str:
+        return "$$\\begin{aligned}" + self.latex().replace(" \\\\\n", " \\\\ ") + "\\end{aligned}$$"
+
+
+def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,
+          force: Any = None, parameters: dict | None = None, order: int = 1, terms: int = 2,
+          boundary_layer: str = "exact") -> ContactSolution:
+    r"""Contact solution of a thin bonded layer under a rigid polynomial punch.
+
+    Parameters
+    ----------
+    layer:
+        ``BondedLayer(nu)`` with a numeric Poisson ratio in (-1, 1/2).
+    punch:
+        A :class:`~thinlayer.Punch` (or a polynomial in ``x_1, x_2``) with numeric coefficients,
+        or with ``parameters`` giving them.
+    delta0:
+        Indentation depth (> 0, above the punch's lowest point).  Give either ``delta0`` or
+        ``force``.
+    H, mu:
+        Layer thickness and shear modulus (> 0).
+    force:
+        The inverse problem: the total force P (1.8); ``delta0`` is then found from the force
+        law with its first correction.
+    order:
+        Corrections in the force and area laws: 0 (leading terms) or 1 (first correction in H,
+        the default); higher orders are not derived.
+    terms:
+        Inner terms ``p_0 ... p_{terms-1}`` (2.26) in the composite pressure.
+    boundary_layer:
+        ``"exact"`` (default) or ``"alexandrov"`` boundary layer in the composite pressure.
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer, Punch, solve
+    >>> sol = solve(BondedLayer("3/10"), Punch.paraboloid(1), delta0=0.01, H=0.01)
+    >>> round(sol.edge_shift, 6), round(sol.edge_shift_alexandrov, 6)
+    (0.122071, 0.145193)
+    >>> round(sol.force / sol.force_leading - 1, 6)      # -2 m1 H^2/(R delta0), m1 = 1/14
+    -0.001429
+    """
+    layer = _check_layer(layer)
+    if boundary_layer not in BOUNDARY_LAYERS:
+        raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
+    if isinstance(order, bool) or not isinstance(order, int) or order < 0:
+        raise ValueError(f"order must be 0 or 1 (corrections in the force law), got {order!r}")
+    if order > MAX_FORCE_ORDER:
+        raise NotImplementedError(
+            f"order={order}: the force and contact-area laws are derived to their first correction in H "
+            f"(order <= {MAX_FORCE_ORDER}); the next terms need the second-order boundary layer"
+        )
+    if isinstance(terms, bool) or not isinstance(terms, int) or terms < 1:
+        raise ValueError(f"terms must be an integer >= 1 (inner terms p_0 .. p_(terms-1)), got {terms!r}")
+    if H is None:
+        raise TypeError("solve() needs the layer thickness H")
+    HH = _positive(H, "H")
+    mm = _positive(mu, "mu")
+    pn = _numeric_punch(punch, parameters)
+    law = force_law(layer, pn)
+    if (delta0 is None) == (force is None):
+        raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
+    if force is not None:
+        d0 = law.indentation(force, HH, mm) if order == 1 else _leading_indentation(law, force, HH, mm)
+    else:
+        d0 = _positive(delta0, "delta0")
+    contour = None
+    if law.kind == "contour":
+        from .contour import contact_contour
+
+        contour = contact_contour(pn.expr, d0)
+    else:
+        _check_contact(pn, d0)
+    h_ex, h_al = _edge_shifts(sp.Rational(sp.nsimplify(layer.nu)) if isinstance(layer.nu, mpmath.mpf)
+                              else sp.Rational(layer.nu))
+    vals = law.evaluate(d0, HH, mm, edge_shift=h_ex, contour=contour)
+    if order == 0:
+        vals = ForceValues(vals.delta0, vals.H, vals.P0, 0.0, vals.area0, vals.perimeter, 0.0, vals.V, vals.J)
+    return ContactSolution(layer, pn, d0, HH, mm, law, vals, h_ex, h_al, terms, boundary_layer, contour)
+
+
+def _check_contact(punch: Punch, d0: float) -> None:
+    """For a closed-form punch: delta0 must exceed the lowest point of Phi."""
+    from .force_law import _quadratic_data
+
+    quad = _quadratic_data(punch.expr)
+    if quad is not None:
+        K, b, c = quad
+        phimin = float(c - (b.T * K.inv() * b)[0, 0] / 2)
+    else:
+        phimin = 0.0
+    if d0 <= phimin:
+        raise ValueError(f"no contact: delta0 = {d0:g} does not exceed the lowest point of the punch, "
+                         f"min Phi = {phimin:g}; take delta0 > {phimin:g}")
+
+
+def _leading_indentation(law: ForceLaw, force: Any, H: float, mu: float) -> float:
+    import scipy.optimize as opt
+
+    Pt = _positive(force, "force P")
+
+    def resid(d):
+        return law.evaluate(d, H, mu).P0 - Pt
+
+    hi = 1.0
+    while resid(hi) < 0:
+        hi *= 2
+        if hi > 1e12:
+            raise ValueError(f"no indentation gives the force {Pt}")
+    return float(opt.brentq(resid, hi * 1e-12, hi, rtol=1e-13))
