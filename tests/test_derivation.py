@@ -47,6 +47,20 @@ def test_report_compiles_to_pdf(tmp_path):
     ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[inner]\norder=0\n", "positive integer"),
     ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[extra]\n", "unknown table"),
     ("[derivation\n", "not valid TOML"),
+    ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[contact]\ndelta0=0.1\nH=0.1\n"
+     "parameters={R=1}\n", "because [layer] nu is symbolic"),
+    ("[derivation]\nname='x'\n[layer]\nnu=0.3\n[punch]\nkind='paraboloid'\n[contact]\ndelta0=0.1\n"
+     "parameters={R=1}\n", "missing the key 'H'"),
+    ("[derivation]\nname='x'\n[layer]\nnu=0.3\n[punch]\nkind='paraboloid'\n[contact]\ndelta0=0.1\nH=-1\n"
+     "parameters={R=1}\n", "H = -1 is invalid"),
+    ("[derivation]\nname='x'\n[layer]\nnu=0.3\n[punch]\nkind='paraboloid'\n[contact]\ndelta0=0.1\nH=1\n"
+     "parameters={R_1=1}\n", "not parameters of the punch"),
+    ("[derivation]\nname='x'\n[layer]\nnu=0.3\n[punch]\nkind='paraboloid'\n[contact]\ndelta0=0.1\nH=1\n",
+     "values missing for ['R']"),
+    ("[derivation]\nname='x'\n[layer]\nnu=0.3\n[punch]\nkind='paraboloid'\n[contact]\nH=1\n"
+     "parameters={R=1}\n", "exactly one of 'delta0'"),
+    ("[derivation]\nname='x'\n[layer]\nnu=0.3\n[punch]\nkind='paraboloid'\n[contact]\nH=1\ndelta0=1\n"
+     "parameters={R=1}\nsize=3\n", "unknown key(s) ['size']"),
 ])
 def test_malformed_derivation_files(tmp_path, content, message):
     f = tmp_path / "bad.toml"
@@ -60,3 +74,16 @@ def test_report_contains_edge_shift_table():
     der = load_derivation(ROOT / "derivations" / "elliptic_paraboloid.toml")
     text = report_latex(der)
     assert "Wiener" in text and r"\tag{3.1}" in text
+
+
+def test_report_contains_boundary_layer_force_law_and_solution():
+    der = load_derivation(ROOT / "derivations" / "elliptic_paraboloid.toml")
+    text = report_latex(der)
+    for tag in ("3.19", "3.20--3.21", "3.23", "3.24", "3.25", "1.8"):
+        assert rf"\tag{{{tag}}}" in text
+    assert "Contact solution for numeric parameters" in text
+    # the numeric solution's force agrees with thinlayer.solve called directly
+    from thinlayer import BondedLayer, Punch, solve
+
+    sol = solve(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), delta0=0.5, H=0.05)
+    assert f"= {sol.force:.8g}" in text

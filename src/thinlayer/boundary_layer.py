@@ -254,7 +254,7 @@ class AlexandrovParameters:
     def latex(self) -> str:
         d = self.dps
         B, C = _to_sympy(self.B, d), _to_sympy(self.C, d)
-        return "\n".join(
+        return " \\\\\n".join(
             [
                 latex_equation(r"\tilde{\mathcal{L}}(s)", sp.latex(S.s * self.symbol()), "3.19"),
                 latex_equation(r"\frac{B}{C} = \mathcal{A}, \quad B", sp.latex(B), "3.20"),
@@ -584,7 +584,7 @@ class AlexandrovSolution:
     def latex(self) -> str:
         _, B, C, h = self._BCh()
         hs = sp.Symbol("h", real=True)
-        return "\n".join(
+        return " \\\\\n".join(
             [
                 latex_equation(r"\frac{\mathcal{A}\,\tilde q^{**}(s, h + \tau)}{\vartheta H_* b_1^*(s)}",
                                self.q_general(tau, hs), "3.23"),

@@ -20,6 +20,7 @@ except ModuleNotFoundError:  # pragma: no cover
     import tomli as tomllib
 
 from . import errata
+from . import symbols as S
 from .coefficients import kernel_coefficients
 from .inner import inner_pressure
 from .kernels import BondedLayer, FrictionlessLayer, LayerKernel
@@ -42,9 +43,54 @@ class Derivation:
     coefficient_order: int
     inner_order: int | None
     edge_shift_nus: tuple
+    contact: dict | None = None
 
 
-_TOP_KEYS = {"derivation", "layer", "coefficients", "punch", "inner", "edge_shift"}
+_TOP_KEYS = {"derivation", "layer", "coefficients", "punch", "inner", "edge_shift", "contact"}
+_CONTACT_KEYS = {"delta0", "H", "mu", "nu", "parameters", "force"}
+
+
+def _contact_table(ct: Any, layer: LayerKernel, punch: Punch) -> dict | None:
+    """Validate ``[contact]``: numeric parameters for :func:`thinlayer.solve`."""
+    if ct is None:
+        return None
+    if not isinstance(ct, dict):
+        raise DerivationFileError("[contact] must be a table with keys " + ", ".join(sorted(_CONTACT_KEYS)))
+    unknown = set(ct) - _CONTACT_KEYS
+    if unknown:
+        raise DerivationFileError(f"[contact] unknown key(s) {sorted(unknown)}; valid keys are {sorted(_CONTACT_KEYS)}")
+    if ("delta0" in ct) == ("force" in ct):
+        raise DerivationFileError("[contact] needs exactly one of 'delta0' (indentation) or 'force' (inverse problem)")
+    out = {}
+    for key in ("delta0", "force", "H", "mu"):
+        if key in ct or key == "H":
+            val = _need(ct, key, "contact", (int, float), "a number > 0")
+            if not val > 0:
+                raise DerivationFileError(f"[contact] {key} = {val!r} is invalid: expected a number > 0")
+            out[key] = float(val)
+    nu = ct.get("nu")
+    if layer.name == "bonded" and getattr(layer, "parameter", None) is not None:
+        if nu is None:
+            raise DerivationFileError("[contact] needs 'nu' (a number in (-1, 1/2)) because [layer] nu is symbolic")
+    if nu is not None:
+        try:
+            out["layer"] = BondedLayer(nu)
+        except (ValueError, TypeError) as exc:
+            raise DerivationFileError(f"[contact] nu = {nu!r}: {exc}") from exc
+    pars = ct.get("parameters", {})
+    if not isinstance(pars, dict) or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                             for v in pars.values()):
+        raise DerivationFileError(f"[contact] parameters = {pars!r}: a table of numbers, e.g. {{R_1 = 4, R_2 = 1}}")
+    names = {q.name for q in punch.parameters}
+    bad = set(pars) - names
+    if bad:
+        raise DerivationFileError(f"[contact] parameters {sorted(bad)} are not parameters of the punch "
+                                  f"({', '.join(sorted(names)) or 'it has none'})")
+    missing = names - set(pars)
+    if missing:
+        raise DerivationFileError(f"[contact] parameters: values missing for {sorted(missing)}")
+    out["parameters"] = dict(pars)
+    return out
 
 
 def _need(table: dict, key: str, where: str, kinds: tuple, what: str) -> Any:
@@ -120,7 +166,22 @@ def load_derivation(path: str | Path) -> Derivation:
     es = data.get("edge_shift", {}).get("nu", [])
     if not isinstance(es, list) or not all(isinstance(v, (int, float)) and -1 < v < 0.5 for v in es):
         raise DerivationFileError(f"[edge_shift] nu = {es!r}: a list of numbers in (-1, 1/2)")
-    return Derivation(name, title, layer, punch, corder, iorder, tuple(es))
+    contact = _contact_table(data.get("contact"), layer, punch)
+    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact)
+
+
+def _alexandrov_generic_latex() -> str:
+    """(3.19)-(3.25) with A, B, C, m_1 as symbols (the nu-dependent closed forms are unreadably long)."""
+    from .boundary_layer import AlexandrovParameters, AlexandrovSolution
+
+    A = sp.Symbol(r"\mathcal{A}", positive=True)
+    B, C = sp.symbols("B C", positive=True)
+    m1 = sp.Symbol("m_1", real=True)
+    par = AlexandrovParameters(A=A, m1=m1, B=B, C=C)
+    rows = [rf"\tilde{{\mathcal{{L}}}}(s) = {sp.latex(S.s * par.symbol())} \tag{{3.19}}",
+            r"B = \frac{1}{\mathcal{A} + \sqrt{\mathcal{A}^2 + 2 m_1}}, \quad C = \frac{B}{\mathcal{A}} \tag{3.20--3.21}",
+            AlexandrovSolution(par, 1 / sp.sqrt(C) - 1 / (2 * B)).latex()]
+    return " \\\\\n".join(rows)
 
 
 def _gather(body: str) -> str:
@@ -152,16 +213,40 @@ def report_latex(der: Derivation) -> str:
         from .contour import ellipse_contour
 
         parts += [r"\section{Leading contact area}", _gather(ellipse_contour().latex())]
+    if layer.name == "bonded":
+        from .boundary_layer import alexandrov_parameters, alexandrov_solution
+        from .force_law import force_law
+
+        parts += [r"\section{Boundary layer (3.15)--(3.25)}",
+                  "Alexandrov's approximation (3.19) with $B$, $C$ fitted to $\\mathcal{A}$ (3.20) and $m_1$ (3.21); "
+                  "the solution in terms of $\\mathcal{A}$, $B$, $C$ (values per $\\nu$ in the edge-shift table):\n",
+                  _gather(_alexandrov_generic_latex())]
+        law = force_law(layer, punch)
+        parts += [r"\section{Force and contact area with their first corrections in $H$}",
+                  "Inner terms $p_0 + p_1$ plus the boundary layer's force defect; $a$ is the contact half-width.\n",
+                  _gather(law.latex())]
     if der.edge_shift_nus:
         from .wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
-        rows = [rf"{v:g} & {float(edge_shift_exact(v)):.10f} & {float(edge_shift_alexandrov(v)):.10f} \\"
-                for v in der.edge_shift_nus]
+        from .boundary_layer import alexandrov_parameters
+
+        rows = []
+        for v in der.edge_shift_nus:
+            B, C = alexandrov_parameters(BondedLayer(v)).numeric()
+            rows.append(rf"{v:g} & {float(B):.8f} & {float(C):.8f} & {float(edge_shift_exact(v)):.10f} & "
+                        rf"{float(edge_shift_alexandrov(v)):.10f} \\")
         parts += [r"\section{Edge shift of the contact area}",
                   "The contour of the contact area lies at the distance $h^* H$ inside $\\Gamma_0$: exact "
                   "Wiener--Hopf value and Alexandrov's approximation (3.25).\n",
-                  "\\begin{center}\\begin{tabular}{rrr}\n$\\nu$ & $h^*$ exact & $h^*$ (3.25) \\\\ \\hline\n"
+                  "\\begin{center}\\begin{tabular}{rrrrr}\n$\\nu$ & $B$ & $C$ & $h^*$ exact & $h^*$ (3.25) \\\\ \\hline\n"
                   + "\n".join(rows) + "\n\\end{tabular}\\end{center}\n"]
+    if der.contact is not None:
+        from .solution import solve
+
+        c = der.contact
+        sol = solve(c.get("layer", layer), punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
+                    mu=c.get("mu", 1.0), parameters=c["parameters"])
+        parts += [r"\section{Contact solution for numeric parameters}", _gather(sol.latex())]
     parts += [r"\section{Errata}", "Where the derivation differs from the printed paper:\n", r"\begin{itemize}"]
     parts += [rf"\item {e.latex()}" for e in errata.ENTRIES]
     parts += [r"\end{itemize}", r"\end{document}", ""]

@@ -90,7 +90,7 @@ def _inner_generic_p1():
 
 
 def _printed_p1() -> sp.Expr:
-    A, m1 = sp.Symbol("mathcal{A}", positive=True), sp.Symbol("m_1")
+    A, m1 = sp.Symbol(r"\mathcal{A}", positive=True), sp.Symbol("m_1")
     R1s, R2s = sp.Symbol("R_1^*", positive=True), sp.Symbol("R_2^*", positive=True)
     return S.vartheta * m1 * S.H_s / A * (1 / R1s + 1 / R2s)
 
@@ -116,7 +116,7 @@ def _check_2_30() -> bool:
 
 def _check_2_31() -> bool:
     ip = _inner_generic_p1()
-    A, m1 = sp.Symbol("mathcal{A}", positive=True), sp.Symbol("m_1")
+    A, m1 = sp.Symbol(r"\mathcal{A}", positive=True), sp.Symbol("m_1")
     R1s, R2s = sp.Symbol("R_1^*", positive=True), sp.Symbol("R_2^*", positive=True)
     Rs = 2 / (1 / R1s + 1 / R2s)
     base = S.delta0_s - S.H_s**2 * (S.xi1**2 / (2 * R1s) + S.xi2**2 / (2 * R2s))

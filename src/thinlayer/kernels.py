@@ -170,6 +170,9 @@ class BondedLayer(LayerKernel):
     dps: int = 30
     name: str = field(default="bonded", init=False)
     equation: str = field(default="2.3", init=False)
+    #: "symbolic", "exact" or "float": part of equality and hash, so that caches keyed by the layer
+    #: never hand the float layer's coefficients to the exact one (0.5 == Rational(1, 2) in Python)
+    kind: str = field(default="symbolic", init=False, repr=False)
 
     def __init__(self, nu: Any = None, parameter: str = "nu", dps: int = 30):
         if parameter not in ("nu", "kappa"):
@@ -184,6 +187,8 @@ class BondedLayer(LayerKernel):
         object.__setattr__(self, "dps", dps)
         object.__setattr__(self, "name", "bonded")
         object.__setattr__(self, "equation", "2.3")
+        kind = "symbolic" if isinstance(val, sp.Symbol) else "float" if isinstance(val, mpmath.mpf) else "exact"
+        object.__setattr__(self, "kind", kind)
 
     @property
     def parameter(self) -> sp.Symbol | None:
@@ -327,7 +332,7 @@ class GenericLayer(LayerKernel):
     name: str = field(default="generic", init=False)
     equation: str = field(default="2.20", init=False)
 
-    A_symbol = sp.Symbol("mathcal{A}", positive=True)
+    A_symbol = sp.Symbol(r"\mathcal{A}", positive=True)
 
     @staticmethod
     def m_symbol(n: int) -> sp.Symbol:
