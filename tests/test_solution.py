@@ -332,3 +332,25 @@ def test_solve_bad_input():
         solve(layer, punch, force=-1.0, H=0.1)
     with pytest.raises(ValueError, match="nu"):
         BondedLayer(0.7)
+
+
+def test_composite_pressure_negative_edge_shift_against_direct_solution():
+    # nu = 0.45: h* < 0, the contact extends beyond Gamma_0; the composite must follow it
+    errs, inner_errs = [], []
+    for direct, sol in _sphere_runs(0.45, (20.0, 40.0)):
+        assert sol.edge_shift < 0 and direct.radius > math.sqrt(2 * 1000.0 * sol.delta0)
+        rr = np.linspace(0.0, 1.05 * direct.radius, 3001)
+        pd = direct.pressure_at(rr)
+        a0 = math.sqrt(2 * 1000.0 * sol.delta0)
+        pin = np.where(rr < a0, np.maximum(sol.composite._p_in(rr, 0 * rr), 0), 0)
+        errs.append(np.abs(sol.pressure(rr, 0 * rr) - pd).max() / pd.max())
+        inner_errs.append(np.abs(pin - pd).max() / pd.max())
+        # the composite is zero beyond the derived edge a0 - h* H and positive inside it, except in a
+        # zone where p_1 < 0 (m_1 = 2.18 here) outweighs the boundary layer's sqrt rise: width O(H (H/a)^2)
+        edge = a0 - sol.edge_shift * sol.H
+        assert float(sol.pressure(edge + 0.01, 0.0)) == 0
+        v_zone = (float(BondedLayer(0.45).m(1)) * sol.H * 2 / 1000.0 / (a0 / 1000.0)) ** 2 * math.pi / (
+            4 * float(BondedLayer(0.45).A))  # g Qhat = |p_1| A/vartheta with Qhat ~ 2 sqrt(A tau/pi)
+        assert float(sol.pressure(edge - 1.5 * v_zone * sol.H, 0.0)) > 0
+    assert all(e < 0.3 * i for e, i in zip(errs, inner_errs))
+    assert errs[0] / errs[1] > 2.8

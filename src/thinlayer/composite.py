@@ -16,7 +16,9 @@ and ``Qhat(v) - v`` decays exponentially into omega_0 (``e^{-sigma v}``), so awa
 Accuracy: the boundary layer is its leading term, so ``p_c`` is uniformly valid with an error
 ``O(p_max H/a)`` (a the contact half-width); away from the edge it is as accurate as the inner
 expansion.  Near the edge the neglected ``O(H/a)`` terms (``p_1``, curvature of Gamma_0) may make
-the sum slightly negative in a zone of width ``o(H)``; ``p_c`` is clipped at 0 there.
+the sum slightly negative where ``g Qhat(v) < |p_1| A/vartheta``: with ``Qhat ~ 2 sqrt(A tau/pi)``
+a zone ``tau < (pi/(4A)) (m_1 H Laplacian(Phi)/g)^2 = O((H/a)^2)`` (wider as nu -> 1/2, where m_1
+grows); ``p_c`` is clipped at 0 there.
 
 The foot point is found by a few Newton steps on ``Phi(x + t e) = delta0`` along
 ``e = grad Phi(x)/|grad Phi(x)|``; the gradient line meets Gamma_0 at a point whose distance
