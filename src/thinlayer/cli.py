@@ -1,29 +1,325 @@
-"""Command line: ``thinlayer derive FILE [--out DIR] [--pdf] [--force]``."""
+"""Command line: ``thinlayer {report,coefficients,inner,solve,codegen,errata} ...``.
+
+Every subcommand prints readable text by default, ``--json`` for machine-readable output (keys
+documented in each subcommand's ``--help``) and, where a formula is the answer, ``--latex``.
+Exit codes: 0 success, 2 bad input (a one-line reason on stderr), 1 any other failure.
+"""
 from __future__ import annotations
 
 import argparse
+import json
 import sys
+from typing import Any
 
-from .derivation import DerivationFileError, load_derivation, write_report
+import sympy as sp
+
+EXIT_OK, EXIT_FAILURE, EXIT_BAD_INPUT = 0, 1, 2
+
+
+class BadInput(ValueError):
+    """Raised for invalid command-line values (exit code 2)."""
+
+
+# ---------------------------------------------------------------------------------------------
+# shared argument parsing
+# ---------------------------------------------------------------------------------------------
+def _layer(nu: str, model: str = "bonded"):
+    from .kernels import BondedLayer, FrictionlessLayer
+
+    if model == "frictionless":
+        return FrictionlessLayer()
+    if nu in (None, "symbolic"):
+        return BondedLayer()
+    try:
+        val: Any = nu if "/" in nu else float(nu)
+    except ValueError as exc:
+        raise BadInput(f"--nu {nu!r}: use 'symbolic', an exact fraction such as 3/10, or a number") from exc
+    try:
+        return BondedLayer(val)
+    except (ValueError, TypeError) as exc:
+        raise BadInput(f"--nu {nu}: {exc}") from exc
+
+
+_KINDS = ("elliptic_paraboloid", "paraboloid", "fourth_degree")
+
+
+def _punch(args):
+    from .punch import Punch
+
+    if (args.kind is None) == (args.punch is None):
+        raise BadInput("give exactly one of --punch EXPR (a polynomial in x_1, x_2) and --kind NAME "
+                       f"({', '.join(_KINDS)})")
+    if args.kind is not None:
+        return getattr(Punch, args.kind)()
+    return Punch(args.punch)
+
+
+def _params(items: list[str] | None) -> dict[str, float]:
+    out = {}
+    for it in items or []:
+        if "=" not in it:
+            raise BadInput(f"--param {it!r}: write NAME=VALUE, e.g. --param R_1=4")
+        k, v = it.split("=", 1)
+        try:
+            out[k.strip()] = float(v)
+        except ValueError as exc:
+            raise BadInput(f"--param {it!r}: {v!r} is not a number") from exc
+    return out
+
+
+def _num(x: Any) -> float | None:
+    try:
+        return float(x)
+    except (TypeError, ValueError):
+        return None
+
+
+def _expr_json(e: Any) -> dict:
+    """``{"expr": sympy string, "latex": LaTeX, "value": float or null}``."""
+    e = sp.sympify(e)
+    return {"expr": str(e), "latex": sp.latex(e), "value": _num(e) if e.is_number else None}
+
+
+def _print(obj: Any, as_json: bool) -> None:
+    if as_json:
+        print(json.dumps(obj, indent=2))
+    else:
+        print(obj)
+
+
+def _add_punch_args(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--punch", help="the punch Phi as a polynomial in x_1, x_2, e.g. 'x_1**2/8 + x_2**2/2'")
+    p.add_argument("--kind", choices=_KINDS, help="a catalogue punch with symbolic parameters instead of --punch")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE",
+                   help="a value for a punch parameter (repeatable), e.g. --param R_1=4 --param R_2=1")
+
+
+def _add_output_args(p: argparse.ArgumentParser, latex: bool = True) -> None:
+    p.add_argument("--json", action="store_true", help="machine-readable JSON output (keys above)")
+    if latex:
+        p.add_argument("--latex", action="store_true", help="print the LaTeX of the result")
+
+
+# ---------------------------------------------------------------------------------------------
+# subcommands
+# ---------------------------------------------------------------------------------------------
+def _cmd_report(args) -> int:
+    from .derivation import load_derivation, write_report
+
+    der = load_derivation(args.file)
+    tex = write_report(der, args.out, pdf=args.pdf, force=args.force)
+    pdf = tex.with_suffix(".pdf") if args.pdf else None
+    if args.json:
+        _print({"tex": str(tex), "pdf": str(pdf) if pdf else None}, True)
+    else:
+        print(f"wrote {tex}" + (f" and {pdf}" if pdf else ""))
+    return EXIT_OK
+
+
+def _cmd_coefficients(args) -> int:
+    from .coefficients import kernel_coefficients
+    from .moments import kernel_moment
+
+    if args.order < 1 or args.order > 60:
+        raise BadInput(f"--order {args.order}: an integer from 1 to 60")
+    layer = _layer(args.nu, args.model)
+    co = kernel_coefficients(layer, args.order)
+    if args.latex:
+        print(co.latex())
+        return EXIT_OK
+    moments = {}
+    for n in range(min(args.order, 3) + 1):
+        for k in range(n + 1):
+            moments[f"mu_{2 * k},{2 * n - 2 * k}"] = _expr_json(kernel_moment(layer, 2 * k, 2 * n - 2 * k))
+    out = {"nu": args.nu, "model": args.model, "order": args.order, "A": _expr_json(co.A),
+           "m": [_expr_json(x) for x in co.m], "M": [_expr_json(x) for x in co.M], "moments": moments}
+    # m[n], M[n] for n = 0..order (m_0 = M_0 = 1)
+    if args.json:
+        _print(out, True)
+    else:
+        print(f"A = {out['A']['expr']}")
+        for n, (a, b) in enumerate(zip(out["m"], out["M"])):
+            print(f"m_{n} = {a['expr']}\nM_{n} = {b['expr']}")
+    return EXIT_OK
+
+
+def _cmd_inner(args) -> int:
+    from .inner import inner_pressure
+
+    layer = _layer(args.nu, args.model)
+    punch = _punch(args)
+    if args.param:
+        punch = punch.subs(_params(args.param))
+    ip = inner_pressure(layer, punch, args.order)
+    if args.latex:
+        print(ip.latex())
+    elif args.json:
+        _print({"punch": str(punch.expr), "nu": args.nu, "order": ip.order,
+                "arguments": [a.name for a in ip.arguments],
+                "terms": [_expr_json(t) for t in ip.terms],
+                "scaled_terms": [_expr_json(t) for t in ip.scaled_terms],
+                "pressure": _expr_json(ip.pressure)}, True)
+    else:
+        for k, t in enumerate(ip.terms):
+            print(f"p_{k} = {t}")
+    return EXIT_OK
+
+
+def _cmd_solve(args) -> int:
+    from .solution import solve
+
+    layer = _layer(args.nu)
+    punch = _punch(args)
+    if (args.delta0 is None) == (args.force is None):
+        raise BadInput("give exactly one of --delta0 (indentation) and --force (total force P)")
+    sol = solve(layer, punch, delta0=args.delta0, force=args.force, H=args.H, mu=args.mu,
+                parameters=_params(args.param), boundary_layer=args.boundary_layer)
+    if args.latex:
+        print(sol.latex())
+        return EXIT_OK
+    v = sol.values
+    acc = sol.order_of_accuracy
+    out = {"nu": float(layer.nu), "H": sol.H, "mu": sol.mu, "delta0": sol.delta0,
+           "force": v.force, "force_leading": v.P0, "force_correction": v.P1,
+           "contact_area": v.area, "contact_area_leading": v.area0, "perimeter": v.perimeter,
+           "edge_shift_exact": sol.edge_shift, "edge_shift_alexandrov": sol.edge_shift_alexandrov,
+           "H_over_a": sol.H_over_a,
+           "remainder": {k: {"statement": t, "relative_size": e} for k, (t, e) in acc.items()}}
+    if args.json:
+        _print(out, True)
+    else:
+        print(sol)
+    return EXIT_OK
+
+
+def _cmd_errata(args) -> int:
+    from . import errata
+
+    if args.latex:
+        print(errata.latex_table())
+    elif args.json:
+        _print([{"equation": e.equation, "kind": e.kind, "quantity": e.quantity, "printed": e.printed,
+                 "derived": e.derived, "evidence": e.evidence} for e in errata.ENTRIES], True)
+    else:
+        for e in errata.ENTRIES:
+            print(f"({e.equation}) [{e.kind}] {e.quantity}\n    printed: {e.printed}\n    derived: {e.derived}")
+    return EXIT_OK
+
+
+def _cmd_codegen(args) -> int:
+    try:
+        from . import codegen
+    except ImportError as exc:  # pragma: no cover
+        raise BadInput("code generation is not available in this installation") from exc
+    return codegen.cli(args)
+
+
+# ---------------------------------------------------------------------------------------------
+# the parser
+# ---------------------------------------------------------------------------------------------
+def build_parser() -> argparse.ArgumentParser:
+    fmt = argparse.RawDescriptionHelpFormatter
+    ap = argparse.ArgumentParser(
+        prog="thinlayer", formatter_class=fmt,
+        description="Symbolic asymptotics of a rigid punch pressed into a thin elastic layer.",
+        epilog="examples:\n"
+               "  thinlayer report derivations/elliptic_paraboloid.toml --out build --pdf\n"
+               "  thinlayer coefficients --nu 3/10 --order 4 --json\n"
+               "  thinlayer solve --nu 0.3 --kind elliptic_paraboloid --param R_1=4 --param R_2=1 "
+               "--delta0 0.5 --H 0.05\n\n"
+               "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure")
+    sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
+
+    r = sub.add_parser("report", aliases=["derive"], formatter_class=fmt,
+                       help="carry out a derivation file and write its LaTeX report (and PDF)",
+                       description="Carry out a derivation file (derivations/*.toml) and write <out>/<name>.tex.\n"
+                                   "JSON keys: tex, pdf (null without --pdf).",
+                       epilog="example:\n  thinlayer report derivations/sphere.toml --out build --pdf")
+    r.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml")
+    r.add_argument("--out", default="build", help="output folder, created if missing (default: build)")
+    r.add_argument("--pdf", action="store_true", help="also compile the report (latexmk or pdflatex)")
+    r.add_argument("--force", action="store_true", help="overwrite a .tex file that thinlayer did not write")
+    _add_output_args(r, latex=False)
+    r.set_defaults(func=_cmd_report)
+
+    c = sub.add_parser("coefficients", formatter_class=fmt, help="A, m_n (2.20), M_k (4.2) and kernel moments (2.21)",
+                       description="Coefficients of the layer kernel's expansions.\n"
+                                   "JSON keys: nu, model, order, A, m (list m_0..m_order), M (list M_0..M_order), moments "
+                                   "({'mu_i,j': ...}); every value is {expr, latex, value (float or null)}.",
+                       epilog="examples:\n  thinlayer coefficients --nu 3/10 --order 4 --json\n"
+                              "  thinlayer coefficients --order 2 --latex     # symbolic nu")
+    c.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction like 3/10, or a number")
+    c.add_argument("--model", choices=("bonded", "frictionless"), default="bonded", help="base of the layer")
+    c.add_argument("--order", type=int, default=3, help="number of coefficients m_1..m_order (default 3)")
+    _add_output_args(c)
+    c.set_defaults(func=_cmd_coefficients)
+
+    i = sub.add_parser("inner", formatter_class=fmt, help="inner expansion of the contact pressure (2.26), (4.1)",
+                       description="Inner expansion p_0 + p_1 + ... for a punch.\n"
+                                   "JSON keys: punch, nu, order, arguments, terms, scaled_terms, pressure "
+                                   "(each {expr, latex, value}).",
+                       epilog="examples:\n  thinlayer inner --kind elliptic_paraboloid --latex\n"
+                              "  thinlayer inner --punch 'x_1**2/2 + x_2**4' --nu 3/10 --json")
+    i.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction, or a number")
+    i.add_argument("--model", choices=("bonded", "frictionless"), default="bonded", help="base of the layer")
+    i.add_argument("--order", type=int, default=None, help="number of terms (default: degree//2 + 1)")
+    _add_punch_args(i)
+    _add_output_args(i)
+    i.set_defaults(func=_cmd_inner)
+
+    s = sub.add_parser("solve", formatter_class=fmt, help="contact solution for numeric parameters",
+                       description="Force, contact area and edge shift for numeric parameters (thinlayer.solve).\n"
+                                   "JSON keys: nu, H, mu, delta0, force, force_leading, force_correction, "
+                                   "contact_area,\ncontact_area_leading, perimeter, edge_shift_exact, "
+                                   "edge_shift_alexandrov, H_over_a,\nremainder ({force, contact_area, "
+                                   "pressure_interior, pressure_composite: {statement, relative_size}}).",
+                       epilog="examples:\n  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 "
+                              "--H 0.5 --json\n  thinlayer solve --nu 0.3 --punch 'x_1**2/8 + x_2**2/2' "
+                              "--force 100 --H 0.05")
+    s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2): a number or an exact fraction")
+    s.add_argument("--H", type=float, required=True, help="layer thickness (> 0)")
+    s.add_argument("--mu", type=float, default=1.0, help="shear modulus (> 0, default 1)")
+    s.add_argument("--delta0", type=float, help="indentation (> 0)")
+    s.add_argument("--force", type=float, help="total force P instead of --delta0 (inverse problem)")
+    s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
+                   help="boundary layer of the composite pressure (default exact)")
+    _add_punch_args(s)
+    _add_output_args(s)
+    s.set_defaults(func=_cmd_solve)
+
+    e = sub.add_parser("errata", formatter_class=fmt, help="the misprints found by re-deriving the paper",
+                       description="The errata registry.\nJSON: a list of {equation, kind, quantity, printed, "
+                                   "derived, evidence}.",
+                       epilog="example:\n  thinlayer errata --json")
+    _add_output_args(e)
+    e.set_defaults(func=_cmd_errata)
+
+    try:
+        from . import codegen
+    except ImportError:  # pragma: no cover
+        codegen = None
+    if codegen is not None and hasattr(codegen, "add_cli"):
+        g = codegen.add_cli(sub, fmt)
+        g.set_defaults(func=_cmd_codegen)
+    return ap
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="thinlayer", description="thin elastic layer contact asymptotics")
-    sub = ap.add_subparsers(dest="cmd", required=True)
-    d = sub.add_parser("derive", help="carry out a derivation file and export its LaTeX report")
-    d.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml")
-    d.add_argument("--out", default="build", help="output folder (default: build)")
-    d.add_argument("--pdf", action="store_true", help="also compile the report with pdflatex")
-    d.add_argument("--force", action="store_true", help="overwrite a .tex file thinlayer did not write")
+    ap = build_parser()
     args = ap.parse_args(argv)
+    from .derivation import DerivationFileError
+    from .punch import PunchError
+
     try:
-        der = load_derivation(args.file)
-        tex = write_report(der, args.out, pdf=args.pdf, force=args.force)
-    except (DerivationFileError, FileExistsError, RuntimeError) as exc:
+        return args.func(args)
+    except (BadInput, DerivationFileError, PunchError, FileExistsError, ValueError, TypeError,
+            NotImplementedError) as exc:
+        msg = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        print(f"thinlayer: {msg}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except RuntimeError as exc:
         print(f"thinlayer: {exc}", file=sys.stderr)
-        return 2
-    print(f"wrote {tex}" + (f" and {tex.with_suffix('.pdf')}" if args.pdf else ""))
-    return 0
+        return EXIT_FAILURE
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -43,7 +43,8 @@ class Erratum:
 def _escape(text: str) -> str:
     """Plain prose -> LaTeX text mode."""
     rep = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
-           "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
+           "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
+           "<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}"}
     return "".join(rep.get(ch, ch) for ch in text)
 
 

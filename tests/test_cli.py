@@ -1,0 +1,124 @@
+"""The command line: every subcommand, --json keys, --latex, --help examples and exit codes."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from thinlayer.cli import build_parser, main
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_coefficients_json_against_sympy_series(capsys):
+    code, out, _ = run(capsys, "coefficients", "--nu", "3/10", "--order", "2", "--json")
+    assert code == 0
+    data = json.loads(out)
+    assert set(data) == {"nu", "model", "order", "A", "m", "M", "moments"}
+    # independent route: sympy's series of L(s)/s (2.3) = A (1 + m_1 s^2 + m_2 s^4 + ...) (2.20)
+    s = sp.Symbol("s")
+    k = 3 - 4 * sp.Rational(3, 10)
+    L = (2 * k * sp.sinh(2 * s) - 4 * s) / (2 * k * sp.cosh(2 * s) + 1 + k**2 + 4 * s**2)
+    ser = sp.series(L / s, s, 0, 5).removeO()
+    A = ser.coeff(s, 0)
+    assert sp.Rational(data["A"]["expr"]) == A
+    assert sp.Rational(data["m"][1]["expr"]) == ser.coeff(s, 2) / A
+    assert sp.Rational(data["m"][2]["expr"]) == ser.coeff(s, 4) / A
+    # (4.2): M is the reciprocal series: (1 + m1 z + m2 z^2)(1 + M1 z + M2 z^2) = 1 + O(z^3)
+    m = [sp.Rational(x["expr"]) for x in data["m"]]
+    M = [sp.Rational(x["expr"]) for x in data["M"]]
+    assert m[1] + M[1] == 0 and m[2] + m[1] * M[1] + M[2] == 0
+    assert data["moments"]["mu_0,0"]["value"] == pytest.approx(float(sp.pi**2 * A))
+
+
+def test_coefficients_latex_and_text(capsys):
+    code, out, _ = run(capsys, "coefficients", "--order", "1", "--latex")
+    assert code == 0 and r"\tag{2.20}" in out
+    code, out, _ = run(capsys, "coefficients", "--nu", "0.3", "--order", "1")
+    assert code == 0 and "m_1 = " in out
+
+
+def test_inner_json_and_latex(capsys):
+    code, out, _ = run(capsys, "inner", "--kind", "paraboloid", "--nu", "3/10", "--json")
+    assert code == 0
+    data = json.loads(out)
+    assert {"punch", "terms", "scaled_terms", "pressure", "arguments"} <= set(data)
+    # p_1 = -(vartheta H/A) m_1 Laplacian(Phi) with vartheta = mu/(1 - nu), A = 20/49, m_1 = 1/14, Lap = 2/R
+    H, mu, R = sp.symbols("H mu R", positive=True)
+    p1 = sp.sympify(data["terms"][1]["expr"], locals={"H": H, "mu": mu, "R": R})
+    assert sp.simplify(p1 + mu / sp.Rational(7, 10) * H / sp.Rational(20, 49) * sp.Rational(1, 14) * 2 / R) == 0
+    code, out, _ = run(capsys, "inner", "--punch", "x_1**2/2 + x_2**4", "--latex")
+    assert code == 0 and r"\tag{4.1}" in out
+
+
+def test_solve_json_matches_api(capsys):
+    from thinlayer import BondedLayer, Punch, solve
+
+    code, out, _ = run(capsys, "solve", "--nu", "0.3", "--kind", "elliptic_paraboloid", "--param", "R_1=4",
+                       "--param", "R_2=1", "--delta0", "0.5", "--H", "0.05", "--json")
+    assert code == 0
+    data = json.loads(out)
+    sol = solve(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), delta0=0.5, H=0.05)
+    assert data["force"] == pytest.approx(sol.force, rel=1e-14)
+    assert data["contact_area"] == pytest.approx(sol.contact_area, rel=1e-14)
+    assert data["edge_shift_exact"] == pytest.approx(0.1220706479, abs=1e-9)
+    assert set(data["remainder"]) == {"force", "contact_area", "pressure_interior", "pressure_composite"}
+    code, out, _ = run(capsys, "solve", "--nu", "0.3", "--punch", "x_1**2/8 + x_2**2/2", "--force",
+                       str(sol.force), "--H", "0.05", "--json")
+    assert code == 0 and json.loads(out)["delta0"] == pytest.approx(0.5, rel=1e-12)
+    code, out, _ = run(capsys, "solve", "--nu", "0.3", "--punch", "x_1**2/8 + x_2**2/2", "--delta0", "0.5",
+                       "--H", "0.05", "--latex")
+    assert code == 0 and r"\tag{1.8}" in out
+
+
+def test_errata_json(capsys):
+    from thinlayer import errata
+
+    code, out, _ = run(capsys, "errata", "--json")
+    data = json.loads(out)
+    assert code == 0 and len(data) == len(errata.ENTRIES)
+    assert {"equation", "kind", "quantity", "printed", "derived", "evidence"} == set(data[0])
+
+
+def test_report_json_and_alias(capsys, tmp_path):
+    f = ROOT / "derivations" / "quartic_punch.toml"
+    code, out, _ = run(capsys, "report", str(f), "--out", str(tmp_path), "--json")
+    assert code == 0 and json.loads(out) == {"tex": str(tmp_path / "quartic_punch.tex"), "pdf": None}
+    code, out, _ = run(capsys, "derive", str(f), "--out", str(tmp_path))
+    assert code == 0 and "wrote" in out
+
+
+@pytest.mark.parametrize("argv, reason", [
+    (["solve", "--nu", "0.7", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "0.1"], "nu"),
+    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--delta0", "0.1", "--H", "0.1"], "without values"),
+    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "-1", "--H", "0.1"], "delta0"),
+    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "0"], "H"),
+    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R", "--delta0", "0.1", "--H", "1"], "NAME=VALUE"),
+    (["solve", "--nu", "0.3", "--punch", "exp(x_1)", "--delta0", "0.1", "--H", "1"], "polynomial"),
+    (["solve", "--nu", "0.3", "--punch", "x_1**2", "--kind", "paraboloid", "--delta0", "0.1", "--H", "1"],
+     "exactly one"),
+    (["coefficients", "--nu", "abc"], "--nu"),
+    (["coefficients", "--order", "0"], "--order"),
+    (["report", "no/such/file.toml"], "does not exist"),
+])
+def test_bad_input_exit_code_2(capsys, argv, reason):
+    code, out, err = run(capsys, *argv)
+    assert code == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and reason in err
+
+
+def test_help_has_examples():
+    ap = build_parser()
+    assert "example" in ap.format_help()
+    sub = ap._subparsers._group_actions[0].choices
+    for name in ("report", "coefficients", "inner", "solve", "errata"):
+        text = sub[name].format_help()
+        assert "example" in text and "--json" in text, name
