@@ -87,6 +87,10 @@ def test_frictionless_kernel_numerics():
             ref = (mp.cosh(2 * mp.mpf(u)) - 1) / (mp.sinh(2 * mp.mpf(u)) + 2 * mp.mpf(u))
         assert abs(layer.L_numeric(u) - float(ref)) <= 4e-15 * float(ref)
         assert abs(layer.L_numeric(u, "mpmath") - ref) <= mp.mpf(10) ** -14 * ref
+        # L(u)/u, used by the boundary-layer kernel F = L(s)/s (3.17)
+        assert abs(float(layer.L_numeric(u, over_u=True)) - float(ref / u)) <= 4e-15 * float(ref / u)
+        assert abs(layer.L_numeric(u, "mpmath", over_u=True) - ref / u) <= mp.mpf(10) ** -14 * ref / u
+    assert float(layer.L_numeric(0.0, over_u=True)) == 0.5
     assert layer.A == sp.Rational(1, 2)
 
 

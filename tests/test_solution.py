@@ -74,7 +74,7 @@ def test_closed_forms_equal_contour_integrals(nu):
         from thinlayer.contour import contact_contour
 
         num = law.evaluate(0.3, 0.02, 1.7, edge_shift=0.1, contour=contact_contour(punch.expr, 0.3))
-        generic = type(law)(law.layer, law.punch, "contour", None, None, None, None, law.coefficient, law.p1_factor)
+        generic = type(law)(law.layer, law.punch, "contour", None, None, None, None, law.coefficient, law.p1_factor)  # numeric route
         num = generic.evaluate(0.3, 0.02, 1.7, edge_shift=0.1)
         for q in ("P0", "P1", "area0", "perimeter", "V", "J"):
             assert getattr(num, q) == pytest.approx(getattr(closed, q), rel=1e-10), q
@@ -354,3 +354,52 @@ def test_composite_pressure_negative_edge_shift_against_direct_solution():
         assert float(sol.pressure(edge - 1.5 * v_zone * sol.H, 0.0)) > 0
     assert all(e < 0.3 * i for e, i in zip(errs, inner_errs))
     assert errs[0] / errs[1] > 2.8
+
+
+# ------------------------------------------------------------------------------ frictionless base
+def test_frictionless_edge_shift_and_boundary_layer():
+    from thinlayer.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
+
+    layer = FrictionlessLayer()
+    hs = [edge_shift_exact(layer, normaliser=n) for n in ("alexandrov", "sqrt", "tanh")]
+    assert max(hs) - min(hs) < 1e-15
+    # independent: h = -(1/pi) int_0^oo log(L(t)/(A t))/t^2 dt straight from the kernel (no normaliser)
+    def f(t):
+        with mpmath.workdps(90):  # cosh 2t - 1 and the log of a ratio near 1 cancel ~2 log10(1/t) digits each
+            t = mpmath.mpf(t)
+            val = mpmath.log(2 * (mpmath.cosh(2 * t) - 1) / (t * (mpmath.sinh(2 * t) + 2 * t))) / t**2
+        return +val
+
+    with mpmath.workdps(30):
+        t0 = mpmath.mpf("1e-9")
+        ref = -(t0 * f(t0) + mpmath.quad(f, [t0, 0.5, 2, 8, mpmath.inf])) / mpmath.pi
+    assert float(hs[0]) == pytest.approx(float(ref), abs=1e-12)
+    # Alexandrov: m_1 = 0 gives B = 1/(2A) = 1, C = 2, h = 1/sqrt(2) - 1/2 (3.25)
+    assert float(edge_shift_alexandrov(layer)) == pytest.approx(math.sqrt(0.5) - 0.5, abs=1e-15)
+    sol = boundary_layer_exact(layer)
+    assert sol.sigma == pytest.approx(math.pi)  # first zero of F(iy) = (1 - cos 2y)/(y (sin 2y + 2y))
+    tau = np.linspace(0, 12, 400)
+    q = sol.q_numpy(tau)
+    assert abs(q[0]) < 1e-12 and np.all(q[1:] > 0)  # (3.18) to the table accuracy; positive (2.7)
+    for t in (0.05, 1.0, 4.0):
+        assert float(sol.q(t)) == pytest.approx(float(sol.q_numpy(t)), abs=1e-9)
+    assert sol.force_defect() == pytest.approx(0.0, abs=1e-9)  # = m_1/2 = 0
+
+
+def test_frictionless_solve_against_direct_solution():
+    layer, R = FrictionlessLayer(), 1000.0
+    rem, area_rem = [], []
+    for cH in (10.0, 20.0):
+        d0 = cH**2 / (2 * R)
+        direct = solve_axisymmetric(layer, r**2 / (2 * R), d0, 1.0, nu=0.3, error_estimate=False)
+        sol = solve(layer, Punch.paraboloid(R), delta0=d0, H=1.0, nu=0.3)
+        assert sol.force == sol.force_leading  # m_1 = 0: no (H/a)^2 correction
+        rem.append(direct.force / sol.force - 1)
+        area_rem.append(math.pi * direct.radius**2 / sol.contact_area - 1)
+        rr = np.linspace(0, 1.05 * direct.radius, 2001)
+        pd = direct.pressure_at(rr)
+        assert np.abs(sol.pressure(rr, 0 * rr) - pd).max() < 1e-3 * pd.max()
+    assert abs(rem[0]) < (1 / 10.0) ** 3 and 7.0 < rem[0] / rem[1] < 9.0  # O((H/a)^3)
+    assert 3.5 < area_rem[0] / area_rem[1] < 4.5  # O((H/a)^2) with the exact h*
+    with pytest.raises(ValueError, match="nu="):
+        solve(layer, Punch.paraboloid(R), delta0=0.1, H=1.0)

@@ -148,13 +148,14 @@ class CompositePressure:
 
 
 def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float, mu: float = 1.0,
-                       terms: int = 2, boundary_layer: str = "exact") -> CompositePressure:
+                       terms: int = 2, boundary_layer: str = "exact", nu: Any = None) -> CompositePressure:
     """Uniformly valid contact pressure for a numeric layer and punch (module docstring).
 
     Parameters
     ----------
     layer:
-        A :class:`~thinlayer.BondedLayer` with a numeric Poisson ratio.
+        A :class:`~thinlayer.BondedLayer` with a numeric Poisson ratio, or a
+        :class:`~thinlayer.FrictionlessLayer` (then give ``nu`` for ``vartheta = mu/(1 - nu)``).
     punch:
         A :class:`~thinlayer.Punch` with numeric coefficients.
     delta0, H, mu:
@@ -172,6 +173,8 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
         raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
     inner = inner_pressure(layer, punch, order=terms)
     vals = {S.delta0: delta0, S.H: H, S.mu: mu}
+    if nu is not None:
+        vals[S.nu] = nu
     p_expr = inner.pressure.subs(vals)
     th = float(_vartheta(layer).subs(vals))
     p_lam = sp.lambdify((S.x1, S.x2), p_expr, modules="numpy", cse=True)

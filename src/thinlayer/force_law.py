@@ -208,6 +208,8 @@ class ForceLaw:
         ``|omega_0|`` and ``|Gamma_0|`` (sympy) or ``None``.
     coefficient:
         ``P1 = coefficient * J`` with ``coefficient = (vartheta H/A)(M_1 + D)``, ``D = m_1/2``.
+    V, J:
+        ``iint_{omega_0} (delta0 - Phi) dx`` and ``oint_{Gamma_0} |grad Phi| ds`` (closed forms) or None.
     """
 
     layer: LayerKernel
@@ -219,6 +221,8 @@ class ForceLaw:
     perimeter: sp.Expr | None
     coefficient: sp.Expr
     p1_factor: sp.Expr
+    V: sp.Expr | None = None
+    J: sp.Expr | None = None
 
     equation = "1.8"
 
@@ -308,7 +312,7 @@ class ForceLaw:
         return out
 
     def evaluate(self, delta0: Any, H: Any, mu: Any = 1.0, edge_shift: Any = 0.0,
-                 parameters: dict | None = None, contour=None) -> ForceValues:
+                 parameters: dict | None = None, contour=None, nu: Any = None) -> ForceValues:
         """Numbers of the law at one point (float).
 
         Parameters
@@ -321,6 +325,9 @@ class ForceLaw:
             Values of the punch parameters (``{symbol or name: number}``) if it has any.
         contour:
             A precomputed :class:`thinlayer.ContactContour` for ``kind == "contour"``.
+        nu:
+            Poisson ratio for ``vartheta = mu/(1 - nu)`` when the kernel does not fix it
+            (:class:`~thinlayer.FrictionlessLayer`).
         """
         d0, HH, mm = (_positive(x, nm) for x, nm in ((delta0, "delta0"), (H, "H"), (mu, "mu")))
         vals = self._numeric_values(parameters or {})
@@ -328,7 +335,13 @@ class ForceLaw:
         if nu_free:
             raise ValueError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
         sub = {S.delta0: d0, S.H: HH, S.mu: mm, **vals}
-        th = float(_vartheta(self.layer).subs(sub))
+        if nu is not None:
+            sub[S.nu] = sp.nsimplify(nu) if isinstance(nu, str) else nu
+        th_expr = _vartheta(self.layer).subs(sub)
+        if not th_expr.is_number:
+            raise ValueError(f"vartheta = {_vartheta(self.layer)} needs the Poisson ratio: pass nu= "
+                             f"(the {self.layer.name} kernel does not fix it)")
+        th = float(th_expr)
         A = float(self.layer.A)
         if self.kind != "contour":
             _, _, area0, per, V, J = self._closed_numbers(sub)
@@ -354,12 +367,10 @@ class ForceLaw:
         free = (self.P0.free_symbols | self.area0.free_symbols) - set(sub)
         if free:
             raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
-        th = _vartheta(self.layer)
-        V = f(self.P0 * self.layer.A * S.H / th)
-        J = f(self.P1 / self.coefficient)
-        return f(self.P0), f(self.P1), f(self.area0), f(self.perimeter), V, J
+        return f(self.P0), f(self.P1), f(self.area0), f(self.perimeter), f(self.V), f(self.J)
 
-    def indentation(self, force: Any, H: Any, mu: Any = 1.0, parameters: dict | None = None) -> float:
+    def indentation(self, force: Any, H: Any, mu: Any = 1.0, parameters: dict | None = None,
+                    nu: Any = None) -> float:
         """The inverse problem: ``delta0`` with ``P0(delta0) + P1(delta0) = force`` (numbers).
 
         For the quadratic punch the truncated law is a quadratic in ``D0 = delta0 - min Phi``,
@@ -373,6 +384,8 @@ class ForceLaw:
             K, b, c = _quadratic_data(self.punch.expr)
             phimin = c - (b.T * K.inv() * b)[0, 0] / 2
             sub = {S.H: HH, S.mu: mm, **vals}
+            if nu is not None:
+                sub[S.nu] = nu
             law = sp.expand((self.force - Pt).subs(S.delta0, D0 + phimin).subs(sub))
             a2, a1, a0 = (float(sp.N(law.coeff(D0, k))) for k in (2, 1, 0))
             disc = a1 * a1 - 4 * a2 * a0
@@ -385,7 +398,7 @@ class ForceLaw:
         phimin = lo_c.min_value
 
         def resid(d):
-            return self.evaluate(d, HH, mm, parameters=vals).force - Pt
+            return self.evaluate(d, HH, mm, parameters=vals, nu=nu).force - Pt
 
         span = max(abs(phimin), 1.0)
         hi = phimin + span
@@ -483,4 +496,4 @@ def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
             return ForceLaw(layer, punch, "contour", None, None, None, None, coefficient, p1_factor)
     P0 = th / (layer.A * S.H) * V
     P1 = coefficient * J
-    return ForceLaw(layer, punch, kind, P0, P1, area0, perimeter, coefficient, p1_factor)
+    return ForceLaw(layer, punch, kind, P0, P1, area0, perimeter, coefficient, p1_factor, V, J)

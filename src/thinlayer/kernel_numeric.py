@@ -78,11 +78,11 @@ def frictionless_numpy(u, over_u: bool = False):
     a = -np.expm1(-2 * u)
     den = -np.expm1(-4 * u) + 4 * u * E
     if over_u:
-        # a^2/u = a * (a/u); a/u = -expm1(-2u)/u, with the limit 2 at u = 0
+        # L/u = a^2/(u den) = (a/u)^2/(den/u); a/u -> 2 and den/u -> 8 at u = 0, so L/u -> 1/2
         with np.errstate(invalid="ignore", divide="ignore"):
             au = np.where(u > 0, a / np.where(u > 0, u, 1.0), 2.0)
             denu = np.where(u > 0, den / np.where(u > 0, u, 1.0), 8.0)
-        return a * au / denu
+        return au * au / denu
     return np.where(u > 0, a * a / np.where(u > 0, den, 1.0), 0.0)
 
 

@@ -26,7 +26,7 @@ import sympy as sp
 from . import symbols as S
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, _positive, force_law
-from .kernels import BondedLayer, LayerKernel
+from .kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from .punch import Punch, PunchError
 
 __all__ = ["ContactSolution", "solve", "MAX_FORCE_ORDER"]
@@ -36,25 +36,39 @@ MAX_FORCE_ORDER = 1
 
 
 @lru_cache(maxsize=128)
-def _edge_shifts(nu: sp.Rational) -> tuple[float, float]:
+def _edge_shifts(nu: sp.Rational | str) -> tuple[float, float]:
     from .wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
     with mpmath.workdps(20):
         return float(edge_shift_exact(nu, dps=12)), float(edge_shift_alexandrov(nu))
 
 
-def _check_layer(layer: Any) -> BondedLayer:
+def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
+    """The layer and its numeric Poisson ratio (given by the layer, or by ``nu`` for a nu-free kernel)."""
     if not isinstance(layer, LayerKernel):
         raise TypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3); got {layer!r}")
+    if isinstance(layer, FrictionlessLayer):
+        if nu is None:
+            raise ValueError("the frictionless-base kernel does not fix the Poisson ratio: pass nu= "
+                             "(-1 < nu < 1/2) for vartheta = mu/(1 - nu)")
+        try:
+            nv = float(sp.nsimplify(nu)) if isinstance(nu, str) else float(nu)
+        except (TypeError, ValueError, sp.SympifyError) as exc:
+            raise ValueError(f"nu must be a number in (-1, 1/2), got {nu!r}") from exc
+        if isinstance(nu, bool) or not -1 < nv < 0.5:
+            raise ValueError(f"nu = {nu!r} is outside the admissible range -1 < nu < 1/2")
+        return layer, nv
     if not isinstance(layer, BondedLayer):
         raise NotImplementedError(
-            f"solve() supports the bonded layer (BondedLayer) for now, got {type(layer).__name__}; "
-            "its boundary layer and edge shift are derived for the kernel (2.3)"
+            f"solve() supports BondedLayer and FrictionlessLayer, got {type(layer).__name__}; "
+            "the boundary layer and edge shift are derived for those kernels"
         )
     if layer.parameter is not None:
         raise ValueError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
                          "not the symbolic BondedLayer()")
-    return layer
+    if nu is not None and abs(float(nu) - float(layer.nu)) > 1e-12:
+        raise ValueError(f"nu = {nu!r} disagrees with the layer's Poisson ratio {float(layer.nu)}")
+    return layer, float(layer.nu)
 
 
 def _numeric_punch(punch: Any, parameters: dict | None) -> Punch:
@@ -78,9 +92,9 @@ class ContactSolution:
     Attributes
     ----------
     layer, punch:
-        The layer (numeric nu) and the punch (numeric coefficients).
-    delta0, H, mu:
-        Indentation, thickness and shear modulus.
+        The layer and the punch (numeric coefficients).
+    delta0, H, mu, nu:
+        Indentation, thickness, shear modulus and Poisson ratio.
     law:
         The symbolic :class:`~thinlayer.force_law.ForceLaw` and ``values`` its numbers here.
     edge_shift, edge_shift_alexandrov:
@@ -91,11 +105,12 @@ class ContactSolution:
         ``"exact"`` or ``"alexandrov"``: which boundary layer :attr:`pressure` uses.
     """
 
-    layer: BondedLayer
+    layer: LayerKernel
     punch: Punch
     delta0: float
     H: float
     mu: float
+    nu: float
     law: ForceLaw
     values: ForceValues
     edge_shift: float
@@ -168,7 +183,7 @@ class ContactSolution:
         """The composite pressure object (built on first use; the exact table once per nu)."""
         self.contour  # noqa: B018 - raises early for a non-smooth or multiply connected contour
         return composite_pressure(self.layer, self.punch, self.delta0, self.H, self.mu, self.terms,
-                                  self.boundary_layer)
+                                  self.boundary_layer, nu=self.nu)
 
     def pressure(self, x1: Any, x2: Any):
         """Composite contact pressure ``p_c(x1, x2)`` (vectorised numpy)."""
@@ -181,8 +196,10 @@ class ContactSolution:
     # ---- output ------------------------------------------------------------------------------
     def latex(self) -> str:
         v = self.values
-        nu = sp.latex(sp.nsimplify(self.layer.nu, rational=False) if isinstance(self.layer.nu, mpmath.mpf)
-                      else self.layer.nu)
+        nu = getattr(self.layer, "nu", None)
+        nu = sp.latex(sp.nsimplify(self.nu) if nu is None or isinstance(nu, mpmath.mpf) else nu)
+        if isinstance(self.layer, FrictionlessLayer):
+            nu += r"\ (\text{frictionless base})"
         rows = [
             rf"\Phi = {sp.latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
             rf"\quad H = {self.H:.6g},\quad \mu = {self.mu:.6g},\quad H/a = {self.H_over_a:.4g}",
@@ -199,7 +216,8 @@ class ContactSolution:
         v = self.values
         return (
             f"ContactSolution({self.punch.name}: delta0={self.delta0:.6g}, H={self.H:.6g}, mu={self.mu:.6g}, "
-            f"nu={float(self.layer.nu):.6g}; H/a={self.H_over_a:.3g})\n"
+            f"nu={self.nu:.6g}{', frictionless base' if isinstance(self.layer, FrictionlessLayer) else ''}; "
+            f"H/a={self.H_over_a:.3g})\n"
             f"  force        P = {v.force:.8g}  (leading {v.P0:.8g}, correction {v.P1:+.6g}; "
             f"remainder ~{v.P0 * self.H_over_a**3:.1g})\n"
             f"  contact area   = {v.area:.8g}  (leading {v.area0:.8g}; remainder ~{v.area0 * self.H_over_a**2:.1g})\n"
@@ -212,13 +230,14 @@ class ContactSolution:
 
 def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,
           force: Any = None, parameters: dict | None = None, order: int = 1, terms: int = 2,
-          boundary_layer: str = "exact") -> ContactSolution:
+          boundary_layer: str = "exact", nu: Any = None) -> ContactSolution:
     r"""Contact solution of a thin bonded layer under a rigid polynomial punch.
 
     Parameters
     ----------
     layer:
-        ``BondedLayer(nu)`` with a numeric Poisson ratio in (-1, 1/2).
+        ``BondedLayer(nu)`` with a numeric Poisson ratio in (-1, 1/2), or ``FrictionlessLayer()``
+        (a layer on a frictionless base; give ``nu``).
     punch:
         A :class:`~thinlayer.Punch` (or a polynomial in ``x_1, x_2``) with numeric coefficients,
         or with ``parameters`` giving them.
@@ -237,6 +256,10 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         Inner terms ``p_0 ... p_{terms-1}`` (2.26) in the composite pressure.
     boundary_layer:
         ``"exact"`` (default) or ``"alexandrov"`` boundary layer in the composite pressure.
+    nu:
+        Poisson ratio for ``vartheta = mu/(1 - nu)`` when the kernel does not fix it
+        (``FrictionlessLayer``; its ``m_1 = 0``, so the force has no correction of relative order
+        ``(H/a)^2`` and the remainder is ``O((H/a)^3)``).
 
     Examples
     --------
@@ -247,7 +270,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     >>> round(sol.force / sol.force_leading - 1, 6)      # -2 m1 H^2/(R delta0), m1 = 1/14
     -0.001429
     """
-    layer = _check_layer(layer)
+    layer, nu_value = _check_layer(layer, nu)
     if boundary_layer not in BOUNDARY_LAYERS:
         raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
     if isinstance(order, bool) or not isinstance(order, int) or order < 0:
@@ -268,7 +291,8 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     if (delta0 is None) == (force is None):
         raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     if force is not None:
-        d0 = law.indentation(force, HH, mm) if order == 1 else _leading_indentation(law, force, HH, mm)
+        d0 = (law.indentation(force, HH, mm, nu=nu_value) if order == 1
+              else _leading_indentation(law, force, HH, mm, nu_value))
     else:
         d0 = _positive(delta0, "delta0")
     contour = None
@@ -278,12 +302,14 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         contour = contact_contour(pn.expr, d0)
     else:
         _check_contact(pn, d0)
-    h_ex, h_al = _edge_shifts(sp.Rational(sp.nsimplify(layer.nu)) if isinstance(layer.nu, mpmath.mpf)
-                              else sp.Rational(layer.nu))
-    vals = law.evaluate(d0, HH, mm, edge_shift=h_ex, contour=contour)
+    from .wiener_hopf import _rational_nu
+
+    h_ex, h_al = _edge_shifts(_rational_nu(layer if isinstance(layer, FrictionlessLayer) else
+                                           sp.nsimplify(layer.nu) if isinstance(layer.nu, mpmath.mpf) else layer.nu))
+    vals = law.evaluate(d0, HH, mm, edge_shift=h_ex, contour=contour, nu=nu_value)
     if order == 0:
         vals = ForceValues(vals.delta0, vals.H, vals.P0, 0.0, vals.area0, vals.perimeter, 0.0, vals.V, vals.J)
-    return ContactSolution(layer, pn, d0, HH, mm, law, vals, h_ex, h_al, terms, boundary_layer, contour)
+    return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour)
 
 
 def _check_contact(punch: Punch, d0: float) -> None:
@@ -301,13 +327,13 @@ def _check_contact(punch: Punch, d0: float) -> None:
                          f"min Phi = {phimin:g}; take delta0 > {phimin:g}")
 
 
-def _leading_indentation(law: ForceLaw, force: Any, H: float, mu: float) -> float:
+def _leading_indentation(law: ForceLaw, force: Any, H: float, mu: float, nu: float) -> float:
     import scipy.optimize as opt
 
     Pt = _positive(force, "force P")
 
     def resid(d):
-        return law.evaluate(d, H, mu).P0 - Pt
+        return law.evaluate(d, H, mu, nu=nu).P0 - Pt
 
     hi = 1.0
     while resid(hi) < 0:

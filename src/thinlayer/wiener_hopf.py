@@ -90,7 +90,7 @@ import numpy as np
 import sympy as sp
 from scipy import optimize, special
 
-from .kernels import BondedLayer
+from .kernels import BondedLayer, FrictionlessLayer
 
 __all__ = [
     "KERNELS",
@@ -116,8 +116,18 @@ _GL = np.polynomial.legendre.leggauss(24)
 
 
 # ----------------------------------------------------------------------------- inputs
-def _rational_nu(nu: Any) -> sp.Rational:
-    """Exact rational value of a Poisson ratio (a float is taken as its exact binary value)."""
+#: key of the layer on a frictionless base (its kernel does not depend on nu)
+FRICTIONLESS = "frictionless"
+
+
+def _rational_nu(nu: Any) -> sp.Rational | str:
+    """Exact rational value of a Poisson ratio (a float is taken as its exact binary value).
+
+    A :class:`~thinlayer.FrictionlessLayer` (or the string ``"frictionless"``) gives the key
+    ``FRICTIONLESS``: its kernel is independent of nu.
+    """
+    if isinstance(nu, FrictionlessLayer) or nu == FRICTIONLESS:
+        return FRICTIONLESS
     if isinstance(nu, BondedLayer):
         if nu.parameter is not None:
             raise ValueError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
@@ -163,10 +173,10 @@ def _mp(r: sp.Rational) -> mpmath.mpf:
 
 @dataclass(frozen=True)
 class _Layer:
-    """Exact data of a bonded layer: nu, kappa, A (2.4), m_1 (2.20), as rationals."""
+    """Exact data of a layer: key (nu or FRICTIONLESS), A (2.4), m_1 (2.20), as rationals."""
 
-    nu: sp.Rational
-    layer: BondedLayer
+    nu: sp.Rational | str
+    layer: BondedLayer | FrictionlessLayer
     A: sp.Rational
     m1: sp.Rational
 
@@ -175,22 +185,33 @@ class _Layer:
         return 3 - 4 * self.nu
 
     def zero_rate(self) -> float:
-        """sigma > 0 with F(i sigma) = 0: sin(2 sigma)/(2 sigma) = 1/kappa, 2 sigma in (0, pi)."""
+        """sigma > 0 with F(i sigma) = 0: sin(2 sigma)/(2 sigma) = 1/kappa, 2 sigma in (0, pi).
+
+        Frictionless base: ``F(iy) = (1 - cos 2y)/(y (sin 2y + 2y))``, first (double) zero ``y = pi``.
+        """
+        if self.nu == FRICTIONLESS:
+            return math.pi
         k = float(self.kappa)
         if k - 1 < 1e-6:  # sin x/x ~ 1 - x^2/6
             return 0.5 * math.sqrt(6 * (k - 1) / k)
         return 0.5 * optimize.brentq(lambda x: math.sin(x) / x - 1 / k, 1e-12, math.pi, xtol=1e-15)
 
     def pole_rate(self) -> float:
-        """y > 0 with 1/F(i y) = 0: 2 kappa cos 2y + 1 + kappa^2 - 4 y^2 = 0 (smallest root)."""
+        """y > 0 with 1/F(i y) = 0: 2 kappa cos 2y + 1 + kappa^2 - 4 y^2 = 0 (smallest root).
+
+        Frictionless base: ``sin 2y + 2y`` has no real zero but 0, so F has no pole on the imaginary
+        axis; the scale 1 (the thickness) is used as a quadrature breakpoint instead.
+        """
+        if self.nu == FRICTIONLESS:
+            return 1.0
         k = float(self.kappa)
         g = lambda y: 2 * k * math.cos(2 * y) + 1 + k * k - 4 * y * y
         return optimize.brentq(g, 0.0, (k + 1) / 2 + 1e-9, xtol=1e-15)
 
 
 @lru_cache(maxsize=256)
-def _layer(nu: sp.Rational) -> _Layer:
-    lay = BondedLayer(nu)
+def _layer(nu: sp.Rational | str) -> _Layer:
+    lay = FrictionlessLayer() if nu == FRICTIONLESS else BondedLayer(nu)
     return _Layer(nu, lay, sp.Rational(lay.A), sp.Rational(lay.m(1)))
 
 
@@ -640,7 +661,8 @@ class WienerHopfSolution:
         return float(val) - float(self.h) ** 2 / 2
 
     def latex(self) -> str:
-        return (rf"h^* = {mpmath.nstr(self.h, 12)}\ (\nu = {sp.latex(self.nu)},\ \text{{{self.kernel} kernel}}),"
+        which = r"\text{frictionless base}" if self.nu == FRICTIONLESS else rf"\nu = {sp.latex(self.nu)}"
+        return (rf"h^* = {mpmath.nstr(self.h, 12)}\ ({which},\ \text{{{self.kernel} kernel}}),"
                 rf"\quad \tilde h^* = {mpmath.nstr(self.h_alexandrov, 12)} \tag{{3.25}}")
 
 
