@@ -1,0 +1,731 @@
+"""Direct numerical solution of the two-dimensional unilateral contact problem (1.5)-(1.8).
+
+A rigid punch ``x3 = -Phi(x1, x2)`` (any polynomial, :class:`~thinlayer.punch.Punch`) is pressed
+without friction into a layer of thickness H on a rigid base.  We seek ``p(x) >= 0`` on the
+plane with
+
+    u3(x) >= delta0 - Phi(x),     p (u3 - delta0 + Phi) = 0,     P = iint p dx   (1.5), (1.8),
+
+    u3 = (1/vartheta) F^{-1}[ p_hat(alpha) L(|alpha| H) / |alpha| ],    vartheta = mu/(1 - nu),   (2.1)
+
+with ``p_hat(alpha) = iint p e^{i alpha.x} dx`` (2.2) and ``F^{-1} f = (2 pi)^{-2} iint f e^{-i alpha.x} d alpha``.
+(The printed (2.1) has a leading minus sign; with p >= 0 the kernel must be positive --
+see :mod:`thinlayer.errata`.  For L = 1 this is Boussinesq's
+``u3 = (1 - nu)/(2 pi mu) iint p(y)/|x - y| dy``.)  No asymptotic expansion is used: this is an
+independent check of the thin-layer results, like :mod:`thinlayer.direct` for axisymmetric punches.
+
+Influence coefficients
+----------------------
+The pressure is piecewise constant on an N x N grid of square cells of side Delta (centres
+``x_i``), and (1.5) is collocated at the cell centres.  The displacement at a point offset by
+``x = (k Delta, l Delta)`` from the centre of a cell carrying unit pressure is
+
+    C(x) = (1/vartheta) iint_{cell} G(x - y) dy,      G = F^{-1}[L(|alpha| H)/|alpha|].
+
+We split ``L = 1 + (L - 1)``.  The half-space part ``1/|alpha|`` has ``F^{-1} = 1/(2 pi r)``,
+whose integral over a square is Love's closed form (exact)::
+
+    iint_{|y1 - x1| < h, |y2 - x2| < h} dy / |y| = sum_{corners} +-F(X, Y),
+    F(X, Y) = X asinh(Y/|X|) + Y asinh(X/|Y|),     h = Delta/2
+
+(the corner sum ``F(x1+h, x2+h) - F(x1-h, x2+h) - F(x1+h, x2-h) + F(x1-h, x2-h)``; the usual
+``X log(Y + r) + Y log(X + r)`` differs from F by functions of X or of Y alone, which cancel,
+and the asinh form has no cancellation).  The correction ``(L(|alpha| H) - 1)/|alpha|`` is
+singular like ``-1/|alpha|`` at alpha = 0 -- its Fourier samples on a finite grid alias badly --
+but in real space it is the smooth radial function
+
+    g_c(r) = (1/(2 pi)) int_0^oo (L(s H) - 1) J0(s r) ds
+           = (1/(2 pi H)) int_0^{22} (L(t) - 1) J0(t r/H) dt        (L - 1 = O(t^2 e^{-2t}), (2.4)),
+
+analytic and even in r, with ``g_c(0)`` finite and ``g_c(r) = -1/(2 pi r) + O(e^{-gamma r/H})``:
+since ``L(s)/s`` is even and analytic near the real axis (section 2), the full layer kernel
+``1/(2 pi r) + g_c(r)`` decays exponentially on the scale H.  ``g_c`` is computed by composite
+Gauss-Legendre quadrature in t (one J0 period per 16-point panel) on a table of radii with spacing
+``<= H/40``, interpolated by a cubic spline, and integrated over each cell by a 4 x 4
+Gauss-Legendre rule (``g_c`` varies on the scale H >= 5 Delta).  Hence
+
+    C(k, l) = (1/vartheta) [ (1/(2 pi)) Love(k Delta, l Delta; Delta/2)
+                             + sum_{a,b} w_a w_b g_c(|(k Delta + y_a, l Delta + y_b)|) ],
+
+and ``C = 0`` where the whole cell lies beyond ``50 H``: there the layer kernel is below
+``1e-15/H`` (checked in the tests), i.e. the two parts cancel to rounding.  For the half-space
+(``HalfSpace``) only the Love term remains.
+
+Convolution and contact algorithm
+---------------------------------
+``u_i = sum_j C(x_i - x_j) p_j`` is an aperiodic (linear) convolution, evaluated exactly by
+FFT on a zero-padded grid of size ``M >= 2N - 1`` (:func:`scipy.fft.next_fast_len`), with the
+even kernel's real spectrum computed once; nothing wraps around, so an isolated contact needs no
+periodic images.  The complementarity problem (1.5) is solved by the Polonsky-Keer
+conjugate-gradient method (Polonsky & Keer, Wear 231 (1999) 206), which minimises
+``p.C p / 2 - p.(delta0 - Phi)`` over ``p >= 0`` -- with the rigid-body displacement delta0
+prescribed (the mean-gap shift and force rescaling of the original algorithm dropped), or, with
+``force=`` given, in its original load-controlled form.  The iteration stops when the discrete
+contact conditions hold to ``tol``:
+
+    residual = max( max_{p > 0} |g|,  max_{p = 0} max(-g, 0) ) / delta0,    g = u3 - delta0 + Phi,
+
+with the displacement recomputed by a fresh convolution at the end.
+
+Contact area and contour
+------------------------
+The contact set is the union of cells with ``p > 0``; ``contact_area_cells`` is their number
+times Delta^2.  A sub-cell estimate: contourpy traces the boundary between contact and
+non-contact cell centres (marching squares, saddles included), and each vertex, lying on a grid
+segment from a contact centre (pressure p_b) to a free centre (gap g_o), is moved to the point at
+fraction t from the contact centre given by the local edge asymptotics of a smooth contact,
+``p ~ P1 d^{1/2}`` inside and ``g ~ (4 P1/(3 E*)) s^{3/2}`` outside (E* = 2 vartheta; at distances
+below H every layer acts like a half-space).  Eliminating P1: ``(1 - t)^{3/2} t^{-1/2} = rho``,
+``rho = 3 E* g_o/(4 p_b Delta)``, whose root is ``t = 1 - (2 rho/sqrt 3) sinh(asinh(3 sqrt(3)/(2 rho))/3)``.
+``contact_area`` is the area enclosed by these polygons (shoelace).
+
+Accuracy and limitations
+------------------------
+* Measured (tests/test_numerics_2d.py): Hertz's force is reached with error ``c (Delta/a)^2``,
+  c = 0.03-0.08, observed order 2.0-2.2; the contour vertices lie within 0.15 Delta of Hertz's
+  circle/ellipse (rms 0.05 Delta), the equivalent contact radius within 0.02 Delta; the staircase
+  area ``contact_area_cells`` is only first-order accurate.  On a thin layer (H/a = 0.1, Delta = H/10)
+  force and radius agree with :mod:`thinlayer.direct` to 2e-5 and 1e-4.
+* Only contact inside the computational square is modelled: the contact must stay two cells
+  away from its boundary (checked, with an error); contact regions disconnected from the one
+  around the tip and lying outside the square are not seen.  The default square is built from
+  the overlap region ``Phi < delta0`` seen from the origin (or from the minimum found by descent
+  from it); pass ``extent`` otherwise.
+* The grid must resolve the layer (Delta <= H/5, checked) and the contact (warning below 8 cells
+  across).  Memory: the real kernel spectrum and one complex work array, 50 MB for N = 1024 and
+  16 times that for N = 4096 (the largest N accepted).
+* Polonsky-Keer is unpreconditioned CG: iterations grow slowly with N (about 60 for N = 1024 on a
+  thin layer, 100 for N = 256 on the half-space, tol = 1e-10).
+"""
+from __future__ import annotations
+
+import math
+import numbers
+import os
+import warnings
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import contourpy
+import numpy as np
+import scipy.fft as sfft
+import sympy as sp
+from scipy import interpolate, optimize, special
+
+from .. import symbols as S
+from ..direct import _nu_and_layer, _positive
+from ..kernels import HalfSpace, LayerKernel
+from ..punch import Punch
+
+__all__ = [
+    "CoarseGridWarning",
+    "Contact2D",
+    "ContactConvergenceError",
+    "influence_coefficients",
+    "layer_correction_kernel",
+    "solve_2d",
+]
+
+_U_MAX = 22.0  # L(u) - 1 < 1e-16 beyond (as in thinlayer.direct)
+_R_CUT = 50.0  # in units of H: the layer kernel 1/(2 pi r) + g_c(r) is below 1e-15/H beyond
+_TABLE_STEP = 1.0 / 40.0  # spacing of the g_c table, in units of H
+_CELL_GAUSS = 4  # Gauss-Legendre points per direction for the cell integral of g_c
+_MIN_CELLS_PER_H = 5.0  # H must span at least this many cells
+_EDGE_CELLS = 2  # the contact must stay this many cells away from the domain boundary
+_MIN_CELLS_ACROSS = 8  # fewer cells across the contact -> CoarseGridWarning
+_MAX_N = 4096
+_REFRESH = 20  # recompute u = C p by a fresh convolution at least this often
+
+
+class ContactConvergenceError(RuntimeError):
+    """The Polonsky-Keer iteration did not reach the tolerance; ``.result`` holds the last iterate."""
+
+    def __init__(self, message: str, result: Contact2D | None = None):
+        super().__init__(message)
+        self.result = result
+
+
+class CoarseGridWarning(UserWarning):
+    """The contact area is resolved by only a few cells: the result is of low accuracy."""
+
+
+# --------------------------------------------------------------------------- result
+@dataclass(frozen=True, eq=False)
+class Contact2D:
+    """Direct numerical solution of the two-dimensional contact problem (1.5)-(1.8).
+
+    Attributes
+    ----------
+    layer, punch, nu, mu, vartheta, H:
+        Layer model (kernel L, (2.3)), punch (1.1), Poisson ratio, shear modulus,
+        ``vartheta = mu/(1 - nu)`` (2.1), thickness (None for the half-space).
+    delta0:
+        Indentation depth (prescribed, or computed when the force was prescribed).
+    force:
+        Total force ``P = iint p dx = Delta^2 sum p`` (1.8).
+    contact_area:
+        Area enclosed by the sub-cell contact contour (see the module docstring).
+    contact_area_cells:
+        Number of cells with p > 0 times Delta^2.
+    contour:
+        Tuple of closed polygons, each a (k, 2) array of (x1, x2) vertices (first = last).
+    pressure:
+        N x N array, ``pressure[i, j] = p(x1[i], x2[j])`` (cell values; read-only).
+    gap:
+        N x N array of ``u3 - delta0 + Phi`` at the cell centres (>= 0; 0 in contact).
+    x1, x2:
+        Cell-centre coordinates (length N each).
+    spacing:
+        Cell size Delta.
+    iterations, residual, tol:
+        Polonsky-Keer iterations, final residual (contact conditions, relative to delta0), tolerance.
+    """
+
+    layer: LayerKernel
+    punch: Punch
+    nu: float
+    mu: float
+    vartheta: float
+    H: float | None
+    delta0: float
+    force: float
+    contact_area: float
+    contact_area_cells: float
+    contour: tuple = field(repr=False)
+    pressure: np.ndarray = field(repr=False)
+    gap: np.ndarray = field(repr=False)
+    x1: np.ndarray = field(repr=False)
+    x2: np.ndarray = field(repr=False)
+    spacing: float
+    iterations: int
+    residual: float
+    tol: float
+
+    @property
+    def equation(self) -> str:
+        return "1.5-1.8"
+
+    @property
+    def n(self) -> int:
+        """Cells per side."""
+        return self.x1.size
+
+    @property
+    def contact_radius(self) -> float:
+        """Radius of the disc with the same area, ``sqrt(contact_area/pi)``."""
+        return math.sqrt(self.contact_area / math.pi)
+
+    @property
+    def contact_mask(self) -> np.ndarray:
+        """Boolean N x N array of the cells in contact (p > 0)."""
+        return self.pressure > 0
+
+    @property
+    def max_pressure(self) -> float:
+        return float(self.pressure.max())
+
+    def latex(self) -> str:
+        """One-line LaTeX summary."""
+        return (rf"P = {self.force:.8g},\quad |\omega| = {self.contact_area:.8g},\quad "
+                rf"\delta_0 = {self.delta0:.8g},\quad N = {self.n},\ \Delta = {self.spacing:.4g}")
+
+
+# --------------------------------------------------------------------------- influence coefficients
+def _love_square(X: np.ndarray, Y: np.ndarray, h: float) -> np.ndarray:
+    """``iint dy/|y|`` over the square ``|y1 - X| < h, |y2 - Y| < h`` (Love's closed form)."""
+
+    def F(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        # a asinh(b/|a|) -> 0 as a -> 0: guard the division, the factor a makes the term vanish
+        return (a * np.arcsinh(b / np.where(a == 0, 1.0, np.abs(a)))
+                + b * np.arcsinh(a / np.where(b == 0, 1.0, np.abs(b))))
+
+    return F(X + h, Y + h) - F(X - h, Y + h) - F(X + h, Y - h) + F(X - h, Y - h)
+
+
+def _t_quadrature(rho_max: float) -> tuple[np.ndarray, np.ndarray]:
+    """Composite 16-point Gauss-Legendre nodes on [0, _U_MAX], one J0(t rho_max) period per panel."""
+    pan = min(0.5, 2.0 * math.pi / max(rho_max, 1e-300))
+    npan = max(8, math.ceil(_U_MAX / pan))
+    xg, wg = special.roots_legendre(16)
+    edges = np.linspace(0.0, _U_MAX, npan + 1)
+    a, b = edges[:-1, None], edges[1:, None]
+    t = (0.5 * (b - a) * xg + 0.5 * (a + b)).ravel()
+    w = np.broadcast_to(0.5 * (b - a) * wg, (npan, 16)).ravel().copy()
+    return t, w
+
+
+def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
+    """``g_c(r) = (1/(2 pi H)) int_0^oo (L(t) - 1) J0(t r/H) dt``: the layer's correction to Boussinesq.
+
+    The surface Green's function of the layer (2.1) is ``1/(2 pi r) + g_c(r)`` (divided by
+    vartheta).  ``g_c`` is smooth, ``g_c(r) -> -1/(2 pi r)`` as r/H -> oo.
+
+    Parameters
+    ----------
+    layer:
+        A layer kernel with numeric evaluation (``BondedLayer(0.3)``, ``FrictionlessLayer()``).
+    H:
+        Layer thickness.
+    r:
+        Radii >= 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        g_c at ``r`` (zero for the half-space).
+    """
+    r = np.asarray(r, dtype=float)
+    if isinstance(layer, HalfSpace):
+        return np.zeros_like(r)
+    rho = r.ravel() / H
+    t, w = _t_quadrature(float(rho.max(initial=0.0)))
+    wl = w * (np.asarray(layer.L_numeric(t, "numpy"), dtype=float) - 1.0)
+    out = np.empty_like(rho)
+    step = max(1, 4_000_000 // t.size)  # bound the J0 matrix to ~32 MB
+    for s in range(0, rho.size, step):
+        out[s:s + step] = special.j0(np.outer(rho[s:s + step], t)) @ wl
+    return (out / (2.0 * math.pi * H)).reshape(r.shape)
+
+
+def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, n: int, *,
+                           nu: float | None = None, mu: float = 1.0) -> np.ndarray:
+    """Influence coefficients ``C[k, l]``: u3 at offset ``(k Delta, l Delta)`` from a cell under unit pressure.
+
+    See the module docstring for the formula (Love's rectangle + cell-integrated layer correction).
+    The kernel is even in both offsets, so the quadrant ``0 <= k, l < n`` defines it.
+
+    Parameters
+    ----------
+    layer:
+        Layer kernel; ``HalfSpace()`` gives Boussinesq's coefficients.
+    H:
+        Layer thickness (ignored by ``HalfSpace``).
+    spacing:
+        Cell size Delta.
+    n:
+        Number of offsets per direction.
+    nu, mu:
+        Poisson ratio (only for layers that carry none) and shear modulus: ``vartheta = mu/(1 - nu)``.
+
+    Returns
+    -------
+    numpy.ndarray
+        Array of shape (n, n).
+
+    Examples
+    --------
+    Self-influence of a square on the half-space: ``4 Delta asinh(1)/(2 pi vartheta)``.
+
+    >>> import math
+    >>> from thinlayer import HalfSpace
+    >>> C = influence_coefficients(HalfSpace(), None, 1.0, 2, nu=0.3)
+    >>> round(float(C[0, 0]) / (4 * math.asinh(1) * 0.7 / (2 * math.pi)), 12)
+    1.0
+    """
+    nu_val = _nu_and_layer(layer, nu)
+    mu = _positive(mu, "mu")
+    d = _positive(spacing, "spacing")
+    n = _check_n(n)
+    vartheta = mu / (1.0 - nu_val)
+    half = isinstance(layer, HalfSpace)
+    if not half:
+        H = _positive(H, "H")
+    # C is symmetric in (k, l): evaluate on k <= l only
+    kk, ll = np.triu_indices(n)
+    X, Y = kk * d, ll * d
+    C = np.zeros((n, n))
+    if half:
+        vals = _love_square(X, Y, 0.5 * d) / (2.0 * math.pi)
+    else:
+        near = np.hypot(X, Y) <= _R_CUT * H + d  # beyond, the two parts cancel to rounding
+        kk, ll, X, Y = kk[near], ll[near], X[near], Y[near]
+        vals = _love_square(X, Y, 0.5 * d) / (2.0 * math.pi)
+        # spline table of g_c on [0, r_tab], spacing <= H/40 (and fine enough for a domain much smaller than H)
+        r_tab = float(np.hypot(X, Y).max(initial=0.0)) + d
+        npts = max(65, math.ceil(r_tab / (_TABLE_STEP * H)) + 1)
+        rr = np.linspace(0.0, r_tab, npts)
+        spline = interpolate.CubicSpline(rr, layer_correction_kernel(layer, H, rr), bc_type=((1, 0.0), "not-a-knot"))
+        xg, wg = special.roots_legendre(_CELL_GAUSS)
+        ya, wa = 0.5 * d * xg, 0.5 * d * wg
+        for i in range(_CELL_GAUSS):
+            for j in range(_CELL_GAUSS):
+                vals += wa[i] * wa[j] * spline(np.hypot(X + ya[i], Y + ya[j]))
+    C[kk, ll] = vals
+    C[ll, kk] = vals
+    return C / vartheta
+
+
+def _check_n(n: Any) -> int:
+    if isinstance(n, bool) or not isinstance(n, (numbers.Integral, np.integer)):
+        raise TypeError(f"n (cells per side) must be an integer, got {n!r}")
+    if not 2 <= n <= _MAX_N:
+        raise ValueError(f"n (cells per side) must lie in [2, {_MAX_N}], got {n}")
+    return int(n)
+
+
+# --------------------------------------------------------------------------- FFT convolution
+class _Convolver:
+    """Aperiodic convolution ``u = C * p`` on an N x N grid by FFT on the zero-padded M x M grid."""
+
+    def __init__(self, C: np.ndarray, workers: int):
+        N = C.shape[0]
+        M = sfft.next_fast_len(2 * N - 1, real=True)
+        K = np.zeros((M, M))
+        K[:N, :N] = C
+        K[M - N + 1:, :N] = C[:0:-1, :]  # offsets -k sit at index M - k
+        K[:, M - N + 1:] = K[:, N - 1:0:-1]
+        spec = sfft.rfft2(K, workers=workers)
+        # an even kernel has a real spectrum; the imaginary part is rounding
+        self.spec = np.ascontiguousarray(spec.real)
+        self.N, self.M, self.workers = N, M, workers
+        self._rbuf = np.zeros((N, M))  # columns N.. stay zero (padding)
+        self._cbuf = np.zeros((M, M // 2 + 1), dtype=complex)
+
+    def __call__(self, p: np.ndarray) -> np.ndarray:
+        N, M, w = self.N, self.M, self.workers
+        self._rbuf[:, :N] = p
+        cb = self._cbuf
+        cb[:N] = sfft.rfft(self._rbuf, axis=1, workers=w)  # only the N non-zero rows are transformed
+        cb[N:] = 0.0
+        a = sfft.fft(cb, axis=0, overwrite_x=True, workers=w)
+        a *= self.spec
+        a = sfft.ifft(a, axis=0, overwrite_x=True, workers=w)
+        return sfft.irfft(a[:N], n=M, axis=1, workers=w)[:, :N]
+
+
+# --------------------------------------------------------------------------- punch and domain
+def _numeric_punch(punch: Any) -> tuple[Punch, Callable[[np.ndarray, np.ndarray], np.ndarray]]:
+    if isinstance(punch, (str, sp.Basic)):
+        punch = Punch(punch)
+    if not isinstance(punch, Punch):
+        raise TypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
+                        f"got {punch!r} ({type(punch).__name__})")
+    if punch.parameters:
+        names = ", ".join(str(q) for q in punch.parameters)
+        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
+                         f"substitute numbers first, e.g. punch.subs({{'{punch.parameters[0]}': 1.0}})")
+    coeffs = sp.Poly(punch.expr, S.x1, S.x2).coeffs()
+    if not all(c.is_real for c in coeffs):
+        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} has non-real coefficients")
+    f = punch.lambdify()
+
+    def phi(X: np.ndarray, Y: np.ndarray) -> np.ndarray:
+        return np.broadcast_to(np.asarray(f(X, Y), dtype=float), np.broadcast(X, Y).shape)
+
+    return punch, phi
+
+
+def _overlap_box(punch: Punch, phi: Callable, delta0: float) -> tuple[float, float, float, float]:
+    """Bounding box of the rigid overlap {Phi < delta0}, seen along 72 rays from the punch tip."""
+    o = np.zeros(2)
+    if not phi(np.array(0.0), np.array(0.0)) < delta0:
+        res = optimize.minimize(lambda z: float(phi(np.array(z[0]), np.array(z[1]))), o, method="BFGS")
+        o = res.x
+        val = float(phi(np.array(o[0]), np.array(o[1])))
+        if not val < delta0:
+            raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} does not touch the layer: "
+                             f"min Phi = {val:.6g} (at x = {o[0]:.6g}, {o[1]:.6g}, found by descent from the origin) "
+                             f">= delta0 = {delta0:.6g}; increase delta0, or pass extent= if the contact lies elsewhere")
+    th = np.linspace(0.0, 2.0 * math.pi, 72, endpoint=False)
+    pts = []
+    for c, s in zip(np.cos(th), np.sin(th)):
+        def along(r: float, c=c, s=s) -> float:
+            return float(phi(np.array(o[0] + r * c), np.array(o[1] + r * s))) - delta0
+
+        hi = 1e-6 * (1.0 + float(np.abs(o).max()))
+        for _ in range(400):
+            if along(hi) > 0:
+                break
+            hi *= 1.5
+        else:
+            raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} stays below delta0 = {delta0:.6g} "
+                             f"along the direction ({c:.3f}, {s:.3f}): the contact region is unbounded; "
+                             "solve_2d needs a punch that rises above delta0 all around (or pass extent=)")
+        r0 = optimize.brentq(along, 0.0, hi, xtol=1e-13 * hi)
+        pts.append((o[0] + r0 * c, o[1] + r0 * s))
+    pts = np.array(pts)
+    radii = np.hypot(pts[:, 0] - o[0], pts[:, 1] - o[1])
+    if radii.max() > 1e4 * radii.min():
+        k = int(np.argmax(radii))
+        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} leaves an unbounded (or extremely "
+                         f"elongated) overlap region Phi < delta0 = {delta0:.6g}: it reaches delta0 at distance "
+                         f"{radii.min():.3g} in one direction but {radii.max():.3g} along "
+                         f"({math.cos(th[k]):.3f}, {math.sin(th[k]):.3f}); pass extent= to solve on a chosen square")
+    return float(pts[:, 0].min()), float(pts[:, 0].max()), float(pts[:, 1].min()), float(pts[:, 1].max())
+
+
+def _domain(extent: Any, punch: Punch, phi: Callable, delta0: float | None, H: float | None
+            ) -> tuple[float, float, float]:
+    """Return (x1 centre, x2 centre, half-width) of the computational square."""
+    if extent is None:
+        if delta0 is None:
+            raise ValueError("with a prescribed force the domain cannot be guessed: pass extent= "
+                             "(half-width of a square centred at the origin, or (x1min, x1max, x2min, x2max))")
+        a0, a1, b0, b1 = _overlap_box(punch, phi, delta0)
+        size = max(a1 - a0, b1 - b0)
+        margin = 0.15 * size if H is None else min(2.0 * H, 0.15 * size)
+        return 0.5 * (a0 + a1), 0.5 * (b0 + b1), 0.54 * size + margin
+    if isinstance(extent, (numbers.Real, sp.Number)) and not isinstance(extent, bool):
+        return 0.0, 0.0, _positive(extent, "extent (half-width)")
+    try:
+        a0, a1, b0, b1 = (float(v) for v in extent)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"extent must be None, a half-width, or (x1min, x1max, x2min, x2max); got {extent!r}"
+                        ) from exc
+    w1, w2 = a1 - a0, b1 - b0
+    if not (math.isfinite(w1) and math.isfinite(w2) and w1 > 0 and w2 > 0):
+        raise ValueError(f"extent {extent!r} is not a non-empty box (x1min, x1max, x2min, x2max)")
+    if abs(w1 - w2) > 1e-9 * max(w1, w2):
+        raise ValueError(f"extent must be a square (the grid is N x N with square cells): "
+                         f"widths {w1:.6g} (x1) and {w2:.6g} (x2) differ")
+    return 0.5 * (a0 + a1), 0.5 * (b0 + b1), 0.5 * w1
+
+
+# --------------------------------------------------------------------------- contour
+def _edge_fraction(p_in: np.ndarray, g_out: np.ndarray, d: float, estar: float) -> np.ndarray:
+    """Fraction t in [0, 1] from the contact centre to the edge: root of (1 - t)^{3/2} t^{-1/2} = rho."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rho = 3.0 * estar * np.maximum(g_out, 0.0) / (4.0 * p_in * d)
+        z = (2.0 * rho / math.sqrt(3.0)) * np.sinh(np.arcsinh(3.0 * math.sqrt(3.0) / (2.0 * rho)) / 3.0)
+    z = np.where(rho > 0, z, 0.0)  # zero gap: the edge is at the free centre
+    return np.clip(1.0 - np.nan_to_num(z, nan=0.5), 0.0, 1.0)
+
+
+def _contour(p: np.ndarray, g: np.ndarray, x1: np.ndarray, x2: np.ndarray, d: float, estar: float
+             ) -> tuple[tuple[np.ndarray, ...], float]:
+    """Sub-cell contact contour (see module docstring) and the area it encloses."""
+    inside = p > 0
+    z = np.where(inside, 1.0, -1.0).T  # contourpy: z[j, i] at (x1[i], x2[j])
+    lines = contourpy.contour_generator(x=x1, y=x2, z=z, line_type=contourpy.LineType.Separate).lines(0.0)
+    out = []
+    area = 0.0
+    for line in lines:
+        fi = (line[:, 0] - x1[0]) / d
+        fj = (line[:, 1] - x2[0]) / d
+        on_i = np.abs(fi - np.round(fi)) > 0.25  # vertex on a segment along x1 (fi half-integer)
+        i0 = np.where(on_i, np.floor(fi), np.round(fi)).astype(int)
+        j0 = np.where(on_i, np.round(fj), np.floor(fj)).astype(int)
+        i1 = i0 + on_i
+        j1 = j0 + ~on_i
+        first_in = inside[i0, j0]
+        ii, ji = np.where(first_in, i0, i1), np.where(first_in, j0, j1)
+        io, jo = np.where(first_in, i1, i0), np.where(first_in, j1, j0)
+        t = _edge_fraction(p[ii, ji], g[io, jo], d, estar)
+        pts = np.column_stack([x1[ii] + t * (x1[io] - x1[ii]), x2[ji] + t * (x2[jo] - x2[ji])])
+        pts.setflags(write=False)
+        out.append(pts)
+        xs, ys = pts[:, 0], pts[:, 1]
+        area += 0.5 * float(np.dot(xs[:-1], ys[1:]) - np.dot(xs[1:], ys[:-1]))
+    return tuple(out), abs(area)
+
+
+# --------------------------------------------------------------------------- solver
+def _polonsky_keer(conv: _Convolver, w: np.ndarray, cell: float, force: float | None, p0: np.ndarray,
+                   tol: float, maxiter: int, delta0: float | None):
+    """Polonsky-Keer CG for ``p >= 0, C p - w >= 0, p (C p - w) = 0`` (force mode: w up to a constant).
+
+    Returns (p, u, g, iterations, residual, delta0, converged).
+    """
+    p = p0.copy()
+    u = conv(p)
+    t = np.zeros_like(p)
+    G_old, conj, fresh = 1.0, False, True
+    it = 0
+    while True:
+        g = u - w
+        Ic = p > 0
+        free = ~Ic
+        if force is not None:
+            d0 = float(g[Ic].mean())  # w = -Phi: the rigid-body displacement is the mean of u + Phi
+            g -= d0
+            scale = abs(d0) if d0 != 0 else float(np.abs(u).max())
+        else:
+            d0, scale = delta0, delta0
+        gI = g[Ic]
+        res = max(float(np.abs(gI).max(initial=0.0)), -float(np.min(g, where=free, initial=0.0))) / scale
+        if res <= tol or it >= maxiter:
+            if fresh:
+                return p, u, g, it, res, d0, res <= tol
+            u, fresh = conv(p), True  # confirm with a fresh convolution
+            continue
+        it += 1
+        G = float(gI @ gI)
+        if conj:
+            t *= G / G_old
+            t += g
+        else:
+            t[...] = g
+        t[free] = 0.0
+        G_old = G
+        r_raw = conv(t)
+        tI = t[Ic]
+        rI = r_raw[Ic]
+        if force is not None:
+            rI = rI - rI.mean()
+        den = float(rI @ tI)
+        if not den > 0:  # t = 0 on the contact set: nothing left to do
+            if fresh:
+                return p, u, g, it, res, d0, res <= tol
+            u, fresh = conv(p), True
+            continue
+        tau = float(gI @ tI) / den
+        p -= tau * t
+        clipped = p < 0
+        any_clip = bool(clipped.any())
+        if any_clip:
+            p[clipped] = 0.0
+        overlap = free & (g < 0)  # free cells that penetrate (the clipped ones had p > 0 ...
+        if any_clip:
+            overlap |= clipped & (g < 0)  # ... unless clipped now)
+        has_ol = bool(overlap.any())
+        if has_ol:
+            p[overlap] -= tau * g[overlap]
+        conj = not has_ol
+        factor = 1.0
+        if force is not None:
+            factor = force / (cell * float(p.sum()))
+            p *= factor
+        if has_ol or any_clip or it % _REFRESH == 0:
+            u, fresh = conv(p), True
+        else:  # the step was linear: update u without a convolution
+            u -= tau * r_raw
+            if factor != 1.0:
+                u *= factor
+            fresh = False
+
+
+def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: float | None = None,
+             mu: float = 1.0, n: int = 256, extent: Any = None, tol: float = 1e-10, maxiter: int = 5000,
+             *, force: float | None = None, nu: float | None = None, workers: int | None = None) -> Contact2D:
+    """Solve the unilateral contact problem (1.5)-(1.8) on an N x N grid (FFT + Polonsky-Keer CG).
+
+    Parameters
+    ----------
+    layer:
+        ``BondedLayer(nu)`` with numeric nu (2.3), ``FrictionlessLayer()`` or ``HalfSpace()``.
+    punch:
+        A :class:`~thinlayer.punch.Punch` (or polynomial expression in ``x1, x2``) with numbers
+        for all parameters; the tip is taken at the origin when ``Phi(0) < delta0``.
+    delta0:
+        Indentation depth (> 0).  Exactly one of ``delta0`` and ``force`` must be given.
+    H:
+        Layer thickness (> 0; not needed for ``HalfSpace``).  The grid must resolve it:
+        ``Delta <= H/5``.
+    mu:
+        Shear modulus.
+    n:
+        Cells per side.
+    extent:
+        Computational square: None (from the overlap region ``Phi < delta0`` plus a margin), a
+        half-width (square centred at the origin), or ``(x1min, x1max, x2min, x2max)``.
+    tol:
+        Tolerance of the contact conditions relative to delta0 (see module docstring).
+    maxiter:
+        Maximum number of Polonsky-Keer iterations.
+    force:
+        Prescribed total force P (1.8) instead of delta0 (needs ``extent``).
+    nu:
+        Poisson ratio, only for layers that carry none (``HalfSpace``, ``FrictionlessLayer``).
+    workers:
+        Threads for :mod:`scipy.fft` (default: all CPUs).
+
+    Returns
+    -------
+    Contact2D
+
+    Raises
+    ------
+    ValueError
+        On bad input, a grid too coarse for H, or a contact reaching the domain boundary.
+    ContactConvergenceError
+        If the tolerance is not reached within ``maxiter`` iterations.
+
+    Examples
+    --------
+    Hertz's sphere on a half-space (a = sqrt(R delta0) = 1, P = 8 vartheta a^3/(3R)):
+
+    >>> from thinlayer import HalfSpace, Punch
+    >>> res = solve_2d(HalfSpace(), Punch.paraboloid(R=1), delta0=1.0, n=64, extent=1.25, nu=0.3)
+    >>> abs(res.force / (8 / 0.7 / 3) - 1) < 0.01, abs(res.contact_radius - 1) < 0.01
+    (True, True)
+    """
+    nu_val = _nu_and_layer(layer, nu)
+    mu = _positive(mu, "mu")
+    half = isinstance(layer, HalfSpace)
+    if half:
+        H = None if H is None else _positive(H, "H")
+        H_eff = None
+    else:
+        if H is None:
+            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
+        H = H_eff = _positive(H, "H")
+    if (delta0 is None) == (force is None):
+        raise ValueError("give exactly one of delta0 (indentation depth) and force (total load P)")
+    if delta0 is not None:
+        delta0 = _positive(delta0, "delta0")
+    else:
+        force = _positive(force, "force")
+    n = _check_n(n)
+    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not 0 < float(tol) < 1:
+        raise ValueError(f"tol must be a number in (0, 1), got {tol!r}")
+    tol = float(tol)
+    if isinstance(maxiter, bool) or not isinstance(maxiter, (numbers.Integral, np.integer)) or maxiter < 1:
+        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    punch, phi = _numeric_punch(punch)
+    c1, c2, half_w = _domain(extent, punch, phi, delta0, H_eff)
+    d = 2.0 * half_w / n
+    if H_eff is not None and d > H_eff / _MIN_CELLS_PER_H:
+        raise ValueError(
+            f"grid too coarse to resolve the layer: cell size Delta = {d:.4g} > H/{_MIN_CELLS_PER_H:g} = "
+            f"{H_eff / _MIN_CELLS_PER_H:.4g} (H = {H_eff:.4g}, domain width {2 * half_w:.4g}, n = {n}); "
+            f"use n >= {math.ceil(2 * half_w * _MIN_CELLS_PER_H / H_eff)} or a smaller extent")
+    x1 = c1 - half_w + (np.arange(n) + 0.5) * d
+    x2 = c2 - half_w + (np.arange(n) + 0.5) * d
+    X1, X2 = np.meshgrid(x1, x2, indexing="ij")
+    Phi = phi(X1, X2)
+    if not np.all(np.isfinite(Phi)):
+        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} is not finite on the grid")
+    vartheta = mu / (1.0 - nu_val)
+    C = influence_coefficients(layer, H_eff, d, n, nu=nu_val, mu=mu)
+    conv = _Convolver(C, workers)
+    cell = d * d
+    if force is None:
+        w = delta0 - Phi
+        p0 = np.maximum(w, 0.0)
+        if not p0.any():
+            raise ValueError(f"Phi >= delta0 = {delta0:.6g} at every cell centre: no contact on the grid "
+                             f"(min Phi = {Phi.min():.6g}); refine the grid or increase delta0")
+        Cp0 = conv(p0)
+        p0 *= float((p0 * w).sum() / (p0 * Cp0).sum())  # best multiple of the overlap: a good start
+    else:
+        w = -Phi
+        p0 = np.full((n, n), force / (cell * n * n))
+    p, _, g, iters, res, d0, ok = _polonsky_keer(conv, w, cell, force, p0, tol, int(maxiter), delta0)
+    P = cell * float(p.sum())
+    inside = p > 0
+    if inside.any():
+        ii, jj = np.nonzero(inside)
+        near = min(ii.min(), jj.min(), n - 1 - ii.max(), n - 1 - jj.max())
+        if near < _EDGE_CELLS:
+            raise ValueError(
+                f"the contact reaches the boundary of the computational domain: contact cells span "
+                f"x1 in [{x1[ii.min()]:.6g}, {x1[ii.max()]:.6g}], x2 in [{x2[jj.min()]:.6g}, {x2[jj.max()]:.6g}], "
+                f"the domain is [{x1[0] - d / 2:.6g}, {x1[-1] + d / 2:.6g}] x [{x2[0] - d / 2:.6g}, "
+                f"{x2[-1] + d / 2:.6g}] ({near} free cells to the edge, {_EDGE_CELLS} needed); enlarge extent")
+    contour, area = _contour(p, g, x1, x2, d, 2.0 * vartheta) if inside.any() else ((), 0.0)
+    for arr in (p, g, x1, x2):
+        arr.setflags(write=False)
+    result = Contact2D(layer, punch, nu_val, mu, vartheta, H, float(d0), P, float(area), cell * int(inside.sum()),
+                       contour, p, g, x1, x2, d, iters, float(res), tol)
+    if not ok:
+        raise ContactConvergenceError(
+            f"Polonsky-Keer iteration did not converge: residual {res:.3e} > tol {tol:.1e} after {iters} "
+            f"iterations (n = {n}); raise maxiter or tol. The last iterate is in .result", result)
+    across = math.sqrt(4.0 * cell * inside.sum() / math.pi) / d
+    if across < _MIN_CELLS_ACROSS:
+        warnings.warn(f"the contact is only ~{across:.1f} cells across (n = {n}, Delta = {d:.4g}): expect "
+                      f"errors of order Delta/diameter ~ {1 / max(across, 1):.0%}; refine n or reduce extent",
+                      CoarseGridWarning, stacklevel=2)
+    return result
