@@ -119,6 +119,36 @@ def test_help_has_examples():
     ap = build_parser()
     assert "example" in ap.format_help()
     sub = ap._subparsers._group_actions[0].choices
-    for name in ("report", "coefficients", "inner", "solve", "errata"):
+    for name in ("report", "coefficients", "inner", "solve", "errata", "codegen"):
         text = sub[name].format_help()
         assert "example" in text and "--json" in text, name
+
+
+def test_codegen_writes_files_and_refuses_overwrite(capsys, tmp_path):
+    out = tmp_path / "gen"
+    code, text, _ = run(capsys, "codegen", "force", "--kind", "paraboloid", "--lang", "c,python", "--out", str(out),
+                        "--json")
+    assert code == 0
+    files = json.loads(text)["files"]
+    assert sorted(Path(f).name for f in files) == ["force_law.c", "force_law.h", "force_law.py"]
+    (out / "force_law.py").write_text("# mine\n")
+    code, text, err = run(capsys, "codegen", "force", "--kind", "paraboloid", "--lang", "c,python", "--out", str(out))
+    assert code == 2 and "exists" in err and (out / "force_law.py").read_text() == "# mine\n"
+    code, *_ = run(capsys, "codegen", "force", "--kind", "paraboloid", "--lang", "python", "--out", str(out), "--force")
+    assert code == 0 and "def force_law" in (out / "force_law.py").read_text()
+
+
+def test_codegen_prints_and_validates(capsys):
+    code, text, _ = run(capsys, "codegen", "coefficients", "--order", "1", "--lang", "python", "--json")
+    assert code == 0
+    data = json.loads(text)
+    assert data[0]["outputs"] == ["A", "m_1", "M_1"] and data[0]["arguments"] == ["nu"]
+    code, text, _ = run(capsys, "codegen", "composite", "--kind", "paraboloid", "--param", "R=2", "--nu", "0.3",
+                        "--delta0", "0.25", "--H", "0.02", "--lang", "c")
+    assert code == 0 and "double composite_pressure(double x_1, double x_2, double H, double mu)" in text
+    for argv, reason in [(["codegen", "inner", "--kind", "paraboloid", "--lang", "cobol"], "--lang"),
+                         (["codegen", "composite", "--kind", "paraboloid", "--param", "R=2", "--lang", "c"], "numeric"),
+                         (["codegen", "composite", "--kind", "elliptic_paraboloid", "--param", "R_1=4", "--param",
+                           "R_2=1", "--nu", "0.3", "--delta0", "0.25", "--H", "0.02"], "radial")]:
+        code, out, err = run(capsys, *argv)
+        assert code == 2 and reason in err, (argv, err)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import json
+from pathlib import Path
 import sys
 from typing import Any
 
@@ -206,12 +207,66 @@ def _cmd_errata(args) -> int:
     return EXIT_OK
 
 
+def _codegen_result(args):
+    """The result object named by ``thinlayer codegen RESULT``."""
+    if args.result == "coefficients":
+        from .coefficients import kernel_coefficients
+
+        if args.nu not in (None, "symbolic"):
+            raise BadInput("coefficients are generated as functions of nu: leave out --nu")
+        return kernel_coefficients(_layer("symbolic"), args.order or 3)
+    punch = _punch(args)
+    if args.result == "inner":
+        from .inner import inner_pressure
+
+        if args.param:
+            punch = punch.subs(_params(args.param))
+        return inner_pressure(_layer(args.nu or "symbolic"), punch, args.order)
+    if args.result == "force":
+        from .force_law import force_law
+
+        if args.param:
+            punch = punch.subs(_params(args.param))
+        return force_law(_layer(args.nu or "symbolic"), punch)
+    from .solution import solve  # composite: numeric parameters
+
+    if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
+        raise BadInput("composite needs numeric --nu, --delta0 and --H (and --param values)")
+    sol = solve(_layer(args.nu), punch, delta0=args.delta0, H=args.H, mu=args.mu,
+                parameters=_params(args.param), boundary_layer="alexandrov")
+    return sol.composite
+
+
 def _cmd_codegen(args) -> int:
-    try:
-        from . import codegen
-    except ImportError as exc:  # pragma: no cover
-        raise BadInput("code generation is not available in this installation") from exc
-    return codegen.cli(args)
+    from .codegen import LANGUAGES, generate
+
+    langs = list(LANGUAGES) if args.lang == "all" else [x.strip() for x in args.lang.split(",") if x.strip()]
+    bad = [x for x in langs if x not in (*LANGUAGES, "matlab")]
+    if bad or not langs:
+        raise BadInput(f"--lang {args.lang!r}: choose from {', '.join(LANGUAGES)} (comma-separated) or 'all'")
+    result = _codegen_result(args)
+    codes = [generate(result, lang, name=args.name) for lang in langs]
+    if args.out is None:
+        if args.json:
+            _print([{"language": c.language, "function": c.function_name, "arguments": list(c.arguments),
+                     "outputs": list(c.outputs), "files": dict(c.files)} for c in codes], True)
+        else:
+            for c in codes:
+                print(c.source)
+        return EXIT_OK
+    written = []
+    for c in codes:  # check every file before writing any
+        for fname in c.files:
+            target = Path(args.out) / fname
+            if target.exists() and not args.force:
+                raise FileExistsError(f"{target} exists; pass --force to overwrite it")
+    for c in codes:
+        written += [str(p) for p in c.write(args.out, force=args.force)]
+    if args.json:
+        _print({"files": written}, True)
+    else:
+        print("wrote " + ", ".join(written))
+    return EXIT_OK
 
 
 # ---------------------------------------------------------------------------------------------
@@ -294,13 +349,30 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(e)
     e.set_defaults(func=_cmd_errata)
 
-    try:
-        from . import codegen
-    except ImportError:  # pragma: no cover
-        codegen = None
-    if codegen is not None and hasattr(codegen, "add_cli"):
-        g = codegen.add_cli(sub, fmt)
-        g.set_defaults(func=_cmd_codegen)
+    g = sub.add_parser("codegen", formatter_class=fmt, help="generate C, Fortran, Rust, Julia, Octave or Python code",
+                       description="Generate functions from a result: 'inner' (pressure (2.26)), 'force' (force "
+                                   "law (1.8) and contact area), 'coefficients' (A, m_n, M_k of nu), 'composite' "
+                                   "(composite pressure, radial punch, Alexandrov boundary layer, numeric "
+                                   "parameters).\nWithout --out the code is printed. JSON keys: a list of "
+                                   "{language, function, arguments, outputs, files}; with --out: {files}.",
+                       epilog="examples:\n  thinlayer codegen inner --kind elliptic_paraboloid --nu 3/10 --lang c\n"
+                              "  thinlayer codegen force --kind paraboloid --lang all --out gen\n"
+                              "  thinlayer codegen coefficients --order 2 --lang fortran,rust --json\n"
+                              "  thinlayer codegen composite --kind paraboloid --param R=2 --nu 0.3 "
+                              "--delta0 0.25 --H 0.02 --lang python")
+    g.add_argument("result", choices=("inner", "force", "coefficients", "composite"), help="what to generate")
+    g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
+    g.add_argument("--out", help="write the files into this folder (created) instead of printing")
+    g.add_argument("--force", action="store_true", help="overwrite existing files in --out")
+    g.add_argument("--name", help="function name (default from the result)")
+    g.add_argument("--nu", default=None, help="Poisson ratio: 'symbolic' (default), a fraction or a number")
+    g.add_argument("--order", type=int, default=None, help="inner terms / number of coefficients")
+    g.add_argument("--delta0", type=float, help="indentation (composite)")
+    g.add_argument("--H", type=float, help="layer thickness (composite)")
+    g.add_argument("--mu", type=float, default=1.0, help="shear modulus (composite, default 1)")
+    _add_punch_args(g)
+    _add_output_args(g, latex=False)
+    g.set_defaults(func=_cmd_codegen)
     return ap
 
 

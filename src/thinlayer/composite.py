@@ -77,6 +77,7 @@ class CompositePressure:
     _phi: Callable = field(repr=False)
     _Q: Callable = field(repr=False)
     _table: tuple = field(repr=False)
+    _nu: Any = field(default=None, repr=False)
 
     def local(self, x1: Any, x2: Any) -> tuple[np.ndarray, np.ndarray]:
         """``(v, g)``: scaled distance ``n/H`` from Gamma_0 (inward positive) and ``|grad Phi|`` at the foot.
@@ -132,6 +133,47 @@ class CompositePressure:
         w -= i
         out = ct[i] * (1 - w) + ct[i + 1] * w  # linear interpolation on the uniform sqrt grid
         return np.where(v < self.band, out, 0.0)
+
+    codegen_name = "composite_pressure"
+    equation = "3.24"
+
+    def codegen_expressions(self):
+        """``((x1, x2, H, mu), {"p": p_c})`` for :mod:`thinlayer.codegen` (radial punch, Alexandrov layer).
+
+        For a radial punch ``Gamma_0`` is the circle ``r = a`` and ``v = (a - r)/H`` exactly, so with
+        Alexandrov's closed form (3.24) the composite is an expression in ``x1, x2``; ``H`` and ``mu``
+        stay arguments (``delta0``, ``nu`` and the punch are fixed numbers).
+        """
+        if self.boundary_layer != "alexandrov":
+            raise NotImplementedError(
+                "the exact boundary layer is a numerical (tabulated) function; generated code needs the closed "
+                "form: build the composite with boundary_layer='alexandrov'")
+        Phi = self.punch.expr
+        rho = sp.Symbol("rho", positive=True)
+        radial = Phi.subs({S.x1: rho, S.x2: 0})
+        if sp.expand(Phi - radial.subs(rho, sp.sqrt(S.x1**2 + S.x2**2))) != 0:
+            raise NotImplementedError(
+                f"the punch {Phi} is not radial: the distance to Gamma_0 has no closed form; "
+                "generated code is available for radial punches")
+        from scipy.optimize import brentq
+
+        from .boundary_layer import alexandrov_solution
+
+        f = sp.lambdify(rho, radial - self.delta0)
+        hi = 1.0
+        while f(hi) < 0:
+            hi *= 2
+        a = sp.Float(brentq(f, 0.0, hi, xtol=1e-15, rtol=1e-15), 17)
+        g = sp.Float(float(sp.diff(radial, rho).subs(rho, a)), 17)
+        vs = sp.Symbol("v", real=True)
+        Q = alexandrov_solution(self.layer).q(vs)
+        v = (a - sp.sqrt(S.x1**2 + S.x2**2)) / S.H
+        nu = {S.nu: self._nu} if self._nu is not None else {}
+        p_in = self.inner.pressure.subs({S.delta0: self.delta0, **nu})
+        amp = (_vartheta(self.layer).subs(nu) / self.layer.A).subs(S.mu, 1)
+        val = p_in + sp.Float(float(amp), 17) * S.mu * g * (Q.subs(vs, v) - v)
+        pc = sp.Piecewise((0, v <= sp.Float(self.h, 17)), (0, val < 0), (val, True))
+        return (S.x1, S.x2, S.H, S.mu), {"p": pc}
 
     def lambdify(self) -> Callable:
         """The numeric pressure function ``(x1, x2) -> p_c`` (this object: it is already vectorised)."""
@@ -204,4 +246,4 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
     ct = np.asarray(Q(vt), dtype=float) - vt
     ct[0] = -h  # Qhat(h) = 0 (3.18)
     return CompositePressure(layer, punch, float(delta0), float(H), float(mu), inner, boundary_layer, h,
-                             th / float(layer.A), float(band), p_in, phi3, Q, (zt, ct))
+                             th / float(layer.A), float(band), p_in, phi3, Q, (zt, ct), nu)

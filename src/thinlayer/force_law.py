@@ -269,11 +269,23 @@ class ForceLaw:
             return sp.lambdify(args, exprs, modules=[{"elliptic_e": ellipe}, "numpy"], cse=True)
         return checked_lambdify(args, exprs, backend)
 
+    codegen_name = "force_law"
+
     def codegen_expressions(self):
-        """``(arguments, {name: expression})`` for :mod:`thinlayer.codegen` (closed forms only)."""
+        """``(arguments, {name: expression})`` for :mod:`thinlayer.codegen` (closed forms only).
+
+        Outputs ``force`` (1.8) and ``contact_area_leading`` (|omega_0|) and, when the perimeter has
+        no complete elliptic integral (a circle; none of the target languages has ``E(m)``),
+        ``contact_area`` (3.25).  For the elliptic paraboloid multiply ``h^* H`` by the perimeter
+        ``4 a E(1 - b^2/a^2)`` yourself.
+        """
         if self.P0 is None:
             raise ValueError(f"no closed-form force law for {self.punch.name}; code generation needs one")
-        return self.arguments, {"force": self.force, "contact_area": self.contact_area}
+        outs = {"force": self.force, "contact_area_leading": self.area0}
+        if not self.perimeter.has(sp.elliptic_e):
+            outs["contact_area"] = self.contact_area
+        free = set().union(*(e.free_symbols for e in outs.values()))
+        return tuple(a for a in self.arguments if a in free), outs
 
     def latex(self) -> str:
         th = _vartheta(self.layer)
