@@ -403,3 +403,27 @@ def test_frictionless_solve_against_direct_solution():
     assert 3.5 < area_rem[0] / area_rem[1] < 4.5  # O((H/a)^2) with the exact h*
     with pytest.raises(ValueError, match="nu="):
         solve(layer, Punch.paraboloid(R), delta0=0.1, H=1.0)
+
+
+def test_fourth_degree_paraboloid_closed_form_against_direct_solution():
+    # Phi = r^4/(4 R^3) (the paper's concluding remarks): a radial monomial, closed-form law
+    R = 1.0
+    punch = Punch((S.x1**2 + S.x2**2) ** 2 / (4 * R**3))
+    layer = BondedLayer(0.3)
+    law = force_law(BondedLayer(), Punch((S.x1**2 + S.x2**2) ** 2 / (4 * sp.Symbol("R", positive=True) ** 3)))
+    assert law.kind == "radial-monomial"
+    # |omega_0| = pi a^2 with a^4 = 4 R^3 delta0; V = (2/3) pi a^2 delta0 (hand integral of delta0 - r^4/(4R^3))
+    Rs = sp.Symbol("R", positive=True)
+    a2 = sp.sqrt(4 * Rs**3 * S.delta0)
+    assert sp.simplify(law.area0 - sp.pi * a2) == 0
+    assert sp.simplify(law.V - sp.Rational(2, 3) * sp.pi * a2 * S.delta0) == 0
+    frac, rem = [], []
+    d0 = 0.25  # a = 1
+    for cH in (10.0, 20.0, 40.0):
+        H = 1 / cH
+        direct = solve_axisymmetric(layer, r**4 / 4, d0, H, error_estimate=False)
+        sol = solve(layer, punch, delta0=d0, H=H)
+        frac.append((direct.force - sol.force_leading) / (sol.force - sol.force_leading))
+        rem.append(direct.force / sol.force - 1)
+    assert all(0.5 < q < 1.0 for q in frac) and frac[0] < frac[1] < frac[2]
+    assert rem[1] / rem[2] > 6.0

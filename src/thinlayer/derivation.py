@@ -67,10 +67,15 @@ def _contact_table(ct: Any, layer: LayerKernel, punch: Punch) -> dict | None:
                 raise DerivationFileError(f"[contact] {key} = {val!r} is invalid: expected a number > 0")
             out[key] = float(val)
     nu = ct.get("nu")
-    if layer.name == "bonded" and getattr(layer, "parameter", None) is not None:
+    if layer.name == "frictionless":
+        if not isinstance(nu, (int, float)) or isinstance(nu, bool) or not -1 < nu < 0.5:
+            raise DerivationFileError(f"[contact] nu = {nu!r}: the frictionless base needs a number in (-1, 1/2) "
+                                      "for vartheta = mu/(1 - nu)")
+        out["nu"] = float(nu)
+    elif layer.name == "bonded" and getattr(layer, "parameter", None) is not None:
         if nu is None:
             raise DerivationFileError("[contact] needs 'nu' (a number in (-1, 1/2)) because [layer] nu is symbolic")
-    if nu is not None:
+    if nu is not None and layer.name == "bonded":
         try:
             out["layer"] = BondedLayer(nu)
         except (ValueError, TypeError) as exc:
@@ -194,6 +199,17 @@ def report_latex(der: Derivation) -> str:
         from .contour import ellipse_contour
 
         doc.section("Leading contact area (3.1)").math(ellipse_contour().latex())
+    if layer.name == "frictionless":
+        from .force_law import force_law
+        from .wiener_hopf import edge_shift_alexandrov, edge_shift_exact
+
+        doc.section("Boundary layer and edge shift (frictionless base)").text(
+            "The kernel does not depend on $\\nu$; $m_1 = 0$, so Alexandrov's (3.20)--(3.21) give $B = 1/(2\\mathcal{A})$, "
+            "$C = B/\\mathcal{A}$, and the force has no correction of relative order $(H/a)^2$: the first correction is "
+            "of order $(H/a)^3$ (second-order boundary layer, not derived here; measured by the direct solver).")
+        doc.table("rr", ["$h^*$ exact (Wiener--Hopf)", "$h^*$ (3.25)"],
+                  [[f"{float(edge_shift_exact(layer)):.10f}", f"{float(edge_shift_alexandrov(layer)):.10f}"]])
+        doc.section("Force and contact area").math(force_law(layer, punch).latex())
     if layer.name == "bonded":
         from .force_law import force_law
 
@@ -222,7 +238,7 @@ def report_latex(der: Derivation) -> str:
 
         c = der.contact
         sol = solve(c.get("layer", layer), punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
-                    mu=c.get("mu", 1.0), parameters=c["parameters"])
+                    mu=c.get("mu", 1.0), parameters=c["parameters"], nu=c.get("nu"))
         doc.section("Contact solution for numeric parameters").math(sol.latex())
     errata_section(doc)
     return doc.latex()
