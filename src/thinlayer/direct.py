@@ -62,6 +62,7 @@ import numpy as np
 import sympy as sp
 from scipy import integrate, optimize, special
 
+from .display import RichDisplay
 from .kernels import HalfSpace, LayerKernel
 
 __all__ = ["AxisymmetricContact", "contact_for_radius", "solve_axisymmetric", "surface_displacement"]
@@ -79,6 +80,13 @@ def _positive(value: Any, name: str) -> float:
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"{name} must be a finite positive number, got {value!r}")
     return v
+
+
+def _is_incompressible(layer: Any) -> bool:
+    """True for the incompressible bonded layer (kappa = 1), the one kernel that admits nu = 1/2."""
+    from .incompressible import IncompressibleLayer  # late import: incompressible.py imports this module
+
+    return isinstance(layer, IncompressibleLayer)
 
 
 def _nu_and_layer(layer: Any, nu: Any) -> float:
@@ -102,8 +110,9 @@ def _nu_and_layer(layer: Any, nu: Any) -> float:
         if isinstance(nu, bool) or not isinstance(nu, (numbers.Real, sp.Number)):
             raise TypeError(f"nu must be a real number with -1 < nu < 1/2, got {nu!r}")
         nu_val = float(nu)
-    if not (-1 < nu_val < 0.5):
-        raise ValueError(f"Poisson ratio nu={nu_val} outside the admissible range -1 < nu < 1/2")
+    if not (-1 < nu_val < 0.5 or (nu_val == 0.5 and _is_incompressible(layer))):
+        raise ValueError(f"Poisson ratio nu={nu_val} outside the admissible range -1 < nu < 1/2 "
+                         "(nu = 1/2 only with thinlayer.incompressible.IncompressibleLayer())")
     try:
         far = float(np.asarray(layer.L_numeric(np.array([2 * _U_MAX]), "numpy"))[0])
     except Exception as exc:  # GenericLayer and friends
@@ -239,7 +248,7 @@ class _Discretisation:
 
 # --------------------------------------------------------------------------- result
 @dataclass(frozen=True)
-class AxisymmetricContact:
+class AxisymmetricContact(RichDisplay):
     """Direct numerical solution of the axisymmetric unilateral contact problem (1.5)-(1.8).
 
     Attributes
