@@ -93,6 +93,7 @@ import numpy as np
 import sympy as sp
 
 from . import symbols as S
+from .display import RichDisplay
 from .kernels import LayerKernel
 from .results import latex_equation
 
@@ -223,7 +224,7 @@ def boundary_layer_kernel(layer: LayerKernel, t: Any, method: str = "bessel2") -
 # Alexandrov's parameters (3.20), (3.21)
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class AlexandrovParameters:
+class AlexandrovParameters(RichDisplay):
     """Constants B, C of Alexandrov's approximation ``L~(s) = s sqrt(s^2+B^2)/(s^2+C)`` (3.19).
 
     ``B = 1/(A + sqrt(A^2 + 2 m_1))`` and ``C = B/A`` solve (3.20) ``B/C = A`` and the corrected
@@ -498,7 +499,7 @@ def alexandrov_kernel_numpy(layer: Any, t: Any, nodes: int = 80) -> np.ndarray:
 # the boundary-layer solution (3.23)-(3.25)
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class AlexandrovSolution:
+class AlexandrovSolution(RichDisplay):
     """Boundary layer with Alexandrov's kernel, normalised: ``q** = (vartheta H_* b_1^*/A) Q(v)``.
 
     ``Q(v) ~ v`` as ``v -> oo`` (matching the inner pressure (2.29), linear in the distance from

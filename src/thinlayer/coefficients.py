@@ -26,6 +26,7 @@ from sympy.polys.rings import ring
 
 from . import symbols as S
 from ._series import powers, quotient_field, quotient_fraction_free, reciprocal_recurrence
+from .display import RichDisplay
 from .kernels import GenericLayer, LayerKernel, _check_order
 from .results import checked_lambdify
 
@@ -131,7 +132,7 @@ def _poly_ratio_expr(num, den_factors: dict, content, domain: _PolyDomain) -> sp
 
 
 @dataclass(frozen=True)
-class KernelCoefficients:
+class KernelCoefficients(RichDisplay):
     """A, (m_0..m_order) of (2.20) and (M_0..M_order) of (4.2) for one layer.
 
     For a symbolic layer the entries are sympy expressions (rational functions of nu or

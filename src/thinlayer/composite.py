@@ -33,6 +33,7 @@ import numpy as np
 import sympy as sp
 
 from . import symbols as S
+from .display import RichDisplay
 from .inner import InnerPressure, _vartheta, inner_pressure
 from .kernels import LayerKernel
 from .punch import Punch
@@ -46,7 +47,7 @@ _TABLE_NODES = 2**14 + 1
 
 
 @dataclass(frozen=True, eq=False)
-class CompositePressure:
+class CompositePressure(RichDisplay):
     r"""Uniformly valid pressure ``p_c(x1, x2)`` (module docstring); call it like a numpy function.
 
     Attributes

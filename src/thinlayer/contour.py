@@ -66,6 +66,7 @@ import numpy as np
 import sympy as sp
 
 from . import symbols as S
+from .display import RichDisplay
 
 __all__ = ["ContactContour", "ContourAccuracy", "EllipseContour", "contact_contour", "ellipse_contour"]
 
@@ -786,7 +787,7 @@ class ContourAccuracy:
 
 
 @dataclass(frozen=True, eq=False)
-class ContactContour:
+class ContactContour(RichDisplay):
     r"""The leading contact area omega_0 = {delta0 - Phi > 0} and its contour Gamma_0 (3.3)-(3.14).
 
     Made by :func:`contact_contour`; dimensional coordinates.  ``s`` is the arc length along
@@ -1082,7 +1083,7 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
 # the elliptic paraboloid in closed form (3.1)
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class EllipseContour:
+class EllipseContour(RichDisplay):
     r"""Closed form of Gamma_0 for the elliptic paraboloid (1.1), (3.1).
 
     ``Phi = x1^2/(2 R1) + x2^2/(2 R2) = delta0`` is ``x1^2/a^2 + x2^2/b^2 = 1`` with

@@ -52,6 +52,7 @@ import mpmath
 import sympy as sp
 
 from . import symbols as S
+from .display import RichDisplay
 from .inner import _vartheta, inner_pressure
 from .kernels import LayerKernel
 from .punch import Punch, PunchError
@@ -192,7 +193,7 @@ class ForceValues:
 
 
 @dataclass(frozen=True)
-class ForceLaw:
+class ForceLaw(RichDisplay):
     r"""``P(delta0)`` and ``|omega|(delta0)`` with their first corrections in H (1.8), (3.25).
 
     Attributes

@@ -27,6 +27,7 @@ from typing import Any
 import sympy as sp
 
 from . import symbols as S
+from .display import RichDisplay
 from .kernels import LayerKernel, _check_order
 from .moments import laplacian
 from .punch import Punch
@@ -44,7 +45,7 @@ def _vartheta(layer: LayerKernel) -> sp.Expr:
 
 
 @dataclass(frozen=True)
-class InnerPressure:
+class InnerPressure(RichDisplay):
     """The inner expansion of the contact pressure for one layer and punch.
 
     Attributes

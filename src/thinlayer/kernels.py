@@ -29,6 +29,7 @@ import sympy as sp
 from . import kernel_numeric
 from . import symbols as S
 from ._series import taylor_cosh, taylor_sinh
+from .display import RichDisplay
 
 
 class IncompressibleLayerError(ValueError):
@@ -67,7 +68,7 @@ def _as_nu(nu: Any) -> sp.Basic | mpmath.mpf:
     return val
 
 
-class LayerKernel(ABC):
+class LayerKernel(RichDisplay, ABC):
     """Interface of a layer model: symbolic L(u), Maclaurin data of L(s)/s, numerics."""
 
     name: str = "layer"

@@ -27,6 +27,7 @@ from functools import lru_cache
 import sympy as sp
 
 from . import symbols as S
+from .display import RichDisplay
 from .kernels import LayerKernel, _check_order
 from .results import checked_lambdify
 
@@ -66,7 +67,7 @@ def kernel_moment(layer: LayerKernel, a1: int, a2: int):
 
 
 @dataclass(frozen=True)
-class MomentExpansion:
+class MomentExpansion(RichDisplay):
     """The moment asymptotic expansion of ``k(Lambda xi)`` through ``Lambda^{-2 order - 2}`` (2.22).
 
     As an operator on smooth densities (2.23):

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import symbols as S
+from .display import RichDisplay
 from .moments import laplacian
 
 
@@ -25,7 +26,7 @@ class PunchError(ValueError):
 
 
 @dataclass(frozen=True)
-class Punch:
+class Punch(RichDisplay):
     """A rigid punch ``x3 = -Phi(x1, x2)`` with polynomial Phi (1.1).
 
     Parameters

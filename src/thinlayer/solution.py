@@ -225,7 +225,9 @@ class ContactSolution:
         )
 
     def _repr_latex_(self) -> str:
-        return "$$\\begin{aligned}" + self.latex().replace(" \\\\\n", " \\\\ ") + "\\end{aligned}$$"
+        from .display import display_math
+
+        return display_math(self.latex())
 
 
 def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,

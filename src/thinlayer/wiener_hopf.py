@@ -90,6 +90,7 @@ import numpy as np
 import sympy as sp
 from scipy import optimize, special
 
+from .display import RichDisplay
 from .kernels import BondedLayer, FrictionlessLayer
 
 __all__ = [
@@ -424,7 +425,7 @@ def edge_shift_alexandrov(nu: Any) -> mpmath.mpf:
 
 
 @dataclass(frozen=True)
-class EdgeShiftTable:
+class EdgeShiftTable(RichDisplay):
     """Rows ``(nu, h_exact, h_alexandrov)`` of the edge shift (3.18) vs Alexandrov's (3.25)."""
 
     rows: tuple[tuple[sp.Rational, mpmath.mpf, mpmath.mpf], ...]
@@ -549,7 +550,7 @@ def _qhat_dehoog(laplace, tau: float, dps: int) -> mpmath.mpf:
 
 
 @dataclass(frozen=True)
-class WienerHopfSolution:
+class WienerHopfSolution(RichDisplay):
     r"""Boundary layer ``qhat(tau)`` of (3.22), normalised so that ``qhat ~ tau + h`` (``c = pi^2 A``).
 
     ``q**(s, h + tau) = (vartheta H_* b_1^*(s)/A) qhat(tau)``; ``qhat(0) = 0`` (3.18).
