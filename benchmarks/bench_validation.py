@@ -1,0 +1,48 @@
+"""Timings of the validation study and the speed of the asymptotics at equal accuracy (issue 4).
+
+``run()`` returns ``(name, seconds, target)`` rows; nothing runs at import.  The speed rows compare
+the asymptotic force (:func:`thinlayer.solve`, and the lambdified force law (1.8) alone) with the
+direct solvers run at the cheapest resolution that reaches the asymptotic force's accuracy
+(:func:`thinlayer.validation.speed_comparison`, sphere, nu = 0.3).
+"""
+from __future__ import annotations
+
+import time
+
+
+def run() -> list[tuple[str, float, str]]:
+    from thinlayer.validation import speed_comparison, validate_elliptic, validate_sphere
+
+    rows: list[tuple[str, float, str]] = []
+    validate_sphere(0.3, (0.1,))  # warm the caches (exact boundary-layer table, force law)
+    t = time.perf_counter()
+    st = validate_sphere(0.3, (0.2, 0.1, 0.05, 0.025, 0.0125))
+    rows.append((f"validation: sphere nu=0.3, 5 H/a (slope P {st.observed_orders(('force',))[0].observed:.2f})",
+                 time.perf_counter() - t, "< 5 s"))
+    t = time.perf_counter()
+    st = validate_elliptic(0.3, (0.1,))
+    rows.append((f"validation: elliptic nu=0.3 H/a=0.1 ({st.rows[0].solver.split(' (')[0]} + coarse)",
+                 time.perf_counter() - t, "< 10 s"))
+
+    for eps in (0.1, 0.05):
+        sc = speed_comparison(0.3, eps, repeat=3)
+        tag = f"speed H/a={eps:g}:"
+        rows.append((f"{tag} solve() (force err {sc.asymptotic_error:.1e})", sc.seconds_solve, "< 0.05 s"))
+        rows.append((f"{tag} force law (1.8), one call ({sc.seconds_force_law * 1e6:.2f} us)",
+                     sc.seconds_force_law, "< 1e-4 s"))
+        if sc.seconds_fft2d is not None:
+            star = "*" if sc.fft2d_coarsest else ""
+            rows.append((f"{tag} solve_2d n={sc.fft2d_n}{star} same acc.: {sc.ratio_fft2d:.0f}x solve()",
+                         sc.seconds_fft2d, "ratio > 10"))
+        else:
+            rows.append((f"{tag} solve_2d: no grid <= 1024^2 reaches it", float("nan"), "-"))
+        if sc.seconds_axisymmetric is not None:
+            rows.append((f"{tag} axisym. {sc.axisymmetric_modes} modes same acc.: {sc.ratio_axisymmetric:.1f}x solve()",
+                         sc.seconds_axisymmetric, "-"))
+    rows.append(("(* the coarsest grid solve_2d accepts, Delta = H/5)", float("nan"), "-"))
+    return rows
+
+
+if __name__ == "__main__":
+    for name, sec, target in run():
+        print(f"{name:62s} {sec:10.5f} s   (target {target})")
