@@ -75,6 +75,10 @@ def test_failed_latex_leaves_no_files(tmp_path, monkeypatch):
     ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[inner]\norder=0\n", "positive integer"),
     ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[extra]\n", "unknown table"),
     ("[derivation\n", "not valid TOML"),
+    ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[validation]\nH_over_a=[0.5]\n",
+     "[validation] H_over_a"),
+    ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[validation]\nshapes=['cube']\n",
+     "[validation] shapes"),
     ("[derivation]\nname='x'\n[layer]\n[punch]\nkind='paraboloid'\n[contact]\ndelta0=0.1\nH=0.1\n"
      "parameters={R=1}\n", "because [layer] nu is symbolic"),
     ("[derivation]\nname='x'\n[layer]\nnu=0.3\n[punch]\nkind='paraboloid'\n[contact]\ndelta0=0.1\n"
@@ -115,3 +119,10 @@ def test_report_contains_boundary_layer_force_law_and_solution():
 
     sol = solve(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), delta0=0.5, H=0.05)
     assert f"= {sol.force:.8g}" in text
+
+
+def test_report_contains_validation_table():
+    der = load_derivation(ROOT / "derivations" / "sphere.toml")
+    assert der.validation == {"nu": [0.3], "H_over_a": [0.1, 0.05, 0.025], "shapes": ["sphere"]}
+    text = report_latex(der)
+    assert "Validation against the direct numerical solution" in text and "tabular" in text

@@ -373,6 +373,10 @@ def build_parser() -> argparse.ArgumentParser:
     _add_punch_args(g)
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
+
+    from .validation import add_cli as _validate_cli
+
+    _validate_cli(sub, fmt)
     return ap
 
 

@@ -42,9 +42,35 @@ class Derivation:
     inner_order: int | None
     edge_shift_nus: tuple
     contact: dict | None = None
+    validation: dict | None = None
 
 
-_TOP_KEYS = {"derivation", "layer", "coefficients", "punch", "inner", "edge_shift", "contact"}
+_TOP_KEYS = {"derivation", "layer", "coefficients", "punch", "inner", "edge_shift", "contact", "validation"}
+_VALIDATION_KEYS = {"nu", "H_over_a", "shapes"}
+
+
+def _validation_table(vt: Any) -> dict | None:
+    """Validate ``[validation]``: a small study against the direct numerics for the report."""
+    if vt is None:
+        return None
+    if not isinstance(vt, dict):
+        raise DerivationFileError("[validation] must be a table with keys " + ", ".join(sorted(_VALIDATION_KEYS)))
+    unknown = set(vt) - _VALIDATION_KEYS
+    if unknown:
+        raise DerivationFileError(f"[validation] unknown key(s) {sorted(unknown)}; valid keys are "
+                                  f"{sorted(_VALIDATION_KEYS)}")
+    out = {}
+    for key, lo, hi in (("nu", -1.0, 0.5), ("H_over_a", 0.0125, 0.2)):
+        vals = vt.get(key, [0.3] if key == "nu" else [0.1, 0.05, 0.025])
+        if not isinstance(vals, list) or not vals or not all(
+                isinstance(v, (int, float)) and not isinstance(v, bool) and lo <= v <= hi and v != 0.5 for v in vals):
+            raise DerivationFileError(f"[validation] {key} = {vals!r}: a non-empty list of numbers in [{lo}, {hi}]")
+        out[key] = [float(v) for v in vals]
+    shapes = vt.get("shapes", ["sphere"])
+    if not isinstance(shapes, list) or not set(shapes) <= {"sphere", "elliptic"} or not shapes:
+        raise DerivationFileError(f"[validation] shapes = {shapes!r}: a list of 'sphere' and/or 'elliptic'")
+    out["shapes"] = list(shapes)
+    return out
 _CONTACT_KEYS = {"delta0", "H", "mu", "nu", "parameters", "force"}
 
 
@@ -170,7 +196,8 @@ def load_derivation(path: str | Path) -> Derivation:
     if not isinstance(es, list) or not all(isinstance(v, (int, float)) and -1 < v < 0.5 for v in es):
         raise DerivationFileError(f"[edge_shift] nu = {es!r}: a list of numbers in (-1, 1/2)")
     contact = _contact_table(data.get("contact"), layer, punch)
-    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact)
+    validation = _validation_table(data.get("validation"))
+    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation)
 
 
 def report_latex(der: Derivation) -> str:
@@ -240,6 +267,16 @@ def report_latex(der: Derivation) -> str:
         sol = solve(c.get("layer", layer), punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
                     mu=c.get("mu", 1.0), parameters=c["parameters"], nu=c.get("nu"))
         doc.section("Contact solution for numeric parameters").math(sol.latex())
+    if der.validation is not None:
+        from .validation import validation_study
+
+        v = der.validation
+        study = validation_study(v["nu"], v["H_over_a"], v["shapes"], progress=False)
+        doc.section("Validation against the direct numerical solution").text(
+            "Asymptotic results (thinlayer.solve) against the direct numerical solution of the full "
+            "contact problem (thinlayer.numerics); relative errors, observed orders and the edge "
+            "shift from the numerical contact radius. Plots: run thinlayer validate with the option plots.")
+        doc.text("{\\footnotesize\n" + study.latex() + "\n}")
     errata_section(doc)
     return doc.latex()
 
