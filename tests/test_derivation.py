@@ -43,6 +43,9 @@ def test_every_shipped_derivation_compiles_without_overfull_lines(tmp_path, path
     assert tex.with_suffix(".pdf").stat().st_size > 10_000
     log = tex.with_suffix(".log").read_text()
     assert overfull_boxes(log) == [], f"{path.name}: lines run off the page"
+    if der.validation is not None:  # the validation plots are included in the report
+        figs = sorted(p.name for p in (tmp_path / f"{der.name}-figures").glob("*.pdf"))
+        assert figs and all(f"{der.name}-figures/{f}" in tex.read_text() for f in figs)
 
 
 def test_overfull_detector():

@@ -200,8 +200,12 @@ def load_derivation(path: str | Path) -> Derivation:
     return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation)
 
 
-def report_latex(der: Derivation) -> str:
-    """The whole LaTeX document of a derivation, in the paper's order (see :mod:`thinlayer.report`)."""
+def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
+    """The whole LaTeX document of a derivation, in the paper's order (see :mod:`thinlayer.report`).
+
+    With ``figure_dir`` (a folder next to the .tex file) the validation plots are written there and
+    included; without it the report has the validation tables only.
+    """
     from .report import Document, alexandrov_generic_latex, errata_section
 
     layer, punch = der.layer, der.punch
@@ -277,8 +281,22 @@ def report_latex(der: Derivation) -> str:
             "contact problem (thinlayer.numerics); relative errors, observed orders and the edge "
             "shift from the numerical contact radius. Plots: run thinlayer validate with the option plots.")
         doc.text("{\\footnotesize\n" + study.latex() + "\n}")
+        if figure_dir is not None:
+            figs = _validation_figures(study, Path(figure_dir))
+            for fig in figs:
+                doc.text(rf"\begin{{center}}\includegraphics[width=0.8\linewidth]{{{Path(figure_dir).name}/{fig}}}"
+                         r"\end{center}")
     errata_section(doc)
     return doc.latex()
+
+
+def _validation_figures(study, folder: Path) -> list[str]:
+    """The study's plots as PDF files in ``folder``; [] (tables only) when matplotlib is missing."""
+    try:
+        paths = study.plots(folder, formats=("pdf",))
+    except ImportError:
+        return []
+    return [p.name for p in paths if p.suffix == ".pdf"]
 
 
 def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force: bool = False) -> Path:
@@ -297,7 +315,8 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force:
         from .report import latex_engine
 
         latex_engine()  # fail before writing anything when no engine is installed
-    text = report_latex(der)
+    figures = Path(out_dir) / f"{der.name}-figures" if der.validation is not None else None
+    text = report_latex(der, figures)
     write_tex(text, tex, force)
     if pdf:
         compile_pdf(tex)

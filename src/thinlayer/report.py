@@ -173,6 +173,9 @@ def compile_pdf(tex: Path) -> tuple[Path, str]:
     cmd = latex_engine()
     with tempfile.TemporaryDirectory(prefix="thinlayer-tex-") as tmp:
         shutil.copy(tex, Path(tmp) / tex.name)
+        figures = tex.parent / f"{tex.stem}-figures"
+        if figures.is_dir():
+            shutil.copytree(figures, Path(tmp) / figures.name)
         runs = 1 if cmd[0] == "latexmk" else 2
         for _ in range(runs):
             res = subprocess.run([*cmd, tex.name], cwd=tmp, capture_output=True, text=True)
