@@ -26,8 +26,9 @@ differs from the normal distance by ``O(n^2/R)``, inside the error above.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 import sympy as sp
@@ -115,14 +116,15 @@ class CompositePressure(RichDisplay):
         f, fx, fy = self._phi(x1, x2)
         with np.errstate(divide="ignore", invalid="ignore"):
             v_est = (self.delta0 - f) / (np.hypot(fx, fy) * self.H)
-        p = np.where(v_est > 0, self._p_in(x1, x2), 0.0)
+        p_in = self._p_in(x1, x2)
+        p = np.where(v_est > 0, p_in, 0.0)
         # first-order distance first; the Newton foot point only near the edge
         near = np.flatnonzero((v_est < 1.25 * self.band + 1) & (v_est > min(self.h, 0.0) - 1))
         if near.size:
             xn, yn = x1[near], x2[near]
             v, g = self._newton(xn, yn, f[near], fx[near], fy[near])
             corr = self._correction(v)
-            p[near] = np.where(v > self.h, self._p_in(xn, yn) + self.amplitude * g * corr, 0.0)
+            p[near] = np.where(v > self.h, p_in[near] + self.amplitude * g * corr, 0.0)
         return np.maximum(p, 0.0).reshape(shape)
 
     def _correction(self, v: np.ndarray) -> np.ndarray:

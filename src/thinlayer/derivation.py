@@ -17,15 +17,12 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover
     import tomli as tomllib
 
-from . import errata
-from . import symbols as S
 from .coefficients import kernel_coefficients
 from .inner import inner_pressure
 from .kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from .moments import kernel_moment, moment_expansion
 from .punch import Punch
-
-from .report import GENERATED_MARK, SEPARATOR
+from .report import SEPARATOR
 
 
 class DerivationFileError(ValueError):
@@ -59,17 +56,17 @@ def _validation_table(vt: Any) -> dict | None:
     if unknown:
         raise DerivationFileError(f"[validation] unknown key(s) {sorted(unknown)}; valid keys are "
                                   f"{sorted(_VALIDATION_KEYS)}")
+    from .validation import _check_list, _check_nu, _check_ratio, _check_shapes
+
+    checks = (("nu", lambda v: list(_check_list(v, _check_nu, "nu")), [0.3]),
+              ("H_over_a", lambda v: list(_check_list(v, _check_ratio, "H_over_a")), [0.1, 0.05, 0.025]),
+              ("shapes", lambda v: list(_check_shapes(v)), ["sphere"]))
     out = {}
-    for key, lo, hi in (("nu", -1.0, 0.5), ("H_over_a", 0.0125, 0.2)):
-        vals = vt.get(key, [0.3] if key == "nu" else [0.1, 0.05, 0.025])
-        if not isinstance(vals, list) or not vals or not all(
-                isinstance(v, (int, float)) and not isinstance(v, bool) and lo <= v <= hi and v != 0.5 for v in vals):
-            raise DerivationFileError(f"[validation] {key} = {vals!r}: a non-empty list of numbers in [{lo}, {hi}]")
-        out[key] = [float(v) for v in vals]
-    shapes = vt.get("shapes", ["sphere"])
-    if not isinstance(shapes, list) or not set(shapes) <= {"sphere", "elliptic"} or not shapes:
-        raise DerivationFileError(f"[validation] shapes = {shapes!r}: a list of 'sphere' and/or 'elliptic'")
-    out["shapes"] = list(shapes)
+    for key, check, default in checks:
+        try:
+            out[key] = check(vt.get(key, default))
+        except (TypeError, ValueError) as exc:
+            raise DerivationFileError(f"[validation] {key} = {vt.get(key)!r}: {exc}") from exc
     return out
 _CONTACT_KEYS = {"delta0", "H", "mu", "nu", "parameters", "force"}
 

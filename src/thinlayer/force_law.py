@@ -43,15 +43,14 @@ evaluated numerically on the spectral contour (:func:`thinlayer.contact_contour`
 from __future__ import annotations
 
 import math
-import numbers
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
-import mpmath
 import sympy as sp
 
 from . import symbols as S
+from .direct import _positive
 from .display import RichDisplay
 from .inner import _vartheta, inner_pressure
 from .kernels import LayerKernel
@@ -211,6 +210,8 @@ class ForceLaw(RichDisplay):
         ``P1 = coefficient * J`` with ``coefficient = (vartheta H/A)(M_1 + D)``, ``D = m_1/2``.
     V, J:
         ``iint_{omega_0} (delta0 - Phi) dx`` and ``oint_{Gamma_0} |grad Phi| ds`` (closed forms) or None.
+    phi_min:
+        The lowest value of Phi (closed forms) or None: contact needs ``delta0 > phi_min``.
     """
 
     layer: LayerKernel
@@ -224,6 +225,7 @@ class ForceLaw(RichDisplay):
     p1_factor: sp.Expr
     V: sp.Expr | None = None
     J: sp.Expr | None = None
+    phi_min: sp.Expr | None = None
 
     equation = "1.8"
 
@@ -383,27 +385,26 @@ class ForceLaw(RichDisplay):
         return f(self.P0), f(self.P1), f(self.area0), f(self.perimeter), f(self.V), f(self.J)
 
     def indentation(self, force: Any, H: Any, mu: Any = 1.0, parameters: dict | None = None,
-                    nu: Any = None) -> float:
+                    nu: Any = None, order: int = 1) -> float:
         """The inverse problem: ``delta0`` with ``P0(delta0) + P1(delta0) = force`` (numbers).
 
-        For the quadratic punch the truncated law is a quadratic in ``D0 = delta0 - min Phi``,
-        solved in closed form (its positive root); otherwise a bracketing root search (Brent) on
-        :meth:`evaluate`.
+        ``order=0`` inverts the leading term ``P0`` alone.  For the quadratic punch the truncated law
+        is a quadratic in ``D0 = delta0 - min Phi``, solved in closed form (its positive root);
+        otherwise a bracketing root search (Brent) on :meth:`evaluate`.
         """
         Pt, HH, mm = (_positive(x, nm) for x, nm in ((force, "force P"), (H, "H"), (mu, "mu")))
         vals = self._numeric_values(parameters or {})
         if self.kind == "quadratic":
             D0 = sp.Symbol("D_0", positive=True)
-            K, b, c = _quadratic_data(self.punch.expr)
-            phimin = c - (b.T * K.inv() * b)[0, 0] / 2
             sub = {S.H: HH, S.mu: mm, **vals}
             if nu is not None:
                 sub[S.nu] = nu
-            law = sp.expand((self.force - Pt).subs(S.delta0, D0 + phimin).subs(sub))
+            target = self.force if order else self.P0
+            law = sp.expand((target - Pt).subs(S.delta0, D0 + self.phi_min).subs(sub))
             a2, a1, a0 = (float(sp.N(law.coeff(D0, k))) for k in (2, 1, 0))
             disc = a1 * a1 - 4 * a2 * a0
             root = (-a1 + math.sqrt(disc)) / (2 * a2) if a1 < 0 else (-2 * a0) / (a1 + math.sqrt(disc))
-            return float(sp.N(phimin.subs(sub))) + root
+            return float(sp.N(self.phi_min.subs(sub))) + root
         Phi = self.punch.expr.subs(vals)
         from .contour import contact_contour
 
@@ -411,7 +412,8 @@ class ForceLaw(RichDisplay):
         phimin = lo_c.min_value
 
         def resid(d):
-            return self.evaluate(d, HH, mm, parameters=vals, nu=nu).force - Pt
+            v = self.evaluate(d, HH, mm, parameters=vals, nu=nu)
+            return (v.force if order else v.P0) - Pt
 
         span = max(abs(phimin), 1.0)
         hi = phimin + span
@@ -431,15 +433,6 @@ class ForceLaw(RichDisplay):
 def _signed(tex: str) -> str:
     """`` + tex`` or `` - rest`` when tex starts with a minus sign."""
     return " - " + tex[1:].lstrip() if tex.startswith("-") else " + " + tex
-
-
-def _positive(value: Any, name: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, (numbers.Real, sp.Number, mpmath.mpf)):
-        raise TypeError(f"{name} must be a positive number, got {value!r} ({type(value).__name__})")
-    v = float(value)
-    if not (math.isfinite(v) and v > 0):
-        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
-    return v
 
 
 # ---------------------------------------------------------------------------------------------
@@ -505,8 +498,9 @@ def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
             J = 4 * sp.pi * k * S.delta0
             perimeter = 2 * sp.pi * a
             kind = "radial-monomial"
+            phimin = sp.Integer(0)
         else:
             return ForceLaw(layer, punch, "contour", None, None, None, None, coefficient, p1_factor)
     P0 = th / (layer.A * S.H) * V
     P1 = coefficient * J
-    return ForceLaw(layer, punch, kind, P0, P1, area0, perimeter, coefficient, p1_factor, V, J)
+    return ForceLaw(layer, punch, kind, P0, P1, area0, perimeter, coefficient, p1_factor, V, J, phimin)

@@ -15,7 +15,6 @@ uniformly (inner terms alone: ``O((H/a)^{2K})`` away from the edge).
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from typing import Any
@@ -23,9 +22,9 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from . import symbols as S
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
-from .force_law import ORDERS, ForceLaw, ForceValues, _positive, force_law
+from .direct import _positive
+from .force_law import ORDERS, ForceLaw, ForceValues, force_law
 from .kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from .punch import Punch, PunchError
 
@@ -293,8 +292,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     if (delta0 is None) == (force is None):
         raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     if force is not None:
-        d0 = (law.indentation(force, HH, mm, nu=nu_value) if order == 1
-              else _leading_indentation(law, force, HH, mm, nu_value))
+        d0 = law.indentation(force, HH, mm, nu=nu_value, order=order)
     else:
         d0 = _positive(delta0, "delta0")
     contour = None
@@ -303,43 +301,19 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
 
         contour = contact_contour(pn.expr, d0)
     else:
-        _check_contact(pn, d0)
+        _check_contact(law, d0)
     from .wiener_hopf import _rational_nu
 
-    h_ex, h_al = _edge_shifts(_rational_nu(layer if isinstance(layer, FrictionlessLayer) else
-                                           sp.nsimplify(layer.nu) if isinstance(layer.nu, mpmath.mpf) else layer.nu))
+    h_ex, h_al = _edge_shifts(_rational_nu(layer))
     vals = law.evaluate(d0, HH, mm, edge_shift=h_ex, contour=contour, nu=nu_value)
     if order == 0:
         vals = ForceValues(vals.delta0, vals.H, vals.P0, 0.0, vals.area0, vals.perimeter, 0.0, vals.V, vals.J)
     return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour)
 
 
-def _check_contact(punch: Punch, d0: float) -> None:
+def _check_contact(law: ForceLaw, d0: float) -> None:
     """For a closed-form punch: delta0 must exceed the lowest point of Phi."""
-    from .force_law import _quadratic_data
-
-    quad = _quadratic_data(punch.expr)
-    if quad is not None:
-        K, b, c = quad
-        phimin = float(c - (b.T * K.inv() * b)[0, 0] / 2)
-    else:
-        phimin = 0.0
+    phimin = float(law.phi_min)
     if d0 <= phimin:
         raise ValueError(f"no contact: delta0 = {d0:g} does not exceed the lowest point of the punch, "
                          f"min Phi = {phimin:g}; take delta0 > {phimin:g}")
-
-
-def _leading_indentation(law: ForceLaw, force: Any, H: float, mu: float, nu: float) -> float:
-    import scipy.optimize as opt
-
-    Pt = _positive(force, "force P")
-
-    def resid(d):
-        return law.evaluate(d, H, mu, nu=nu).P0 - Pt
-
-    hi = 1.0
-    while resid(hi) < 0:
-        hi *= 2
-        if hi > 1e12:
-            raise ValueError(f"no indentation gives the force {Pt}")
-    return float(opt.brentq(resid, hi * 1e-12, hi, rtol=1e-13))
