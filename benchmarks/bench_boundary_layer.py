@@ -22,14 +22,14 @@ def run() -> list[tuple[str, float, str]]:
     import numpy as np
 
     from thinlayer import BondedLayer
-    from thinlayer.boundary_layer import (
+    from thinlayer.asymptotics.boundary_layer import (
         alexandrov_kernel,
         alexandrov_kernel_numpy,
         alexandrov_parameters,
         alexandrov_solution,
         boundary_layer_kernel,
     )
-    from thinlayer.coefficients import kernel_coefficients
+    from thinlayer.layers.coefficients import kernel_coefficients
 
     layer = BondedLayer(0.3)
     sol = alexandrov_solution(layer)
@@ -38,7 +38,7 @@ def run() -> list[tuple[str, float, str]]:
 
     def symbolic():
         kernel_coefficients.cache_clear()
-        from thinlayer.boundary_layer import _parameters_cached
+        from thinlayer.asymptotics.boundary_layer import _parameters_cached
 
         _parameters_cached.cache_clear()
         alexandrov_solution(BondedLayer())

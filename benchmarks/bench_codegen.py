@@ -15,7 +15,7 @@ def _best(fn, repeat=3):
 
 def run() -> list[tuple[str, float, str]]:
     from thinlayer import BondedLayer, Punch, inner_pressure, kernel_coefficients
-    from thinlayer.codegen import LANGUAGES, generate, generate_all
+    from thinlayer.export.codegen import LANGUAGES, generate, generate_all
 
     rows = []
     ip = inner_pressure(BondedLayer(), Punch.elliptic_paraboloid())  # symbolic nu, the paper's punch

@@ -20,7 +20,7 @@ def _best(fn, repeat: int = 5) -> float:
 def run() -> list[tuple[str, float, str]]:
     import sympy as sp
 
-    from thinlayer.contour import contact_contour
+    from thinlayer.asymptotics.contour import contact_contour
     from thinlayer.symbols import x1, x2
 
     ellipse = x1**2 / (2 * 4.0) + x2**2 / (2 * 1.0)

@@ -1,4 +1,4 @@
-"""Timings of the direct axisymmetric contact solver (:mod:`thinlayer.direct`).
+"""Timings of the direct axisymmetric contact solver (:mod:`thinlayer.numerics.direct`).
 
 ``run()`` returns ``(name, seconds, target)`` rows; nothing runs at import.
 """
@@ -16,7 +16,7 @@ def _timed(fn) -> float:
 def run() -> list[tuple[str, float, str]]:
     """Time representative solves (with the default coarse-vs-fine error estimate)."""
     from thinlayer import BondedLayer, HalfSpace
-    from thinlayer.direct import contact_for_radius, solve_axisymmetric, surface_displacement
+    from thinlayer.numerics.direct import contact_for_radius, solve_axisymmetric, surface_displacement
 
     R, H = 1000.0, 1.0
 

@@ -17,8 +17,8 @@ def _best(fn, repeat=3):
 
 def run() -> list[tuple[str, float, str]]:
     from thinlayer import Punch
-    from thinlayer import incompressible as inc
-    from thinlayer.direct import solve_axisymmetric
+    from thinlayer.asymptotics import incompressible as inc
+    from thinlayer.numerics.direct import solve_axisymmetric
 
     rows = []
 

@@ -1,7 +1,7 @@
 """Timings of the direct numerical solvers of :mod:`thinlayer.numerics` (issue 4).
 
 ``run()`` returns ``(name, seconds, target)`` rows; nothing runs at import.  The names carry the
-accuracy reached (against the independent axisymmetric solver of :mod:`thinlayer.direct`).
+accuracy reached (against the independent axisymmetric solver of :mod:`thinlayer.numerics.direct`).
 """
 from __future__ import annotations
 

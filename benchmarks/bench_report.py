@@ -9,7 +9,7 @@ from pathlib import Path
 
 
 def run() -> list[tuple[str, float, str]]:
-    from thinlayer.derivation import load_derivation, report_latex
+    from thinlayer.export.derivation import load_derivation, report_latex
 
     root = Path(__file__).resolve().parents[1] / "derivations"
     rows = []

@@ -1,4 +1,4 @@
-"""Timings of the contact solution (thinlayer.solution, force_law, composite).
+"""Timings of the contact solution (thinlayer.asymptotics.solution, force_law, composite).
 
 ``run()`` returns ``(name, seconds, target)`` rows (best of a few repetitions where the call is
 repeatable); nothing runs at import.  Targets (issue 3): ``solve`` for an elliptic paraboloid
@@ -22,8 +22,8 @@ def run() -> list[tuple[str, float, str]]:
     import numpy as np
 
     from thinlayer import BondedLayer, Punch, solve
-    from thinlayer.coefficients import kernel_coefficients
-    from thinlayer.solution import _edge_shifts
+    from thinlayer.layers.coefficients import kernel_coefficients
+    from thinlayer.asymptotics.solution import _edge_shifts
 
     punch = Punch.elliptic_paraboloid(4, 1)
     rows = []

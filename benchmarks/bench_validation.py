@@ -3,7 +3,7 @@
 ``run()`` returns ``(name, seconds, target)`` rows; nothing runs at import.  The speed rows compare
 the asymptotic force (:func:`thinlayer.solve`, and the lambdified force law (1.8) alone) with the
 direct solvers run at the cheapest resolution that reaches the asymptotic force's accuracy
-(:func:`thinlayer.validation.speed_comparison`, sphere, nu = 0.3).
+(:func:`thinlayer.validation.study.speed_comparison`, sphere, nu = 0.3).
 """
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import time
 
 
 def run() -> list[tuple[str, float, str]]:
-    from thinlayer.validation import speed_comparison, validate_elliptic, validate_sphere
+    from thinlayer.validation.study import speed_comparison, validate_elliptic, validate_sphere
 
     rows: list[tuple[str, float, str]] = []
     validate_sphere(0.3, (0.1,))  # warm the caches (exact boundary-layer table, force law)

@@ -1,4 +1,4 @@
-"""Timings of the Wiener--Hopf edge shift and boundary layer (thinlayer.wiener_hopf).
+"""Timings of the Wiener--Hopf edge shift and boundary layer (thinlayer.asymptotics.wiener_hopf).
 
 ``run()`` returns ``(name, seconds, target)`` rows; nothing runs at import.
 Targets: ``h_exact`` to 8 digits in under 1 s per nu (fresh nu, no cache).
@@ -15,7 +15,7 @@ def _timed(fn, *args, **kw) -> float:
 
 
 def run() -> list[tuple[str, float, str]]:
-    from thinlayer.wiener_hopf import (
+    from thinlayer.asymptotics.wiener_hopf import (
         _layer,
         _solution,
         boundary_layer_exact,

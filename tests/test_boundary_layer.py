@@ -14,7 +14,7 @@ import sympy as sp
 
 from thinlayer import BondedLayer, HalfSpace
 from thinlayer import symbols as S
-from thinlayer.boundary_layer import (
+from thinlayer.asymptotics.boundary_layer import (
     AlexandrovParameters,
     AlexandrovSolution,
     alexandrov_fit,
@@ -177,7 +177,7 @@ def test_parameters_symbolic_series_reproduces_A_and_m1():
 def test_parameters_closed_forms_where_m1_vanishes():
     # m_1 = 0 at nu = 0 and nu = 1/4: 2 m_1 B^2 + 2 A B - 1 = 0 gives B = 1/(2A), C = B/A = 1/(2A^2)
     # (kernel_coefficients' cache confuses BondedLayer(0) with BondedLayer(0.0): start afresh)
-    from thinlayer.coefficients import kernel_coefficients
+    from thinlayer.layers.coefficients import kernel_coefficients
 
     kernel_coefficients.cache_clear()
     p0 = alexandrov_parameters(BondedLayer(0))

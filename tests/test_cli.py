@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from thinlayer.cli import build_parser, main
+from thinlayer.export.cli import build_parser, main
 
 ROOT = Path(__file__).resolve().parents[1]
 

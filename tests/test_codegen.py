@@ -44,7 +44,7 @@ from thinlayer import (
     inner_pressure,
     kernel_coefficients,
 )
-from thinlayer.codegen import LANGUAGES, NameCollisionError, generate, generate_all, identifier
+from thinlayer.export.codegen import LANGUAGES, NameCollisionError, generate, generate_all, identifier
 
 GOLDEN = Path(__file__).parent / "golden"
 UPDATE = os.environ.get("THINLAYER_UPDATE_GOLDEN") == "1"

@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, kernel_coefficients
 from thinlayer import symbols as S
-from thinlayer.coefficients import reciprocal_by_inversion
+from thinlayer.layers.coefficients import reciprocal_by_inversion
 
 
 def sympy_series_coeffs(expr, n):

@@ -21,7 +21,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from thinlayer import symbols as S
-from thinlayer.contour import (
+from thinlayer.asymptotics.contour import (
     ContactContour,
     _as_polynomial,
     _nodes_by_ode,

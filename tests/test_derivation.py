@@ -4,8 +4,8 @@ from pathlib import Path
 
 import pytest
 
-from thinlayer.cli import main
-from thinlayer.derivation import DerivationFileError, load_derivation, report_latex, write_report
+from thinlayer.export.cli import main
+from thinlayer.export.derivation import DerivationFileError, load_derivation, report_latex, write_report
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -36,7 +36,7 @@ def test_cli_and_no_overwrite(tmp_path, capsys):
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="needs pdflatex (installed by .ci/run)")
 @pytest.mark.parametrize("path", sorted((ROOT / "derivations").glob("*.toml")), ids=lambda p: p.stem)
 def test_every_shipped_derivation_compiles_without_overfull_lines(tmp_path, path):
-    from thinlayer.report import overfull_boxes
+    from thinlayer.export.report import overfull_boxes
 
     der = load_derivation(path)
     tex = write_report(der, tmp_path, pdf=True)
@@ -49,14 +49,14 @@ def test_every_shipped_derivation_compiles_without_overfull_lines(tmp_path, path
 
 
 def test_overfull_detector():
-    from thinlayer.report import overfull_boxes
+    from thinlayer.export.report import overfull_boxes
 
     log = "Overfull \\hbox (24.3pt too wide) detected at line 46\nOverfull \\hbox (0.2pt too wide) in paragraph"
     assert overfull_boxes(log) == ["Overfull \\hbox (24.3pt too wide) detected at line 46"]
 
 
 def test_failed_latex_leaves_no_files(tmp_path, monkeypatch):
-    import thinlayer.derivation as D
+    import thinlayer.export.derivation as D
 
     der = load_derivation(ROOT / "derivations" / "quartic_punch.toml")
 

@@ -1,4 +1,4 @@
-"""Tests of the direct numerical contact solver :mod:`thinlayer.direct`.
+"""Tests of the direct numerical contact solver :mod:`thinlayer.numerics.direct`.
 
 The expected values come from routes independent of the solver:
 
@@ -48,7 +48,7 @@ import sympy as sp
 from scipy import integrate
 
 from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace
-from thinlayer.direct import (
+from thinlayer.numerics.direct import (
     AxisymmetricContact,
     _basis_transform,
     contact_for_radius,

@@ -1,4 +1,4 @@
-"""Tests of the incompressible bonded layer (nu = 1/2) and the two-term model (:mod:`thinlayer.incompressible`).
+"""Tests of the incompressible bonded layer (nu = 1/2) and the two-term model (:mod:`thinlayer.asymptotics.incompressible`).
 
 Every formula is checked by a route independent of the one the module uses:
 
@@ -9,7 +9,7 @@ Every formula is checked by a route independent of the one the module uses:
 * the ellipse (I.6)-(I.8) by substitution into (I.3)-(I.4), by the harmonic-moment identities (I.5)
   (a derivation that does not use the ansatz), by the force identity P = -(1/4) int f |x|^2, and by the
   grid solver; the sphere against the literature (a^2 = 4 R delta0, P = 2 pi mu R^2 delta0^3/H^3);
-* the models against the direct solver :func:`thinlayer.direct.solve_axisymmetric`, which knows only L(u).
+* the models against the direct solver :func:`thinlayer.numerics.direct.solve_axisymmetric`, which knows only L(u).
 
 Expected numbers are either closed forms derived here or literature values, never the module's output.
 """
@@ -25,8 +25,8 @@ import sympy as sp
 
 from thinlayer import BondedLayer, FrictionlessLayer, IncompressibleLayerError, Punch, PunchError
 from thinlayer import symbols as S
-from thinlayer.direct import solve_axisymmetric
-from thinlayer.incompressible import (
+from thinlayer.numerics.direct import solve_axisymmetric
+from thinlayer.asymptotics.incompressible import (
     IncompressibleLayer,
     _psi_chi,
     c_sym,
@@ -606,7 +606,7 @@ def test_two_term_limits():
 
 
 def test_two_term_edge_layer_reproduces_the_boundary_layer_force_defect():
-    from thinlayer.force_law import boundary_layer_force_defect
+    from thinlayer.asymptotics.force_law import boundary_layer_force_defect
 
     e = two_term_edge_layer()
     ref = boundary_layer_force_defect()  # from Alexandrov's transform with (3.21): m_1/2
@@ -641,7 +641,7 @@ def test_two_term_force_keeps_the_compressible_first_correction():
 
 def test_edge_shift_identity_with_the_paper_edge_shift():
     # (I.12) = h*(nu) + sqrt(m_1): log K splits into the paper's factor and log(1 + m_1 t^2)
-    from thinlayer.wiener_hopf import edge_shift_exact
+    from thinlayer.asymptotics.wiener_hopf import edge_shift_exact
 
     for nu in ("3/10", "9/20"):
         m1 = float(BondedLayer(nu).m(1))

@@ -3,7 +3,7 @@
 Every expected value comes from a route independent of the solver:
 
 * Hertz's closed forms for the half-space (L = 1), circular and elliptic (derivations below);
-* the independent axisymmetric spectral solver :func:`thinlayer.direct.solve_axisymmetric`
+* the independent axisymmetric spectral solver :func:`thinlayer.numerics.direct.solve_axisymmetric`
   (Galerkin in a Jacobi basis, Hankel-space kernel: it shares no code with the FFT solver
   except the kernel evaluation ``L_numeric``);
 * the thin-layer force law ``P = (vartheta/(A H)) [iint_O (delta0 - Phi) - (m_1 H^2/2) iint_O Laplacian(Phi)]``
@@ -44,7 +44,8 @@ import pytest
 import sympy as sp
 from scipy import integrate, optimize, special
 
-from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace, Punch, direct
+from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace, Punch
+from thinlayer.numerics import direct
 from thinlayer import symbols as S
 from thinlayer.numerics import (
     AxisymmetricPunchContact,
@@ -283,7 +284,7 @@ def test_discrete_contact_conditions_by_explicit_summation():
 
 # --------------------------------------------------------------------------- layers against the axisymmetric solver
 def test_thin_layer_against_direct_solver():
-    """Sphere on a thin bonded layer, H/a ~ 0.1, nu = 0.3, n = 256 (Delta = H/10) vs thinlayer.direct.
+    """Sphere on a thin bonded layer, H/a ~ 0.1, nu = 0.3, n = 256 (Delta = H/10) vs thinlayer.numerics.direct.
 
     The 2D error is set by the boundary layer of width ~H at the edge, resolved by 10 cells:
     O((Delta/H)^2) = 1e-2 in a strip carrying O(H/a) = 0.1 of the force, so ~1e-3; measured 2e-5 for P
@@ -469,7 +470,7 @@ def test_axisymmetric_wrapper_matches_direct_solver():
     assert res.punch == Punch.paraboloid(R=R)
     with pytest.raises(FrozenInstanceError):
         res.radius = 1.0
-    # the result works with the check route of thinlayer.direct
+    # the result works with the check route of thinlayer.numerics.direct
     assert direct.surface_displacement(res, [0.0])[0] == pytest.approx(delta0, rel=1e-8)
 
 

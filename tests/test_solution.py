@@ -2,7 +2,7 @@
 
 Independent routes: the closed forms are checked against numerical integrals over the spectral
 contour; the laws and the composite pressure against the direct numerical solution of the full
-contact problem (:mod:`thinlayer.direct`, which uses no thin-layer series); the force defect of
+contact problem (:mod:`thinlayer.numerics.direct`, which uses no thin-layer series); the force defect of
 the boundary layer against quadrature of the Wiener--Hopf solution.
 """
 from __future__ import annotations
@@ -16,10 +16,10 @@ import sympy as sp
 
 from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, Punch, PunchError, solve_axisymmetric
 from thinlayer import symbols as S
-from thinlayer.composite import composite_pressure
-from thinlayer.force_law import boundary_layer_force_defect, force_law, h_star
-from thinlayer.solution import solve
-from thinlayer.wiener_hopf import boundary_layer_exact
+from thinlayer.asymptotics.composite import composite_pressure
+from thinlayer.asymptotics.force_law import boundary_layer_force_defect, force_law, h_star
+from thinlayer.asymptotics.solution import solve
+from thinlayer.asymptotics.wiener_hopf import boundary_layer_exact
 
 r = sp.Symbol("r", nonnegative=True)
 R1, R2 = sp.symbols("R_1 R_2", positive=True)
@@ -71,7 +71,7 @@ def test_closed_forms_equal_contour_integrals(nu):
         law = force_law(layer, punch)
         assert law.kind == kind
         closed = law.evaluate(0.3, 0.02, 1.7, edge_shift=0.1)
-        from thinlayer.contour import contact_contour
+        from thinlayer.asymptotics.contour import contact_contour
 
         num = law.evaluate(0.3, 0.02, 1.7, edge_shift=0.1, contour=contact_contour(punch.expr, 0.3))
         generic = type(law)(law.layer, law.punch, "contour", None, None, None, None, law.coefficient, law.p1_factor)  # numeric route
@@ -358,7 +358,7 @@ def test_composite_pressure_negative_edge_shift_against_direct_solution():
 
 # ------------------------------------------------------------------------------ frictionless base
 def test_frictionless_edge_shift_and_boundary_layer():
-    from thinlayer.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
+    from thinlayer.asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
     layer = FrictionlessLayer()
     hs = [edge_shift_exact(layer, normaliser=n) for n in ("alexandrov", "sqrt", "tanh")]

@@ -17,7 +17,7 @@ import pytest
 
 from thinlayer import BondedLayer, FrictionlessLayer, Punch, solve
 from thinlayer.numerics import solve_2d, solve_axisymmetric
-from thinlayer.validation import (
+from thinlayer.validation.study import (
     CLAIMED_ORDERS,
     StudyEvent,
     ValidationStudy,
@@ -226,7 +226,7 @@ def test_progress_bar_with_tqdm_on_a_terminal(monkeypatch):
     import io
     import types
 
-    from thinlayer.validation import _Progress
+    from thinlayer.validation.study import _Progress
 
     calls = []
 

@@ -18,7 +18,7 @@ import sympy as sp
 from scipy import integrate, special
 
 from thinlayer import BondedLayer
-from thinlayer.wiener_hopf import (
+from thinlayer.asymptotics.wiener_hopf import (
     boundary_kernel_N,
     boundary_layer_exact,
     edge_shift,

@@ -88,3 +88,20 @@ def taylor_cosh(scale: int, n: int, const: Callable[[int, int], Any]) -> list[An
             f *= (2 * k - 1) * (2 * k)
         out.append(const(scale ** (2 * k), f))
     return out
+
+
+def bonded_series_parts(k: Any, n: int, const: Callable[[int, int], Any]) -> tuple[list[Any], list[Any]]:
+    """Taylor coefficients (k <= n) of ``N, D`` in ``L(s)/s = N(s^2)/D(s^2)`` for the kernel (2.3).
+
+    ``N = (2 kappa sinh 2s - 4s)/s``, ``D = 2 kappa cosh 2s + 1 + kappa^2 + 4 s^2``; ``k`` is kappa in
+    the arithmetic domain of ``const``.
+    """
+    sh = taylor_sinh(2, n, const)  # sinh(2s)/s
+    ch = taylor_cosh(2, n, const)  # cosh(2s)
+    num = [2 * k * c for c in sh]
+    num[0] = num[0] - const(4, 1)
+    den = [2 * k * c for c in ch]
+    den[0] = den[0] + 1 + k * k
+    if n >= 1:
+        den[1] = den[1] + const(4, 1)
+    return num, den

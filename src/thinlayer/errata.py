@@ -58,7 +58,7 @@ def _series_F(nu, order: int) -> sp.Expr:
 
 
 def _check_2_21() -> bool:
-    from .kernels import BondedLayer
+    from .layers.kernels import BondedLayer
 
     nu = sp.Rational(3, 10)
     layer = BondedLayer(nu)
@@ -82,8 +82,8 @@ def _check_2_21() -> bool:
 
 
 def _inner_generic_p1():
-    from .inner import inner_pressure
-    from .kernels import GenericLayer
+    from .asymptotics.inner import inner_pressure
+    from .layers.kernels import GenericLayer
     from .punch import Punch
 
     ip = inner_pressure(GenericLayer(), Punch.elliptic_paraboloid())
@@ -98,8 +98,8 @@ def _printed_p1() -> sp.Expr:
 
 def _residual_order4(p0: sp.Expr, p1: sp.Expr) -> sp.Expr:
     """Coefficient of Lambda^{-4} in  [sum_n (-1)^n pi^2 A m_n Lambda^{-2n-2} Delta^n](p0 + Lambda^{-2} p1) - Lambda^{-2} phi^*  (2.24)."""
-    from .kernels import GenericLayer
-    from .moments import moment_expansion
+    from .layers.kernels import GenericLayer
+    from .asymptotics.moment_expansion import moment_expansion
 
     me = moment_expansion(GenericLayer(), 2)
     lhs = me.apply(p0 + S.Lambda**-2 * p1)
@@ -142,7 +142,7 @@ def _check_3_1() -> bool:
 
 def _check_3_21_m1() -> bool:
     """Literal reading lim L''(s)/s gives 3 m_1; the reading (L(s)/s)'' at 0 gives m_1."""
-    from .kernels import BondedLayer
+    from .layers.kernels import BondedLayer
 
     nu = sp.Rational(3, 10)
     k = 3 - 4 * nu
@@ -199,7 +199,7 @@ def _check_2_10() -> bool:
 
 def _check_2_17() -> bool:
     """With xi_j^{2j} every moment would equal mu_{2,4}; (2.15) needs xi_j^{alpha_j}."""
-    from .kernels import BondedLayer
+    from .layers.kernels import BondedLayer
 
     layer = BondedLayer(sp.Rational(3, 10))
     return layer.moment(2, 0) != layer.moment(2, 4) and layer.moment(0, 0) != layer.moment(2, 4)
@@ -207,8 +207,8 @@ def _check_2_17() -> bool:
 
 def _check_4_1() -> bool:
     """(4.1) holds with phi^* of (2.25) in the place of the undefined f^*: closed form == recursion (2.28)."""
-    from .inner import inner_pressure
-    from .kernels import GenericLayer
+    from .asymptotics.inner import inner_pressure
+    from .layers.kernels import GenericLayer
     from .punch import Punch
 
     p = Punch(S.x1**4 + S.x1 * S.x2**3 + S.x2**2)

@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import symbols as S
-from .display import RichDisplay
-from .moments import laplacian
+from .display import RichDisplay, fmt
+from .symbols import laplacian
 
 
 class PunchError(ValueError):
@@ -169,6 +169,12 @@ class Punch(RichDisplay):
 
         args = (S.x1, S.x2, *self.parameters) if args is None else args
         return checked_lambdify(args, self.expr, backend)
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        pars = ", ".join(q.name for q in self.parameters) or "none"
+        return [f"Punch ({self.name}): Phi(x_1, x_2) = {fmt(self.expr)}   (1.1)",
+                f"  degree {self.degree}, parameters: {pars}"]
 
 
 # re-exported helper, used by the inner expansion

@@ -48,3 +48,10 @@ VARTHETA = mu / (1 - nu)
 def starred(sym: sp.Symbol) -> sp.Symbol:
     """The scaled ("starred") counterpart of a punch parameter, as in (1.2): ``R_1 -> R_1^*``."""
     return sp.Symbol(sym.name + "^*", **sym.assumptions0)
+
+
+def laplacian(f: sp.Expr, v1: sp.Symbol, v2: sp.Symbol, power: int = 1) -> sp.Expr:
+    """``Delta^power f`` in the variables (v1, v2)."""
+    for _ in range(power):
+        f = sp.diff(f, v1, 2) + sp.diff(f, v2, 2)
+    return f

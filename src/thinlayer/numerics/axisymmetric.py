@@ -1,4 +1,4 @@
-"""Axisymmetric punches: the spectral solver :func:`thinlayer.direct.solve_axisymmetric` driven by a Punch.
+"""Axisymmetric punches: the spectral solver :func:`thinlayer.numerics.direct.solve_axisymmetric` driven by a Punch.
 
 A :class:`~thinlayer.punch.Punch` is axisymmetric when ``Phi(x1, x2)`` depends on ``x1^2 + x2^2``
 only, i.e. when its angular derivative vanishes identically::
@@ -6,7 +6,7 @@ only, i.e. when its angular derivative vanishes identically::
     d Phi / d theta = x1 dPhi/dx2 - x2 dPhi/dx1 = 0.
 
 This is checked exactly on the polynomial (sympy), and the radial profile ``Phi(r) = Phi(r, 0)``
-is passed to the direct solver (spectral Galerkin method, see :mod:`thinlayer.direct`).
+is passed to the direct solver (spectral Galerkin method, see :mod:`thinlayer.numerics.direct`).
 """
 from __future__ import annotations
 
@@ -16,10 +16,10 @@ from typing import Any
 
 import sympy as sp
 
-from .. import direct as _direct
+from . import direct as _direct
 from .. import symbols as S
-from ..direct import AxisymmetricContact
-from ..kernels import HalfSpace, LayerKernel
+from .direct import AxisymmetricContact
+from ..layers.kernels import HalfSpace, LayerKernel
 from ..punch import Punch
 
 __all__ = ["AxisymmetricPunchContact", "radial_profile", "solve_axisymmetric"]
@@ -30,7 +30,7 @@ r = sp.Symbol("r", nonnegative=True)
 
 @dataclass(frozen=True)
 class AxisymmetricPunchContact(AxisymmetricContact):
-    """:class:`thinlayer.direct.AxisymmetricContact` of a :class:`~thinlayer.punch.Punch`.
+    """:class:`thinlayer.numerics.direct.AxisymmetricContact` of a :class:`~thinlayer.punch.Punch`.
 
     Adds the punch and the names shared with :class:`~thinlayer.numerics.Contact2D`:
     ``contact_radius`` (= ``radius``, c) and ``contact_area`` (``pi c^2``).
@@ -93,7 +93,7 @@ def radial_profile(punch: Any) -> sp.Expr:
 
 def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0,
                        **kw: Any) -> AxisymmetricPunchContact:
-    """Direct solution of (1.5)-(1.8) for an axisymmetric punch via :func:`thinlayer.direct.solve_axisymmetric`.
+    """Direct solution of (1.5)-(1.8) for an axisymmetric punch via :func:`thinlayer.numerics.direct.solve_axisymmetric`.
 
     Parameters
     ----------

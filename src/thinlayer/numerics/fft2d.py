@@ -12,7 +12,7 @@ with ``p_hat(alpha) = iint p e^{i alpha.x} dx`` (2.2) and ``F^{-1} f = (2 pi)^{-
 (The printed (2.1) has a leading minus sign; with p >= 0 the kernel must be positive --
 see :mod:`thinlayer.errata`.  For L = 1 this is Boussinesq's
 ``u3 = (1 - nu)/(2 pi mu) iint p(y)/|x - y| dy``.)  No asymptotic expansion is used: this is an
-independent check of the thin-layer results, like :mod:`thinlayer.direct` for axisymmetric punches.
+independent check of the thin-layer results, like :mod:`thinlayer.numerics.direct` for axisymmetric punches.
 
 Influence coefficients
 ----------------------
@@ -85,7 +85,7 @@ Accuracy and limitations
   c = 0.03-0.08, observed order 2.0-2.2; the contour vertices lie within 0.15 Delta of Hertz's
   circle/ellipse (rms 0.05 Delta), the equivalent contact radius within 0.02 Delta; the staircase
   area ``contact_area_cells`` is only first-order accurate.  On a thin layer (H/a = 0.1, Delta = H/10)
-  force and radius agree with :mod:`thinlayer.direct` to 2e-5 and 1e-4.
+  force and radius agree with :mod:`thinlayer.numerics.direct` to 2e-5 and 1e-4.
 * Only contact inside the computational square is modelled: the contact must stay two cells
   away from its boundary (checked, with an error); contact regions disconnected from the one
   around the tip and lying outside the square are not seen.  The default square is built from
@@ -114,8 +114,8 @@ import sympy as sp
 from scipy import interpolate, optimize, special
 
 from .. import symbols as S
-from ..direct import _nu_and_layer, _positive
-from ..kernels import HalfSpace, LayerKernel
+from .direct import _nu_and_layer, _positive
+from ..layers.kernels import HalfSpace, LayerKernel
 from ..punch import Punch
 
 __all__ = [
@@ -127,7 +127,7 @@ __all__ = [
     "solve_2d",
 ]
 
-_U_MAX = 22.0  # L(u) - 1 < 1e-16 beyond (as in thinlayer.direct)
+_U_MAX = 22.0  # L(u) - 1 < 1e-16 beyond (as in thinlayer.numerics.direct)
 _R_CUT = 50.0  # in units of H: the layer kernel 1/(2 pi r) + g_c(r) is below 1e-15/H beyond
 _TABLE_STEP = 1.0 / 40.0  # spacing of the g_c table, in units of H
 _CELL_GAUSS = 4  # Gauss-Legendre points per direction for the cell integral of g_c

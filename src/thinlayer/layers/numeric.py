@@ -1,6 +1,6 @@
 """Numerically stable evaluation of layer kernels L(u) and L(u)/u in numpy and mpmath.
 
-Kept apart from the symbolic core (:mod:`thinlayer.kernels`), which dispatches here.
+Kept apart from the symbolic core (:mod:`thinlayer.layers.kernels`), which dispatches here.
 
 Bonded layer (2.3).  Dividing numerator and denominator by ``kappa e^{2u}`` and writing
 ``E = e^{-2u}``, ``S(x) = sinh x - x``::

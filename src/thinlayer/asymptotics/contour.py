@@ -65,8 +65,8 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
-from . import symbols as S
-from .display import RichDisplay
+from .. import symbols as S
+from ..display import RichDisplay, fmt
 
 __all__ = ["ContactContour", "ContourAccuracy", "EllipseContour", "contact_contour", "ellipse_contour"]
 
@@ -989,6 +989,17 @@ class ContactContour(RichDisplay):
             rf",\quad |\Gamma_0| = {self.perimeter:.12g},\quad |\omega_0| = {self.area:.12g}"
         )
 
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        acc = self.accuracy
+        return [
+            f"ContactContour: Gamma_0 = {{{fmt(self.Phi)} = {fmt(self.delta0)}}}   (3.3)-(3.14)",
+            f"  perimeter |Gamma_0| = {fmt(self.perimeter)}, area |omega_0| = {fmt(self.area)}",
+            f"  centroid ({fmt(self.centroid[0])}, {fmt(self.centroid[1])}), {len(self.nodes)} nodes",
+            (f"  accuracy: distance from Gamma_0 {acc.level_distance:.1e}, arc-length speed {acc.speed_error:.1e}, "
+            f"turning number {acc.turning_number:.12g}"),
+        ]
+
 
 # ---------------------------------------------------------------------------------------------
 # the stage function
@@ -1124,6 +1135,16 @@ class EllipseContour(RichDisplay):
             rf"a = {sp.latex(self.a)},\quad b = {sp.latex(self.b)},\quad "
             rf"e^2 = {sp.latex(self.e2)} \tag{{3.1}}"
         )
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return [
+            "EllipseContour: x_1**2/a**2 + x_2**2/b**2 = 1   (3.1)",
+            f"  a   = {fmt(self.a)}",
+            f"  b   = {fmt(self.b)}",
+            f"  e^2 = {fmt(self.e2)}",
+            f"  area |omega_0| = {fmt(self.area)}, perimeter |Gamma_0| = {fmt(self.perimeter)}",
+        ]
 
 
 def ellipse_contour(R1=None, R2=None, delta0=None) -> EllipseContour:

@@ -21,15 +21,23 @@ import numbers
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any
+from typing import Any, ClassVar
 
 import mpmath
+import numpy as np
 import sympy as sp
 
-from . import kernel_numeric
-from . import symbols as S
-from ._series import taylor_cosh, taylor_sinh
-from .display import RichDisplay
+from . import numeric as kernel_numeric
+from .. import symbols as S
+from .._checks import check_order as _check_order
+from .._checks import parse_nu
+from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
+from .coefficients import IncompressibleCoefficients, incompressible_coefficients, kernel_coefficients
+from .moments import kernel_moment
+from ..display import RichDisplay, fmt
+
+
+HALF = sp.Rational(1, 2)
 
 
 class IncompressibleLayerError(ValueError):
@@ -37,35 +45,23 @@ class IncompressibleLayerError(ValueError):
 
 
 def _as_nu(nu: Any) -> sp.Basic | mpmath.mpf:
-    """Validate and normalise a Poisson ratio: a Symbol, an exact Rational or an mpmath float."""
+    """Validate and normalise a Poisson ratio (:func:`thinlayer._checks.parse_nu`); nu = 1/2 has its own layer."""
     if nu is None:
         return S.nu
-    if isinstance(nu, sp.Symbol):
-        return nu
-    if isinstance(nu, sp.Basic) and not nu.is_number:
-        raise TypeError(f"nu must be None, a Symbol or a number, got the expression {nu!r}")
-    if isinstance(nu, bool):
-        raise TypeError("nu must be a number, got a bool")
-    if isinstance(nu, (sp.Rational, numbers.Integral, Fraction)):
-        val: Any = sp.Rational(nu)
-    elif isinstance(nu, str):
-        try:
-            val = sp.Rational(nu)
-        except (TypeError, ValueError, sp.SympifyError) as exc:
-            raise ValueError(f"nu={nu!r} is not a number; give e.g. '3/10', 0.3 or None") from exc
-    elif isinstance(nu, (float, sp.Float, mpmath.mpf, numbers.Real)):
-        val = mpmath.mpf(nu if not isinstance(nu, sp.Float) else str(nu))
-    else:
-        raise TypeError(f"nu must be None, a Symbol, a rational or a float, got {type(nu).__name__}")
-    if val == sp.Rational(1, 2) or val == mpmath.mpf(0.5):
-        raise IncompressibleLayerError(
-            "nu = 1/2 (incompressible) makes A = 4(kappa-1)/(kappa+1)^2 vanish in (2.4): the "
-            "compressible thin-layer expansion does not exist; the incompressible-layer model is "
-            "not yet available in thinlayer. Use -1 < nu < 1/2."
-        )
-    if not (-1 < val < sp.Rational(1, 2) if isinstance(val, sp.Rational) else -1 < val < 0.5):
-        raise ValueError(f"Poisson ratio nu={nu!r} is outside the admissible range -1 < nu < 1/2")
-    return val
+    try:
+        return parse_nu(nu)
+    except ValueError:
+        try:  # the one value the range check refuses that has a layer of its own
+            half = parse_nu(nu, upper_closed=True) == HALF
+        except ValueError:
+            half = False
+        if not half:
+            raise
+    raise IncompressibleLayerError(
+        "nu = 1/2 (incompressible) makes A = 4(kappa-1)/(kappa+1)^2 vanish in (2.4): the "
+        "compressible thin-layer expansion does not exist; use IncompressibleLayer() (the incompressible "
+        "model, thinlayer.asymptotics.incompressible) or -1 < nu < 1/2."
+    )
 
 
 class LayerKernel(RichDisplay, ABC):
@@ -84,7 +80,7 @@ class LayerKernel(RichDisplay, ABC):
         """Taylor coefficients ``N_k, D_k`` (k <= n) with ``L(s)/s = N(s^2)/D(s^2)``.
 
         ``dom`` supplies ``const(p, q)`` (the rational p/q in the domain) and ``kappa``
-        (the layer's kappa in the domain) -- see :mod:`thinlayer.coefficients`.
+        (the layer's kappa in the domain) -- see :mod:`thinlayer.layers.coefficients`.
         """
 
     @abstractmethod
@@ -98,13 +94,57 @@ class LayerKernel(RichDisplay, ABC):
 
     @property
     def is_numeric(self) -> bool:
+        """Whether the coefficients are numbers (no free parameter)."""
         return self.parameter is None
+
+    # ---- what callers ask of a layer (instead of checking its type) ------------------------
+    #: whether the layer has a finite thickness H (False for the half-space)
+    has_thickness: ClassVar[bool] = True
+    #: whether ``L(s)/s = A(1 + m_1 s^2 + ...)`` with ``A > 0`` exists (2.20): the compressible expansion
+    has_compressible_expansion: ClassVar[bool] = True
+    #: whether the Maclaurin data are plain symbols (``A``, ``m_n``) rather than derived from ``L(u)``
+    symbolic_coefficients: ClassVar[bool] = False
+    #: the base under the layer: ``"bonded"``, ``"frictionless"`` or None (no base)
+    base: ClassVar[str | None] = None
+
+    @property
+    def numeric_nu(self) -> float | None:
+        """The Poisson ratio the layer fixes, as a float; None when it fixes none (symbolic or nu-free)."""
+        return None
+
+    @property
+    def vartheta(self) -> sp.Expr:
+        """``vartheta = mu/(1 - nu)`` (2.1), with the layer's nu when it fixes one."""
+        return S.VARTHETA
+
+    @property
+    def edge_shift_key(self) -> Any:
+        """What the edge shift h* (3.18), (3.25) of this layer depends on: its exact nu, or the base name."""
+        raise ValueError(f"the edge shift needs a numeric layer with a finite thickness, got {self!r}")
+
+    def taylor_coefficients(self, order: int) -> tuple:
+        """``c_n`` of ``L(s)/s = sum_n c_n s^{2n}`` (n <= order): ``c_n = A m_n`` (2.20), or (I.1) at nu = 1/2.
+
+        The weights of the operator series (2.22)-(2.23) are ``(-1)^n pi^2 c_n``.
+        """
+        co = self.coefficients(order)
+        return tuple(co.A_expr * co.m_expr(n) for n in range(order + 1))
+
+    def latex(self) -> str:
+        """The kernel as a tagged LaTeX line (2.3), or the coefficient form (2.20) when L(u) is unknown."""
+        name = r"\text{" + str(self) + r"}:\quad "
+        try:
+            L = self.L()
+        except ValueError:  # known only through its coefficients
+            return name + r"\frac{\mathcal{L}(s)}{s} = \mathcal{A}\left(1 + m_1 s^2 + m_2 s^4 + \dots\right) \tag{2.20}"
+        if L.has(sp.Float):  # a float nu: kappa to 15 digits, not the layer's working precision
+            L = L.evalf(15)
+        tag = rf" \tag{{{self.equation}}}" if self.equation else ""
+        return name + rf"\mathcal{{L}}(u) = {sp.latex(L)}" + tag
 
     # ---- stages of the paper (delegated) ----------------------------------------------
     def coefficients(self, order: int):
         """A, m_1..m_order (2.20) and M_1..M_order (4.2): :func:`thinlayer.kernel_coefficients`."""
-        from .coefficients import kernel_coefficients
-
         return kernel_coefficients(self, order)
 
     @property
@@ -122,22 +162,12 @@ class LayerKernel(RichDisplay, ABC):
 
     def moment(self, a1: int, a2: int):
         """Kernel moment mu_{a1 a2} (2.15), derived form of (2.19)/(2.21)."""
-        from .moments import kernel_moment
-
         return kernel_moment(self, a1, a2)
 
     def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
         """Maclaurin polynomial of L(u) through u^(2*order+1): ``A u (1 + m_1 u^2 + ...)`` (2.4), (2.20)."""
         c = self.coefficients(order)
         return sp.Add(*[c.A_expr * c.m_expr(k) * u ** (2 * k + 1) for k in range(order + 1)])
-
-
-def _check_order(n: Any, name: str) -> int:
-    if isinstance(n, bool) or not isinstance(n, numbers.Integral):
-        raise TypeError(f"{name} must be a non-negative integer, got {n!r}")
-    if n < 0:
-        raise ValueError(f"{name} must be a non-negative integer, got {n}")
-    return int(n)
 
 
 @dataclass(frozen=True, eq=True)
@@ -214,10 +244,25 @@ class BondedLayer(LayerKernel):
             return (3 - S.kappa) / 4
         return sp.Float(self.nu, self.dps) if isinstance(self.nu, mpmath.mpf) else self.nu
 
+    base: ClassVar[str | None] = "bonded"
+
     @property
     def vartheta(self) -> sp.Expr:
         """vartheta = mu/(1 - nu) (2.1)."""
         return S.mu / (1 - self.nu_expr)
+
+    @property
+    def numeric_nu(self) -> float | None:
+        """nu as a float, None for a symbolic layer."""
+        return None if self.parameter is not None else float(self.nu)
+
+    @property
+    def edge_shift_key(self) -> sp.Rational:
+        """The exact rational nu (a float nu is taken as its exact binary value)."""
+        if self.parameter is not None:
+            raise ValueError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
+                             "(give BondedLayer(0.3), BondedLayer('3/10') or a number)")
+        return parse_nu(self.nu, floats="exact")
 
     def _kappa_expr(self) -> sp.Expr:
         k = self.kappa
@@ -237,19 +282,10 @@ class BondedLayer(LayerKernel):
         return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
-        k = dom.kappa
-        sh = taylor_sinh(2, n, dom.const)  # sinh(2s)/s
-        ch = taylor_cosh(2, n, dom.const)  # cosh(2s)
-        num = [2 * k * c for c in sh]
-        num[0] = num[0] - dom.const(4, 1)
-        den = [2 * k * c for c in ch]
-        den[0] = den[0] + 1 + k * k
-        if n >= 1:
-            den[1] = den[1] + dom.const(4, 1)
-        return num, den
+        return bonded_series_parts(dom.kappa, n, dom.const)
 
     def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
-        """Stable L(u) (or L(u)/u): see :mod:`thinlayer.kernel_numeric`.  Needs a numeric nu."""
+        """Stable L(u) (or L(u)/u): see :mod:`thinlayer.layers.numeric`.  Needs a numeric nu."""
         if self.parameter is not None:
             raise ValueError("numeric evaluation needs a numeric nu; build BondedLayer(nu=0.3) or similar")
         if backend == "numpy":
@@ -263,6 +299,12 @@ class BondedLayer(LayerKernel):
     def __repr__(self) -> str:
         return f"BondedLayer(nu={self.nu})"
 
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        if self.parameter is not None:
+            return [f"BondedLayer({self.parameter_name})"]
+        return [f"BondedLayer(nu={fmt(self.nu, 15)})"]
+
 
 @dataclass(frozen=True)
 class FrictionlessLayer(LayerKernel):
@@ -273,6 +315,12 @@ class FrictionlessLayer(LayerKernel):
 
     name: str = field(default="frictionless", init=False)
     equation: str = field(default="", init=False)
+    base: ClassVar[str | None] = "frictionless"
+
+    @property
+    def edge_shift_key(self) -> str:
+        """``"frictionless"``: the kernel, hence h*, does not depend on nu."""
+        return "frictionless"
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
         return (sp.cosh(2 * u) - 1) / (sp.sinh(2 * u) + 2 * u)
@@ -291,6 +339,10 @@ class FrictionlessLayer(LayerKernel):
             return kernel_numeric.frictionless_mpmath(u, over_u)
         raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return [f"{type(self).__name__}()"]
+
 
 @dataclass(frozen=True)
 class HalfSpace(LayerKernel):
@@ -301,6 +353,8 @@ class HalfSpace(LayerKernel):
 
     name: str = field(default="half-space", init=False)
     equation: str = field(default="2.4", init=False)
+    has_thickness: ClassVar[bool] = False
+    has_compressible_expansion: ClassVar[bool] = False
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
         return sp.Integer(1)
@@ -312,14 +366,16 @@ class HalfSpace(LayerKernel):
         )
 
     def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
-        import numpy as np
-
         if backend == "numpy":
             u = np.asarray(u, dtype=float)
             return 1.0 / u if over_u else np.ones_like(u)
         if backend == "mpmath":
             return 1 / mpmath.mpf(u) if over_u else mpmath.mpf(1)
         raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return [f"{type(self).__name__}()"]
 
 
 @dataclass(frozen=True)
@@ -332,6 +388,12 @@ class GenericLayer(LayerKernel):
 
     name: str = field(default="generic", init=False)
     equation: str = field(default="2.20", init=False)
+    symbolic_coefficients: ClassVar[bool] = True
+
+    @property
+    def vartheta(self) -> sp.Expr:
+        """The plain symbol vartheta (2.1): a generic layer fixes no nu."""
+        return S.vartheta
 
     A_symbol = sp.Symbol(r"\mathcal{A}", positive=True)
 
@@ -351,3 +413,130 @@ class GenericLayer(LayerKernel):
     @property
     def parameter(self) -> sp.Symbol | None:
         return self.A_symbol
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return ["GenericLayer(A, m_1, m_2, ...)"]
+
+
+def _kernel_23(kappa: sp.Expr, u: sp.Expr) -> sp.Expr:
+    """The bonded-layer kernel (2.3) for a given kappa."""
+    return (2 * kappa * sp.sinh(2 * u) - 4 * u) / (2 * kappa * sp.cosh(2 * u) + 1 + kappa**2 + 4 * u**2)
+
+
+@dataclass(frozen=True)
+class IncompressibleLayer(LayerKernel):
+    """The incompressible layer bonded to a rigid base: kernel (2.3) at ``nu = 1/2``, ``kappa = 1``::
+
+        L(u) = (2 sinh 2u - 4u)/(2 cosh 2u + 2 + 4u^2),   vartheta = mu/(1 - nu) = 2 mu.
+
+    ``A = lim L(s)/s = 0`` (2.4), so the compressible coefficients ``m_n`` of (2.20) do not exist
+    (:meth:`coefficients`, :meth:`m`, :meth:`M` raise :class:`~thinlayer.IncompressibleLayerError`);
+    the small-s data are ``L(s)/s = c_1 s^2 + c_2 s^4 + ...`` (:func:`incompressible_coefficients`).
+    Every stage that needs only ``L(u)`` works, e.g. :func:`thinlayer.numerics.direct.solve_axisymmetric`.
+
+    Examples
+    --------
+    >>> from thinlayer.asymptotics.incompressible import IncompressibleLayer
+    >>> layer = IncompressibleLayer()
+    >>> layer.A, layer.nu, layer.vartheta
+    (0, 1/2, 2*mu)
+    >>> layer.small_u(2)
+    -6*u**5/5 + 2*u**3/3
+    """
+
+    name: str = field(default="incompressible", init=False)
+    equation: str = field(default="2.3", init=False)
+    has_compressible_expansion: ClassVar[bool] = False
+    base: ClassVar[str | None] = "bonded"
+
+    @property
+    def numeric_nu(self) -> float:
+        """0.5."""
+        return 0.5
+
+    def taylor_coefficients(self, order: int) -> tuple:
+        """``c_n`` of (I.1): ``c_0 = A = 0``, ``c_1 = 2/3``, ..."""
+        return incompressible_coefficients(order).c
+
+    # ---- constants -------------------------------------------------------------------------
+    @property
+    def nu(self) -> sp.Rational:
+        """Poisson's ratio, exactly 1/2."""
+        return HALF
+
+    @property
+    def kappa(self) -> sp.Integer:
+        """kappa = 3 - 4 nu = 1 (2.3)."""
+        return 3 - 4 * self.nu
+
+    @property
+    def nu_expr(self) -> sp.Expr:
+        return self.nu
+
+    @property
+    def vartheta(self) -> sp.Expr:
+        """vartheta = mu/(1 - nu) = 2 mu (2.1)."""
+        return S.mu / (1 - self.nu)
+
+    @property
+    def A(self) -> sp.Expr:
+        """``A = lim_{s->0} L(s)/s`` (2.4): zero, from the leading Taylor coefficients."""
+        return incompressible_coefficients(0).c[0]
+
+    # ---- symbolic --------------------------------------------------------------------------
+    def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        return _kernel_23(self.kappa, u)
+
+    def large_u(self, u: sp.Expr = S.u) -> sp.Expr:
+        """Leading behaviour of ``L(u) - 1`` as u -> oo: ``-(4u^2 + 4u + 2) e^{-2u}`` (kappa = 1 in (2.4))."""
+        k = self.kappa
+        return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
+
+    def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
+        """Taylor coefficients of ``L(s)/s = N(s^2)/D(s^2)`` (k <= n); ``N_0 = 0``."""
+        return bonded_series_parts(dom.kappa, n, dom.const)
+
+    def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
+        """Maclaurin polynomial of L(u) through ``u^(2 order + 1)``: ``c_1 u^3 + c_2 u^5 + ...`` (I.1)."""
+        c = incompressible_coefficients(_check_order(order, "order")).c
+        return sp.Add(*[c[k] * u ** (2 * k + 1) for k in range(order + 1)])
+
+    def moment(self, a1: int, a2: int) -> sp.Expr:
+        """Kernel moment (2.15): ``mu_{2k,2n-2k} = (-1)^n pi^2 c_n C(n,k) (2k)! (2n-2k)!`` (2.21) with ``c_n`` (I.1)."""
+        a1 = _check_order(a1, "a1")
+        a2 = _check_order(a2, "a2")
+        if a1 % 2 or a2 % 2:
+            return sp.Integer(0)
+        n, k = (a1 + a2) // 2, a1 // 2
+        c = incompressible_coefficients(n).c[n]
+        return (-1) ** n * sp.pi**2 * c * sp.binomial(n, k) * sp.factorial(2 * k) * sp.factorial(2 * n - 2 * k)
+
+    def coefficients(self, order: int):
+        raise IncompressibleLayerError(
+            "the incompressible layer has A = 0 (2.4): the coefficients m_n of L(s)/s = A(1 + m_1 s^2 + ...) "
+            "(2.20) do not exist; use thinlayer.asymptotics.incompressible.incompressible_coefficients(order) for "
+            "L(s)/s = c_1 s^2 + c_2 s^4 + ... (I.1), or thin_layer_operator(layer, order)"
+        )
+
+    def m(self, n: int):
+        return self.coefficients(n)
+
+    def M(self, k: int):
+        return self.coefficients(k)
+
+    # ---- numeric ---------------------------------------------------------------------------
+    def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
+        """Stable L(u) (or L(u)/u), the bonded-layer numerics of :mod:`thinlayer.layers.numeric` at kappa = 1."""
+        if backend == "numpy":
+            return kernel_numeric.bonded_numpy(u, 1.0, over_u)
+        if backend == "mpmath":
+            return kernel_numeric.bonded_mpmath(u, mpmath.mpf(1), over_u)
+        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+
+    def __repr__(self) -> str:
+        return "IncompressibleLayer()"
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return ["IncompressibleLayer()"]

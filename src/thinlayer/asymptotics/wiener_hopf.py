@@ -90,8 +90,8 @@ import numpy as np
 import sympy as sp
 from scipy import optimize, special
 
-from .display import RichDisplay
-from .kernels import BondedLayer, FrictionlessLayer
+from ..display import RichDisplay, fmt
+from ..layers.kernels import BondedLayer, FrictionlessLayer
 
 __all__ = [
     "KERNELS",
@@ -396,7 +396,7 @@ def edge_shift_exact(nu: Any, dps: int = 20, normaliser: str = "alexandrov") -> 
     --------
     Two different factorisations give the same number:
 
-    >>> from thinlayer.wiener_hopf import edge_shift_exact
+    >>> from thinlayer.asymptotics.wiener_hopf import edge_shift_exact
     >>> h1 = edge_shift_exact("1/4", normaliser="sqrt")
     >>> h2 = edge_shift_exact("1/4", normaliser="alexandrov")
     >>> bool(abs(h1 - h2) < 1e-12)
@@ -413,7 +413,7 @@ def edge_shift_alexandrov(nu: Any) -> mpmath.mpf:
 
     Examples
     --------
-    >>> from thinlayer.wiener_hopf import edge_shift_alexandrov
+    >>> from thinlayer.asymptotics.wiener_hopf import edge_shift_alexandrov
     >>> print(mpmath.nstr(edge_shift_alexandrov(0), 12))   # nu = 0: A = 1/2, m_1 = 0, 1/C = 1/2
     0.207106781187
     """
@@ -438,6 +438,14 @@ class EdgeShiftTable(RichDisplay):
                          f"{mpmath.nstr(he - ha, 3)} \\\\")
         lines.append(r"\end{tabular}")
         return "\n".join(lines)
+
+    def _display_tex(self) -> str:
+        """The table as a LaTeX ``array`` for Jupyter (MathJax renders no ``tabular``)."""
+        rows = [r"\nu & h^*\ \text{(exact)} & \tilde h^*\ \text{(3.25)} & \text{difference} \\ \hline"]
+        for nu, he, ha in self.rows:
+            rows.append(f"{float(nu):g} & {mpmath.nstr(he, 10)} & {mpmath.nstr(ha, 10)} & "
+                        f"{mpmath.nstr(he - ha, 3)} \\\\")
+        return r"\begin{array}{rrrr}" + " ".join(rows) + r"\end{array}"
 
     def __str__(self) -> str:
         out = [f"{'nu':>8} {'h_exact':>16} {'h_alexandrov':>16} {'difference':>11}"]
@@ -665,6 +673,19 @@ class WienerHopfSolution(RichDisplay):
         which = r"\text{frictionless base}" if self.nu == FRICTIONLESS else rf"\nu = {sp.latex(self.nu)}"
         return (rf"h^* = {mpmath.nstr(self.h, 12)}\ ({which},\ \text{{{self.kernel} kernel}}),"
                 rf"\quad \tilde h^* = {mpmath.nstr(self.h_alexandrov, 12)} \tag{{3.25}}")
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        if isinstance(self.nu, str):
+            which = "frictionless base"
+        else:  # a float nu is kept as its exact binary value: show it as the float
+            which = f"nu = {fmt(self.nu) if self.nu.q < 10**6 else fmt(float(self.nu), 15)}"
+        return [
+            f"WienerHopfSolution: {self.kernel} kernel, {which} (normaliser {self.normaliser})   (3.18), (3.22)",
+            f"  h* = {fmt(self.h)}   (Alexandrov (3.25): {fmt(self.h_alexandrov)})",
+            f"  A = {fmt(self.A)}, m_1 = {fmt(self.m1)}",
+            f"  qhat(tau) - tau - h* = O(exp(-{self.sigma:.6g} tau)); table for 0 <= tau <= {self.tau_max:.6g}",
+        ]
 
 
 def _build_table(tr: _Transform, tau_max: float, n: int) -> np.ndarray:

@@ -49,13 +49,13 @@ from typing import Any
 
 import sympy as sp
 
-from . import symbols as S
-from .direct import _positive
-from .display import RichDisplay
+from .. import symbols as S
+from ..numerics.direct import _positive
+from ..display import RichDisplay, fmt
 from .inner import _vartheta, inner_pressure
-from .kernels import LayerKernel
-from .punch import Punch, PunchError
-from .results import checked_lambdify, latex_equation
+from ..layers.kernels import LayerKernel
+from ..punch import Punch, PunchError
+from ..results import checked_lambdify, latex_equation
 
 __all__ = [
     "ForceLaw",
@@ -90,7 +90,7 @@ def boundary_layer_force_defect() -> sp.Expr:
     (3.23)-(3.24), ``int_0^oo (Q - tau - h) dtau`` is the ``p^0`` term of ``Q~ - 1/p^2 - h/p``;
     the part ``v < h`` (or ``0 < v < h``) contributes ``-h^2/2``.  Eliminating ``A = B/C`` (3.20)
     and ``C`` by (3.21) leaves a function of ``m_1`` alone.  Returns ``m_1/2`` in the symbol
-    ``m_1`` (as an expression in ``thinlayer.kernels`` naming, ``Symbol('m_1')``).
+    ``m_1`` (as an expression in ``thinlayer.layers.kernels`` naming, ``Symbol('m_1')``).
     """
     B, C, p = sp.symbols("B C p", positive=True)
     m1 = sp.Symbol("m_1", real=True)
@@ -275,7 +275,7 @@ class ForceLaw(RichDisplay):
     codegen_name = "force_law"
 
     def codegen_expressions(self):
-        """``(arguments, {name: expression})`` for :mod:`thinlayer.codegen` (closed forms only).
+        """``(arguments, {name: expression})`` for :mod:`thinlayer.export.codegen` (closed forms only).
 
         Outputs ``force`` (1.8) and ``contact_area_leading`` (|omega_0|) and, when the perimeter has
         no complete elliptic integral (a circle; none of the target languages has ``E(m)``),
@@ -428,6 +428,21 @@ class ForceLaw(RichDisplay):
         if resid(lo) > 0:
             lo = phimin + span * 1e-3
         return float(opt.brentq(resid, lo, hi, xtol=1e-14 * span, rtol=1e-13))
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        out = [f"ForceLaw: {self.punch.name} on {self.layer}, {self.kind}   (1.8), (3.25)",
+               f"  Phi = {fmt(self.punch.expr)}"]
+        if self.P0 is not None:
+            out += ["  P  = P0 + P1 + O(P0 (H/a)**3)",
+                    f"  P0 = {fmt(self.P0)}",
+                    f"  P1 = {fmt(self.P1)}",
+                    f"  |omega| = {fmt(self.area0)} - h* H ({fmt(self.perimeter)}) + O(|omega| (H/a)**2)"]
+        else:
+            out += ["  P  = vartheta/(A H) iint_omega0 (delta0 - Phi) dx + c oint_Gamma0 |grad Phi| ds + O(P0 (H/a)**3)",
+                    f"  c  = {fmt(self.coefficient)}",
+                    "  no closed form: use .evaluate(delta0, H, mu, ...) (integrals over the contact contour)"]
+        return out
 
 
 def _signed(tex: str) -> str:

@@ -17,11 +17,12 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover
     import tomli as tomllib
 
-from .coefficients import kernel_coefficients
-from .inner import inner_pressure
-from .kernels import BondedLayer, FrictionlessLayer, LayerKernel
-from .moments import kernel_moment, moment_expansion
-from .punch import Punch
+from ..layers.coefficients import kernel_coefficients
+from ..asymptotics.inner import inner_pressure
+from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
+from ..layers.moments import kernel_moment
+from ..asymptotics.moment_expansion import moment_expansion
+from ..punch import Punch
 from .report import SEPARATOR
 
 
@@ -56,7 +57,7 @@ def _validation_table(vt: Any) -> dict | None:
     if unknown:
         raise DerivationFileError(f"[validation] unknown key(s) {sorted(unknown)}; valid keys are "
                                   f"{sorted(_VALIDATION_KEYS)}")
-    from .validation import _check_list, _check_nu, _check_ratio, _check_shapes
+    from ..validation.study import _check_list, _check_nu, _check_ratio, _check_shapes
 
     checks = (("nu", lambda v: list(_check_list(v, _check_nu, "nu")), [0.3]),
               ("H_over_a", lambda v: list(_check_list(v, _check_ratio, "H_over_a")), [0.1, 0.05, 0.025]),
@@ -198,7 +199,7 @@ def load_derivation(path: str | Path) -> Derivation:
 
 
 def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
-    """The whole LaTeX document of a derivation, in the paper's order (see :mod:`thinlayer.report`).
+    """The whole LaTeX document of a derivation, in the paper's order (see :mod:`thinlayer.export.report`).
 
     With ``figure_dir`` (a folder next to the .tex file) the validation plots are written there and
     included; without it the report has the validation tables only.
@@ -224,12 +225,12 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
     doc.section("Punch and inner expansion (2.24)--(2.31), (4.1)").math(punch.latex())
     doc.math(inner_pressure(layer, punch, der.inner_order).latex())
     if punch.name == "elliptic paraboloid":
-        from .contour import ellipse_contour
+        from ..asymptotics.contour import ellipse_contour
 
         doc.section("Leading contact area (3.1)").math(ellipse_contour().latex())
     if layer.name == "frictionless":
-        from .force_law import force_law
-        from .wiener_hopf import edge_shift_alexandrov, edge_shift_exact
+        from ..asymptotics.force_law import force_law
+        from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
         doc.section("Boundary layer and edge shift (frictionless base)").text(
             "The kernel does not depend on $\\nu$; $m_1 = 0$, so Alexandrov's (3.20)--(3.21) give $B = 1/(2\\mathcal{A})$, "
@@ -239,7 +240,7 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
                   [[f"{float(edge_shift_exact(layer)):.10f}", f"{float(edge_shift_alexandrov(layer)):.10f}"]])
         doc.section("Force and contact area").math(force_law(layer, punch).latex())
     if layer.name == "bonded":
-        from .force_law import force_law
+        from ..asymptotics.force_law import force_law
 
         doc.section("Boundary layer (3.15)--(3.25)").text(
             "Alexandrov's approximation (3.19) with $B$, $C$ fitted to $\\mathcal{A}$ (3.20) and $m_1$ (3.21); "
@@ -249,8 +250,8 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
             "Inner terms $p_0 + p_1$ plus the boundary layer's force defect; $a$ is the contact half-width.")
         doc.math(force_law(layer, punch).latex())
     if der.edge_shift_nus:
-        from .boundary_layer import alexandrov_parameters
-        from .wiener_hopf import edge_shift_alexandrov, edge_shift_exact
+        from ..asymptotics.boundary_layer import alexandrov_parameters
+        from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
         rows = []
         for v in der.edge_shift_nus:
@@ -262,14 +263,14 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
             "Wiener--Hopf value and Alexandrov's approximation (3.25).")
         doc.table("rrrrr", ["$\\nu$", "$B$", "$C$", "$h^*$ exact", "$h^*$ (3.25)"], rows)
     if der.contact is not None:
-        from .solution import solve
+        from ..asymptotics.solution import solve
 
         c = der.contact
         sol = solve(c.get("layer", layer), punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
                     mu=c.get("mu", 1.0), parameters=c["parameters"], nu=c.get("nu"))
         doc.section("Contact solution for numeric parameters").math(sol.latex())
     if der.validation is not None:
-        from .validation import validation_study
+        from ..validation.study import validation_study
 
         v = der.validation
         study = validation_study(v["nu"], v["H_over_a"], v["shapes"], progress=False)

@@ -92,10 +92,10 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from . import symbols as S
-from .display import RichDisplay
-from .kernels import LayerKernel
-from .results import latex_equation
+from .. import symbols as S
+from ..display import RichDisplay, fmt
+from ..layers.kernels import LayerKernel
+from ..results import latex_equation
 
 #: fast normal variable (3.7), distance from the edge (3.22), Laplace variable, kernel argument
 v = sp.Symbol("v", real=True)
@@ -262,6 +262,16 @@ class AlexandrovParameters(RichDisplay):
                 latex_equation(r"\frac{1}{C} - \frac{1}{2B^2} = -m_1, \quad C", sp.latex(C), "3.21"),
             ]
         )
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return [
+            "AlexandrovParameters: L~(s)/s = sqrt(s**2 + B**2)/(s**2 + C)   (3.19)-(3.21)",
+            f"  A   = {fmt(self.A)}",
+            f"  m_1 = {fmt(self.m1)}",
+            f"  B   = {fmt(self.B)}",
+            f"  C   = {fmt(self.C)}",
+        ]
 
 
 def alexandrov_fit(A: Any, m1: Any, dps: int = 30) -> AlexandrovParameters:
@@ -593,6 +603,16 @@ class AlexandrovSolution(RichDisplay):
                 latex_equation(r"h^*(s)", sp.latex(1 / sp.sqrt(C) - 1 / (2 * B)) + " = " + sp.latex(h), "3.25"),
             ]
         )
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return [
+            ("AlexandrovSolution: Q(v) = v erf(sqrt(B (v - h))) + sqrt((v - h)/(pi B)) exp(-B (v - h)), v > h"
+            "   (3.23)-(3.25)"),
+            f"  B  = {fmt(self.params.B)}",
+            f"  C  = {fmt(self.params.C)}",
+            f"  h* = {fmt(self.h)}",
+        ]
 
 
 def alexandrov_solution(layer: Any) -> AlexandrovSolution:

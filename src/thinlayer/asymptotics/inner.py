@@ -26,12 +26,12 @@ from typing import Any
 
 import sympy as sp
 
-from . import symbols as S
-from .display import RichDisplay
-from .kernels import LayerKernel, _check_order
-from .moments import laplacian
-from .punch import Punch
-from .results import checked_lambdify
+from .. import symbols as S
+from ..display import RichDisplay, fmt
+from ..layers.kernels import LayerKernel, _check_order
+from ..symbols import laplacian
+from ..punch import Punch
+from ..results import checked_lambdify
 
 METHODS = ("closed", "recursion")
 
@@ -127,6 +127,15 @@ class InnerPressure(RichDisplay):
             lines.append(rf"p_{{{k}}}^*(\boldsymbol{{\xi}}) = {sp.latex(t)} \tag{{{tag}}}")
         lines.append(rf"p(x_1, x_2) \sim {sp.latex(self.pressure)} \tag{{2.26}}")
         return " \\\\\n".join(lines)
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        how = "closed form (4.1)" if self.method == "closed" else "recursion (2.28)"
+        out = [(f"InnerPressure: {self.punch.name} on {self.layer}, {self.order} term{'s' if self.order != 1 else ''} "
+               f"({how})   (2.26)"), f"  Phi = {fmt(self.punch.expr)}"]
+        out += [f"  p_{k} = {fmt(t)}" for k, t in enumerate(self.terms)]
+        out.append(f"  arguments of lambdify(): ({', '.join(a.name for a in self.arguments)})")
+        return out
 
 
 Mono = tuple[int, int]

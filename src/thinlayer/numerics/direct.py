@@ -62,8 +62,8 @@ import numpy as np
 import sympy as sp
 from scipy import integrate, optimize, special
 
-from .display import RichDisplay
-from .kernels import HalfSpace, LayerKernel
+from ..display import RichDisplay, fmt
+from ..layers.kernels import HalfSpace, LayerKernel
 
 __all__ = ["AxisymmetricContact", "contact_for_radius", "solve_axisymmetric", "surface_displacement"]
 
@@ -84,7 +84,7 @@ def _positive(value: Any, name: str) -> float:
 
 def _is_incompressible(layer: Any) -> bool:
     """True for the incompressible bonded layer (kappa = 1), the one kernel that admits nu = 1/2."""
-    from .incompressible import IncompressibleLayer  # late import: incompressible.py imports this module
+    from ..asymptotics.incompressible import IncompressibleLayer  # late import: incompressible.py imports this module
 
     return isinstance(layer, IncompressibleLayer)
 
@@ -112,7 +112,7 @@ def _nu_and_layer(layer: Any, nu: Any) -> float:
         nu_val = float(nu)
     if not (-1 < nu_val < 0.5 or (nu_val == 0.5 and _is_incompressible(layer))):
         raise ValueError(f"Poisson ratio nu={nu_val} outside the admissible range -1 < nu < 1/2 "
-                         "(nu = 1/2 only with thinlayer.incompressible.IncompressibleLayer())")
+                         "(nu = 1/2 only with thinlayer.asymptotics.incompressible.IncompressibleLayer())")
     try:
         far = float(np.asarray(layer.L_numeric(np.array([2 * _U_MAX]), "numpy"))[0])
     except Exception as exc:  # GenericLayer and friends
@@ -301,6 +301,18 @@ class AxisymmetricContact(RichDisplay):
         return (rf"c = {self.radius:.10g}\,(\pm {self.radius_error:.1e}),\quad "
                 rf"P = {self.force:.10g}\,(\pm {self.force_error:.1e}\,P),\quad "
                 rf"\delta_0 = {self.delta0:.10g},\quad H = {self.H:g},\quad \nu = {self.nu:g}")
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        punch = getattr(self, "punch", None)
+        what = f" of {punch.name} Phi = {fmt(punch.expr)}" if punch is not None else ""
+        layer = str(self.layer) if "nu=" in str(self.layer) else f"{self.layer}, nu = {self.nu:.6g}"
+        return [
+            f"{type(self).__name__}: direct numerical solution{what}   (1.5)-(1.8)",
+            f"  {layer}, mu = {self.mu:.6g}, H = {self.H:.6g}, delta0 = {self.delta0:.10g}",
+            f"  contact radius c = {self.radius:.12g}  (+- {self.radius_error:.1e})",
+            f"  force          P = {self.force:.12g}  (+- {self.force_error:.1e} P), {self.modes} modes",
+        ]
 
 
 def _pressure_function(coef: np.ndarray, c: float) -> Callable[[np.ndarray], np.ndarray]:

@@ -33,11 +33,11 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from . import symbols as S
-from .display import RichDisplay
+from .. import symbols as S
+from ..display import RichDisplay, fmt
 from .inner import InnerPressure, _vartheta, inner_pressure
-from .kernels import LayerKernel
-from .punch import Punch
+from ..layers.kernels import LayerKernel
+from ..punch import Punch
 
 __all__ = ["CompositePressure", "composite_pressure", "BOUNDARY_LAYERS"]
 
@@ -141,7 +141,7 @@ class CompositePressure(RichDisplay):
     equation = "3.24"
 
     def codegen_expressions(self):
-        """``((x1, x2, H, mu), {"p": p_c})`` for :mod:`thinlayer.codegen` (radial punch, Alexandrov layer).
+        """``((x1, x2, H, mu), {"p": p_c})`` for :mod:`thinlayer.export.codegen` (radial punch, Alexandrov layer).
 
         For a radial punch ``Gamma_0`` is the circle ``r = a`` and ``v = (a - r)/H`` exactly, so with
         Alexandrov's closed form (3.24) the composite is an expression in ``x1, x2``; ``H`` and ``mu``
@@ -190,6 +190,16 @@ class CompositePressure(RichDisplay):
             r"\left(\hat Q\!\left(\frac{n}{H}\right) - \frac{n}{H}\right),\quad \hat Q = 0 \ \text{for}\ "
             rf"\frac{{n}}{{H}} \le h^* = {self.h:.10g}\ (\text{{{kind} boundary layer}})"
         )
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        kind = "exact (2.3)" if self.boundary_layer == "exact" else "Alexandrov (3.24)"
+        return [
+            f"CompositePressure: inner ({self.inner.order} terms) + {kind} boundary layer - common part   (2.26), (3.24)",
+            f"  {self.punch.name}: Phi = {fmt(self.punch.expr)} on {self.layer}",
+            f"  delta0 = {self.delta0:.6g}, H = {self.H:.6g}, mu = {self.mu:.6g}",
+            f"  h* = {self.h:.10g}, amplitude vartheta/A = {self.amplitude:.10g}, boundary layer for n/H < {self.band:.4g}",
+        ]
 
 
 def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float, mu: float = 1.0,

@@ -8,7 +8,7 @@ expansion of the paper.  Equations that the paper does not have carry tags ``I.n
 Kernel and operator (I.1), (I.2)
 --------------------------------
 With ``kappa = 1`` the Maclaurin data of ``L(s)/s`` (power-series arithmetic on sinh, cosh, as in
-:mod:`thinlayer.coefficients`) start one order later::
+:mod:`thinlayer.layers.coefficients`) start one order later::
 
     L(s)/s = c_1 s^2 + c_2 s^4 + ...,   c_0 = A = 0,   c_1 = 2/3,   c_2 = -6/5, ...      (I.1)
 
@@ -81,7 +81,7 @@ i.e. ``-Delta p + k^2 p = f`` with ``k^2 = 1/(m_1 H^2)`` and ``f = vartheta (del
 an obstacle problem again (``m_1 > 0`` needs ``1/4 < nu <= 1/2``).  Both limits are contained:
 for ``k a >> 1`` its inner solution is ``(vartheta/(A H))(delta0 - Phi - m_1 H^2 Delta Phi)`` (2.26), (4.1)
 and its edge layer, ``q = g (v + l e^{-(v + l)/l})`` with ``l = sqrt(m_1)``, has the force defect
-``l^2/2 = m_1/2`` -- the same as the Wiener--Hopf boundary layer (see :mod:`thinlayer.force_law`), so
+``l^2/2 = m_1/2`` -- the same as the Wiener--Hopf boundary layer (see :mod:`thinlayer.asymptotics.force_law`), so
 the force is right to first order; for ``k a << 1`` it is (I.3).  The ratio of the two terms is
 
     lambda^2 = (a/H)^2 / m_1  ~  3 (1 - 2 nu) (a/H)^2:                                      (I.13)
@@ -109,7 +109,7 @@ the model, driven by the same outer solution, have edges ``-i K_1`` apart (the a
 now relative to the model; the outer forcing -- linear in the compressible, constant in the
 incompressible case -- does not enter).  For ``nu < 1/2``, ``h = h^*(nu) + sqrt(m_1)``: the paper's
 edge shift plus the model's outward shift ``sqrt(m_1)`` (tested against
-:func:`thinlayer.wiener_hopf.edge_shift_exact`).
+:func:`thinlayer.asymptotics.wiener_hopf.edge_shift_exact`).
 
 Accuracy, measured against the direct solver (sphere, tests): at ``nu = 1/2`` the force of (I.8) is
 low by ``~21 (H/a)^2`` (rate 1.93 between ``a/H = 20`` and 40) and ``(a - c)/H -> h(1/2)`` at rate ``H/a``;
@@ -120,7 +120,7 @@ incompressible one by a factor 37 (nu = 0.45).
 
 Numerics: :func:`solve_obstacle_grid` solves (I.3)/(I.10) for any punch on a grid (5-point
 Laplacian, primal-dual active-set iteration with sparse LU); the direct solver
-:func:`thinlayer.direct.solve_axisymmetric` accepts :class:`IncompressibleLayer` at ``nu = 1/2``.
+:func:`thinlayer.numerics.direct.solve_axisymmetric` accepts :class:`IncompressibleLayer` at ``nu = 1/2``.
 """
 from __future__ import annotations
 
@@ -137,13 +137,14 @@ import numpy as np
 import sympy as sp
 from sympy import QQ
 
-from . import kernel_numeric
-from . import symbols as S
-from ._series import quotient_field, taylor_cosh, taylor_sinh
-from .kernels import BondedLayer, IncompressibleLayerError, LayerKernel, _check_order
-from .moments import laplacian
-from .punch import Punch, PunchError
-from .results import checked_lambdify, latex_equation
+from .. import symbols as S
+from .._checks import check_order as _check_order
+from .._series import quotient_field
+from ..layers.coefficients import IncompressibleCoefficients, incompressible_coefficients
+from ..layers.kernels import HALF, BondedLayer, IncompressibleLayer, IncompressibleLayerError, LayerKernel
+from ..symbols import laplacian
+from ..punch import Punch, PunchError
+from ..results import checked_lambdify, latex_equation
 
 __all__ = [
     "EllipseValues",
@@ -185,197 +186,9 @@ c_sym = sp.Symbol("c", positive=True)
 rho = sp.Symbol("r", nonnegative=True)
 
 
-def _kernel_23(kappa: sp.Expr, u: sp.Expr) -> sp.Expr:
-    """The bonded-layer kernel (2.3) for a given kappa."""
-    return (2 * kappa * sp.sinh(2 * u) - 4 * u) / (2 * kappa * sp.cosh(2 * u) + 1 + kappa**2 + 4 * u**2)
-
-
-# =============================================================================================
-# the layer
-# =============================================================================================
-@dataclass(frozen=True)
-class IncompressibleLayer(LayerKernel):
-    """The incompressible layer bonded to a rigid base: kernel (2.3) at ``nu = 1/2``, ``kappa = 1``::
-
-        L(u) = (2 sinh 2u - 4u)/(2 cosh 2u + 2 + 4u^2),   vartheta = mu/(1 - nu) = 2 mu.
-
-    ``A = lim L(s)/s = 0`` (2.4), so the compressible coefficients ``m_n`` of (2.20) do not exist
-    (:meth:`coefficients`, :meth:`m`, :meth:`M` raise :class:`~thinlayer.IncompressibleLayerError`);
-    the small-s data are ``L(s)/s = c_1 s^2 + c_2 s^4 + ...`` (:func:`incompressible_coefficients`).
-    Every stage that needs only ``L(u)`` works, e.g. :func:`thinlayer.direct.solve_axisymmetric`.
-
-    Examples
-    --------
-    >>> from thinlayer.incompressible import IncompressibleLayer
-    >>> layer = IncompressibleLayer()
-    >>> layer.A, layer.nu, layer.vartheta
-    (0, 1/2, 2*mu)
-    >>> layer.small_u(2)
-    -6*u**5/5 + 2*u**3/3
-    """
-
-    name: str = field(default="incompressible", init=False)
-    equation: str = field(default="2.3", init=False)
-
-    # ---- constants -------------------------------------------------------------------------
-    @property
-    def nu(self) -> sp.Rational:
-        """Poisson's ratio, exactly 1/2."""
-        return HALF
-
-    @property
-    def kappa(self) -> sp.Integer:
-        """kappa = 3 - 4 nu = 1 (2.3)."""
-        return 3 - 4 * self.nu
-
-    @property
-    def nu_expr(self) -> sp.Expr:
-        return self.nu
-
-    @property
-    def vartheta(self) -> sp.Expr:
-        """vartheta = mu/(1 - nu) = 2 mu (2.1)."""
-        return S.mu / (1 - self.nu)
-
-    @property
-    def A(self) -> sp.Expr:
-        """``A = lim_{s->0} L(s)/s`` (2.4): zero, from the leading Taylor coefficients."""
-        return incompressible_coefficients(0).c[0]
-
-    # ---- symbolic --------------------------------------------------------------------------
-    def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        return _kernel_23(self.kappa, u)
-
-    def large_u(self, u: sp.Expr = S.u) -> sp.Expr:
-        """Leading behaviour of ``L(u) - 1`` as u -> oo: ``-(4u^2 + 4u + 2) e^{-2u}`` (kappa = 1 in (2.4))."""
-        k = self.kappa
-        return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
-
-    def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
-        """Taylor coefficients of ``L(s)/s = N(s^2)/D(s^2)`` (k <= n); ``N_0 = 0``."""
-        k = dom.kappa
-        sh = taylor_sinh(2, n, dom.const)
-        ch = taylor_cosh(2, n, dom.const)
-        num = [2 * k * c for c in sh]
-        num[0] = num[0] - dom.const(4, 1)
-        den = [2 * k * c for c in ch]
-        den[0] = den[0] + 1 + k * k
-        if n >= 1:
-            den[1] = den[1] + dom.const(4, 1)
-        return num, den
-
-    def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
-        """Maclaurin polynomial of L(u) through ``u^(2 order + 1)``: ``c_1 u^3 + c_2 u^5 + ...`` (I.1)."""
-        c = incompressible_coefficients(_check_order(order, "order")).c
-        return sp.Add(*[c[k] * u ** (2 * k + 1) for k in range(order + 1)])
-
-    def moment(self, a1: int, a2: int) -> sp.Expr:
-        """Kernel moment (2.15): ``mu_{2k,2n-2k} = (-1)^n pi^2 c_n C(n,k) (2k)! (2n-2k)!`` (2.21) with ``c_n`` (I.1)."""
-        a1 = _check_order(a1, "a1")
-        a2 = _check_order(a2, "a2")
-        if a1 % 2 or a2 % 2:
-            return sp.Integer(0)
-        n, k = (a1 + a2) // 2, a1 // 2
-        c = incompressible_coefficients(n).c[n]
-        return (-1) ** n * sp.pi**2 * c * sp.binomial(n, k) * sp.factorial(2 * k) * sp.factorial(2 * n - 2 * k)
-
-    def coefficients(self, order: int):
-        raise IncompressibleLayerError(
-            "the incompressible layer has A = 0 (2.4): the coefficients m_n of L(s)/s = A(1 + m_1 s^2 + ...) "
-            "(2.20) do not exist; use thinlayer.incompressible.incompressible_coefficients(order) for "
-            "L(s)/s = c_1 s^2 + c_2 s^4 + ... (I.1), or thin_layer_operator(layer, order)"
-        )
-
-    def m(self, n: int):
-        return self.coefficients(n)
-
-    def M(self, k: int):
-        return self.coefficients(k)
-
-    # ---- numeric ---------------------------------------------------------------------------
-    def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
-        """Stable L(u) (or L(u)/u), the bonded-layer numerics of :mod:`thinlayer.kernel_numeric` at kappa = 1."""
-        if backend == "numpy":
-            return kernel_numeric.bonded_numpy(u, 1.0, over_u)
-        if backend == "mpmath":
-            return kernel_numeric.bonded_mpmath(u, mpmath.mpf(1), over_u)
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
-
-    def __repr__(self) -> str:
-        return "IncompressibleLayer()"
-
-
-class _QQDomain:
-    """Exact rationals for :meth:`IncompressibleLayer.series_parts`."""
-
-    kappa = QQ(1)
-
-    @staticmethod
-    def const(p: int, q: int) -> Any:
-        return QQ(p, q)
-
-
-# =============================================================================================
-# (I.1) coefficients
-# =============================================================================================
-@dataclass(frozen=True)
-class IncompressibleCoefficients:
-    """Maclaurin coefficients ``L(s)/s = sum_n c_n s^{2n}`` of the incompressible kernel (I.1).
-
-    Attributes
-    ----------
-    order:
-        Highest n.
-    c:
-        ``(c_0, ..., c_order)`` as sympy Rationals; ``c_0 = A = 0``, ``c_1 = 2/3``.
-    """
-
-    order: int
-    c: tuple
-
-    equation = "I.1"
-
-    def series(self, s: sp.Expr = S.s) -> sp.Expr:
-        """The truncated series ``sum_{n <= order} c_n s^{2n}``."""
-        return sp.Add(*[cn * s ** (2 * n) for n, cn in enumerate(self.c)])
-
-    def latex(self) -> str:
-        terms = " + ".join(rf"\left({sp.latex(cn)}\right) s^{{{2 * n}}}" for n, cn in enumerate(self.c) if n)
-        return rf"\frac{{\mathcal{{L}}(s)}}{{s}} = {terms} + \dots,\quad \mathcal{{A}} = c_0 = 0 \tag{{I.1}}"
-
-    def lambdify(self, backend: str = "numpy") -> Callable:
-        """``f() -> (c_0, ..., c_order)`` (numbers; no arguments)."""
-        return checked_lambdify([], list(self.c), backend)
-
-
-@lru_cache(maxsize=32)
-def incompressible_coefficients(order: int) -> IncompressibleCoefficients:
-    """``c_n`` of ``L(s)/s = c_1 s^2 + c_2 s^4 + ...`` for the incompressible layer (I.1).
-
-    Power-series division of the closed-form Taylor coefficients of the numerator and denominator
-    of (2.3) at ``kappa = 1`` over QQ (as :func:`thinlayer.kernel_coefficients` does for ``nu < 1/2``).
-
-    Examples
-    --------
-    >>> incompressible_coefficients(3).c
-    (0, 2/3, -6/5, 46/21)
-    """
-    order = _check_order(order, "order")
-    num, den = IncompressibleLayer().series_parts(order, _QQDomain())
-    q = quotient_field(num, den, order)
-    return IncompressibleCoefficients(order, tuple(sp.Rational(int(x.numerator), int(x.denominator)) for x in q))
-
-
 # =============================================================================================
 # (I.2) the operator series
 # =============================================================================================
-def _operator_coefficients(layer: LayerKernel, order: int) -> tuple:
-    if isinstance(layer, IncompressibleLayer):
-        return incompressible_coefficients(order).c
-    co = layer.coefficients(order)
-    return tuple(co.A_expr * co.m_expr(n) for n in range(order + 1))
-
-
 def _layer_vartheta(layer: LayerKernel) -> sp.Expr:
     v = getattr(layer, "vartheta", None)
     return v if v is not None else S.VARTHETA
@@ -424,7 +237,7 @@ class ThinLayerOperator:
         """
         moment = self.layer.moment if isinstance(self.layer, IncompressibleLayer) else None
         if moment is None:
-            from .moments import kernel_moment
+            from ..layers.moments import kernel_moment
 
             def moment(a1: int, a2: int, _l=self.layer):
                 return kernel_moment(_l, a1, a2)
@@ -488,7 +301,7 @@ def thin_layer_operator(layer: LayerKernel, order: int = 1) -> ThinLayerOperator
         raise TypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
                         f"got {layer!r}")
     order = _check_order(order, "order")
-    return ThinLayerOperator(layer, order, _operator_coefficients(layer, order))
+    return ThinLayerOperator(layer, order, layer.taylor_coefficients(order))
 
 
 # =============================================================================================
@@ -995,17 +808,17 @@ def _mp(x: Any) -> mpmath.mpf:
 def _edge_shift_cached(nu_key: str, dps: int) -> mpmath.mpf:
     with mpmath.workdps(dps + 30):
         if nu_key == "1/2":
-            c = incompressible_coefficients(2).c
-            kap = mpmath.mpf(1)
+            layer: LayerKernel = IncompressibleLayer()
+            c = layer.taylor_coefficients(2)
         else:
             nv = sp.Rational(nu_key) if "/" in nu_key else mpmath.mpf(nu_key)
-            co = BondedLayer(nv, dps=dps + 30).coefficients(2)
+            layer = BondedLayer(nv, dps=dps + 30)
+            co = layer.coefficients(2)
             c = [co.A * co.m[n] for n in range(3)]
-            kap = 3 - 4 * _mp(nv)
         c0, c1, c2 = (_mp(x) for x in c)
 
         def f(t):
-            return mpmath.log(kernel_numeric.bonded_mpmath(t, kap, True) / (c0 + c1 * t * t)) / (t * t)
+            return mpmath.log(layer.L_numeric(t, "mpmath", over_u=True) / (c0 + c1 * t * t)) / (t * t)
 
         # near 0, f = c2 t^2/(c0 + c1 t^2) + O(t^4) (F = c0 + c1 t^2 + c2 t^4 + ...): integrate that in closed
         # form on [0, t0]; beyond, f ~ -2 log(t)/t^2 at infinity
@@ -1054,7 +867,7 @@ class TwoTermEdgeLayer:
         ``v_0 = -sqrt(m_1)`` (the model's contact extends beyond the leading contour).
     force_defect:
         ``D = int (q - max(v, 0)) dv = m_1/2`` -- the same as the Wiener--Hopf boundary layer's
-        (:func:`thinlayer.force_law.boundary_layer_force_defect`).
+        (:func:`thinlayer.asymptotics.force_law.boundary_layer_force_defect`).
     """
 
     m1: sp.Symbol
@@ -1657,7 +1470,7 @@ class SphereModels:
     two_term:
         ``(P, c)`` of (I.11), ``c`` corrected by (I.12).
     direct:
-        ``(P, c)`` of :func:`thinlayer.direct.solve_axisymmetric`, or ``None``.
+        ``(P, c)`` of :func:`thinlayer.numerics.direct.solve_axisymmetric`, or ``None``.
     regime:
         :func:`regime` at ``H/a`` with ``a`` the two-term radius.
     """
@@ -1710,7 +1523,7 @@ def compare_sphere_models(nu: Any, R: float, delta0: float, H: float, mu: float 
     R, delta0, H, mu:
         Sphere radius, indentation, thickness, shear modulus.
     direct:
-        Also run :func:`thinlayer.direct.solve_axisymmetric` (``BondedLayer(nu)``, or
+        Also run :func:`thinlayer.numerics.direct.solve_axisymmetric` (``BondedLayer(nu)``, or
         :class:`IncompressibleLayer` at 1/2).
     """
     nv = _model_floats(nu)[0]
@@ -1728,7 +1541,7 @@ def compare_sphere_models(nu: Any, R: float, delta0: float, H: float, mu: float 
         comp = (float(sol.force), math.sqrt(float(sol.contact_area) / math.pi))
     dres = None
     if direct:
-        from .direct import solve_axisymmetric
+        from ..numerics.direct import solve_axisymmetric
 
         layer = IncompressibleLayer() if nv == 0.5 else BondedLayer(nv)
         res = solve_axisymmetric(layer, lambda r: r * r / (2 * RR), d0, HH, mm)

@@ -25,7 +25,7 @@ class BadInput(ValueError):
 # shared argument parsing
 # ---------------------------------------------------------------------------------------------
 def _layer(nu: str, model: str = "bonded"):
-    from .kernels import BondedLayer, FrictionlessLayer
+    from ..layers.kernels import BondedLayer, FrictionlessLayer
 
     if model == "frictionless":
         return FrictionlessLayer()
@@ -45,7 +45,7 @@ _KINDS = ("elliptic_paraboloid", "paraboloid", "fourth_degree")
 
 
 def _punch(args):
-    from .punch import Punch
+    from ..punch import Punch
 
     if (args.kind is None) == (args.punch is None):
         raise BadInput("give exactly one of --punch EXPR (a polynomial in x_1, x_2) and --kind NAME "
@@ -118,8 +118,8 @@ def _cmd_report(args) -> int:
 
 
 def _cmd_coefficients(args) -> int:
-    from .coefficients import kernel_coefficients
-    from .moments import kernel_moment
+    from ..layers.coefficients import kernel_coefficients
+    from ..layers.moments import kernel_moment
 
     if args.order < 1 or args.order > 60:
         raise BadInput(f"--order {args.order}: an integer from 1 to 60")
@@ -145,7 +145,7 @@ def _cmd_coefficients(args) -> int:
 
 
 def _cmd_inner(args) -> int:
-    from .inner import inner_pressure
+    from ..asymptotics.inner import inner_pressure
 
     layer = _layer(args.nu, args.model)
     punch = _punch(args)
@@ -167,7 +167,7 @@ def _cmd_inner(args) -> int:
 
 
 def _cmd_solve(args) -> int:
-    from .solution import solve
+    from ..asymptotics.solution import solve
 
     layer = _layer(args.nu)
     punch = _punch(args)
@@ -194,7 +194,7 @@ def _cmd_solve(args) -> int:
 
 
 def _cmd_errata(args) -> int:
-    from . import errata
+    from .. import errata
 
     if args.latex:
         print(errata.latex_table())
@@ -210,25 +210,25 @@ def _cmd_errata(args) -> int:
 def _codegen_result(args):
     """The result object named by ``thinlayer codegen RESULT``."""
     if args.result == "coefficients":
-        from .coefficients import kernel_coefficients
+        from ..layers.coefficients import kernel_coefficients
 
         if args.nu not in (None, "symbolic"):
             raise BadInput("coefficients are generated as functions of nu: leave out --nu")
         return kernel_coefficients(_layer("symbolic"), args.order or 3)
     punch = _punch(args)
     if args.result == "inner":
-        from .inner import inner_pressure
+        from ..asymptotics.inner import inner_pressure
 
         if args.param:
             punch = punch.subs(_params(args.param))
         return inner_pressure(_layer(args.nu or "symbolic"), punch, args.order)
     if args.result == "force":
-        from .force_law import force_law
+        from ..asymptotics.force_law import force_law
 
         if args.param:
             punch = punch.subs(_params(args.param))
         return force_law(_layer(args.nu or "symbolic"), punch)
-    from .solution import solve  # composite: numeric parameters
+    from ..asymptotics.solution import solve  # composite: numeric parameters
 
     if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
         raise BadInput("composite needs numeric --nu, --delta0 and --H (and --param values)")
@@ -374,7 +374,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
 
-    from .validation import add_cli as _validate_cli
+    from ..validation.study import add_cli as _validate_cli
 
     _validate_cli(sub, fmt)
     return ap
@@ -384,7 +384,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = build_parser()
     args = ap.parse_args(argv)
     from .derivation import DerivationFileError
-    from .punch import PunchError
+    from ..punch import PunchError
 
     try:
         return args.func(args)

@@ -6,8 +6,8 @@ and Poisson ratio ``nu`` indented by ``delta0`` (or pressed by a force ``P``):
 * the leading contact area omega_0 = {delta0 - Phi > 0} and its contour Gamma_0 (3.1)-(3.14)
   (:func:`thinlayer.contact_contour`, closed form for the elliptic paraboloid);
 * the edge shift h^* (3.25), exact (Wiener--Hopf with the kernel (2.3)) and Alexandrov's;
-* the force (1.8) and the contact area with their first corrections (:mod:`thinlayer.force_law`);
-* the composite pressure (:mod:`thinlayer.composite`), built on first use.
+* the force (1.8) and the contact area with their first corrections (:mod:`thinlayer.asymptotics.force_law`);
+* the composite pressure (:mod:`thinlayer.asymptotics.composite`), built on first use.
 
 Orders of accuracy, in the contact half-width ``a = 2|omega_0|/|Gamma_0|`` (the radius for a
 circle): force ``O((H/a)^3)`` relative, contact area ``O((H/a)^2)``, composite pressure ``O(H/a)``
@@ -23,10 +23,10 @@ import mpmath
 import sympy as sp
 
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
-from .direct import _positive
+from ..numerics.direct import _positive
 from .force_law import ORDERS, ForceLaw, ForceValues, force_law
-from .kernels import BondedLayer, FrictionlessLayer, LayerKernel
-from .punch import Punch, PunchError
+from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
+from ..punch import Punch, PunchError
 
 __all__ = ["ContactSolution", "solve", "MAX_FORCE_ORDER"]
 
@@ -95,7 +95,7 @@ class ContactSolution:
     delta0, H, mu, nu:
         Indentation, thickness, shear modulus and Poisson ratio.
     law:
-        The symbolic :class:`~thinlayer.force_law.ForceLaw` and ``values`` its numbers here.
+        The symbolic :class:`~thinlayer.asymptotics.force_law.ForceLaw` and ``values`` its numbers here.
     edge_shift, edge_shift_alexandrov:
         h^* (3.25) from the exact kernel and from Alexandrov's approximation.
     terms:
@@ -224,7 +224,7 @@ class ContactSolution:
         )
 
     def _repr_latex_(self) -> str:
-        from .display import display_math
+        from ..display import display_math
 
         return display_math(self.latex())
 

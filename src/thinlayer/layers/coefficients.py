@@ -17,18 +17,22 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 import mpmath
 import sympy as sp
 from sympy import QQ
 from sympy.polys.rings import ring
 
-from . import symbols as S
-from ._series import powers, quotient_field, quotient_fraction_free, reciprocal_recurrence
-from .display import RichDisplay
-from .kernels import GenericLayer, LayerKernel, _check_order
-from .results import checked_lambdify
+from .. import symbols as S
+from .._checks import check_order as _check_order
+from .._series import bonded_series_parts, powers, quotient_field, quotient_fraction_free, reciprocal_recurrence
+from ..display import RichDisplay, fmt
+from ..results import checked_lambdify
+
+if TYPE_CHECKING:
+    from .kernels import LayerKernel
 
 
 class _PolyDomain:
@@ -191,6 +195,17 @@ class KernelCoefficients(RichDisplay):
         exprs += [self.M_expr(k) for k in range(1, self.order + 1)]
         return checked_lambdify([p], exprs, backend)
 
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        out = [f"KernelCoefficients of {self.layer}, n <= {self.order}   (2.4), (2.20), (4.2)"]
+        w = len(f"m_{self.order}")
+        out.append(f"  {'A':<{w}} = {fmt(self.A_expr if self.layer.parameter is not None else self.A)}")
+        for n in range(1, self.order + 1):
+            out.append(f"  {f'm_{n}':<{w}} = {fmt(self.m[n])}")
+        for k in range(1, self.order + 1):
+            out.append(f"  {f'M_{k}':<{w}} = {fmt(self.M[k])}")
+        return out
+
 
 def _to_expr(x: Any, layer: LayerKernel) -> sp.Expr:
     if isinstance(x, sp.Basic):
@@ -207,7 +222,7 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     Parameters
     ----------
     layer:
-        Any :class:`~thinlayer.kernels.LayerKernel` with a small-s expansion.
+        Any :class:`~thinlayer.layers.kernels.LayerKernel` with a small-s expansion.
     order:
         Highest index n of m_n and M_n (a non-negative integer).
 
@@ -219,7 +234,7 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     -nu*(1 - 4*nu)/(3*(1 - 2*nu)*(1 - nu))
     """
     order = _check_order(order, "order")
-    if isinstance(layer, GenericLayer):
+    if layer.symbolic_coefficients:
         m = [sp.Integer(1)] + [layer.m_symbol(n) for n in range(1, order + 1)]
         M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
         return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
@@ -287,7 +302,7 @@ def reciprocal_by_inversion(layer: LayerKernel, order: int) -> tuple:
     Used to cross-check the recurrence (4.2).  Returns sympy objects (or mpmath numbers).
     """
     order = _check_order(order, "order")
-    if isinstance(layer, GenericLayer):
+    if layer.symbolic_coefficients:
         m = [sp.Integer(1)] + [layer.m_symbol(n) for n in range(1, order + 1)]
         M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
         return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
@@ -314,3 +329,51 @@ class _nullcontext:
 
     def __exit__(self, *a):
         return False
+
+
+@dataclass(frozen=True)
+class IncompressibleCoefficients:
+    """Maclaurin coefficients ``L(s)/s = sum_n c_n s^{2n}`` of the incompressible kernel (I.1).
+
+    Attributes
+    ----------
+    order:
+        Highest n.
+    c:
+        ``(c_0, ..., c_order)`` as sympy Rationals; ``c_0 = A = 0``, ``c_1 = 2/3``.
+    """
+
+    order: int
+    c: tuple
+
+    equation = "I.1"
+
+    def series(self, s: sp.Expr = S.s) -> sp.Expr:
+        """The truncated series ``sum_{n <= order} c_n s^{2n}``."""
+        return sp.Add(*[cn * s ** (2 * n) for n, cn in enumerate(self.c)])
+
+    def latex(self) -> str:
+        terms = " + ".join(rf"\left({sp.latex(cn)}\right) s^{{{2 * n}}}" for n, cn in enumerate(self.c) if n)
+        return rf"\frac{{\mathcal{{L}}(s)}}{{s}} = {terms} + \dots,\quad \mathcal{{A}} = c_0 = 0 \tag{{I.1}}"
+
+    def lambdify(self, backend: str = "numpy") -> Callable:
+        """``f() -> (c_0, ..., c_order)`` (numbers; no arguments)."""
+        return checked_lambdify([], list(self.c), backend)
+
+
+@lru_cache(maxsize=32)
+def incompressible_coefficients(order: int) -> IncompressibleCoefficients:
+    """``c_n`` of ``L(s)/s = c_1 s^2 + c_2 s^4 + ...`` for the incompressible layer (I.1).
+
+    Power-series division of the closed-form Taylor coefficients of the numerator and denominator
+    of (2.3) at ``kappa = 1`` over QQ (as :func:`thinlayer.kernel_coefficients` does for ``nu < 1/2``).
+
+    Examples
+    --------
+    >>> incompressible_coefficients(3).c
+    (0, 2/3, -6/5, 46/21)
+    """
+    order = _check_order(order, "order")
+    num, den = bonded_series_parts(QQ(1), order, QQ)
+    q = quotient_field(num, den, order)
+    return IncompressibleCoefficients(order, tuple(sp.Rational(int(x.numerator), int(x.denominator)) for x in q))

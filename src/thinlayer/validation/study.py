@@ -26,7 +26,7 @@ radial line through the whole contact, edge included; elliptic: on the cells at 
 inside the numerical contact edge, where the piecewise-constant numerical pressure is accurate --
 nearer the edge its own error, ~5e-3 p_max at Delta = H/8, is as large as the asymptotic one).
 
-The claimed orders of the remainders (:data:`CLAIMED_ORDERS`, from :data:`thinlayer.force_law.ORDERS`):
+The claimed orders of the remainders (:data:`CLAIMED_ORDERS`, from :data:`thinlayer.asymptotics.force_law.ORDERS`):
 force ``O((H/a)^3)``, contact area ``O((H/a)^2)``, composite pressure ``O(p_max H/a)`` (a bound).
 The observed pressure slope is 1.3-2.1: the largest error sits at the true contact edge, where the
 composite pressure's edge ``a - h^* H`` is off by ``O(H^2/a)`` under a square-root profile of height
@@ -642,7 +642,7 @@ def _check_int(value: Any, name: str, lo: int) -> int:
 
 
 def _layer(nu: float):
-    from .kernels import BondedLayer
+    from ..layers.kernels import BondedLayer
 
     return BondedLayer(str(Fraction(float(nu)).limit_denominator(10**6)))
 
@@ -656,11 +656,11 @@ def _same_ratio(got: float, want: float) -> None:
 
 
 def _sphere_case(nu: float, eps: float) -> tuple[ValidationRow, list[PressureProfile], list[ContourData]]:
-    from .direct import contact_for_radius
-    from .numerics import solve_axisymmetric
-    from .numerics.axisymmetric import radial_profile
-    from .punch import Punch
-    from .solution import solve
+    from ..numerics.direct import contact_for_radius
+    from ..numerics import solve_axisymmetric
+    from ..numerics.axisymmetric import radial_profile
+    from ..punch import Punch
+    from ..asymptotics.solution import solve
 
     layer, punch = _layer(nu), Punch.paraboloid(R=_SPHERE_R)
     a0 = math.sqrt(2.0 * _SPHERE_R * _DELTA0)
@@ -770,9 +770,9 @@ def _elliptic_case(nu: float, eps: float, cells_per_H: float, workers: int | Non
     from scipy import ndimage
     from scipy.interpolate import RegularGridInterpolator
 
-    from .numerics import solve_2d
-    from .punch import Punch
-    from .solution import solve
+    from ..numerics import solve_2d
+    from ..punch import Punch
+    from ..asymptotics.solution import solve
 
     layer, punch = _layer(nu), Punch.elliptic_paraboloid(R1=_ELLIPSE_R[0], R2=_ELLIPSE_R[1])
     a1, a2, _, _, a = _ellipse_geometry()
@@ -1091,10 +1091,10 @@ def speed_comparison(nu: float = 0.3, H_over_a: float = 0.1, *, repeat: int = 3,
     :func:`thinlayer.solve` (everything: force, area, edge shifts) and, separately, one call of the
     lambdified force law.
     """
-    from .force_law import force_law
-    from .numerics import solve_2d, solve_axisymmetric
-    from .punch import Punch
-    from .solution import solve
+    from ..asymptotics.force_law import force_law
+    from ..numerics import solve_2d, solve_axisymmetric
+    from ..punch import Punch
+    from ..asymptotics.solution import solve
 
     v, eps = _check_nu(nu), _check_ratio(H_over_a)
     repeat = _check_int(repeat, "repeat", 1)

@@ -26,44 +26,12 @@ from functools import lru_cache
 
 import sympy as sp
 
-from . import symbols as S
-from .display import RichDisplay
-from .kernels import LayerKernel, _check_order
-from .results import checked_lambdify
-
-
-def laplacian(f: sp.Expr, v1: sp.Symbol, v2: sp.Symbol, power: int = 1) -> sp.Expr:
-    """``Delta^power f`` in the variables (v1, v2)."""
-    for _ in range(power):
-        f = sp.diff(f, v1, 2) + sp.diff(f, v2, 2)
-    return f
-
-
-def kernel_moment(layer: LayerKernel, a1: int, a2: int):
-    """The moment mu_{a1 a2} = iint k(xi) xi1^a1 xi2^a2 dxi of the kernel (2.12), (2.15).
-
-    Zero when a1 or a2 is odd (2.19); otherwise the derived (2.21)::
-
-        mu_{2k, 2n-2k} = (-1)^n pi^2 A m_n C(n, k) (2k)! (2n-2k)!
-
-    Examples
-    --------
-    >>> from thinlayer import BondedLayer
-    >>> BondedLayer("3/10").moment(0, 0)
-    20*pi**2/49
-    >>> BondedLayer("3/10").moment(1, 2)
-    0
-    """
-    a1 = _check_order(a1, "a1")
-    a2 = _check_order(a2, "a2")
-    if a1 % 2 or a2 % 2:
-        return sp.Integer(0)
-    n, k = (a1 + a2) // 2, a1 // 2
-    c = layer.coefficients(n)
-    return (
-        (-1) ** n * sp.pi**2 * c.A_expr * c.m_expr(n)
-        * sp.binomial(n, k) * sp.factorial(2 * k) * sp.factorial(2 * n - 2 * k)
-    )
+from .. import symbols as S
+from ..display import RichDisplay, fmt
+from ..layers.kernels import LayerKernel, _check_order
+from ..layers.moments import kernel_moment
+from ..results import checked_lambdify
+from ..symbols import laplacian
 
 
 @dataclass(frozen=True)
@@ -118,6 +86,13 @@ class MomentExpansion(RichDisplay):
         """Numeric weights ``f(*params) -> (w_0, ..., w_order)`` with the layer's parameter as argument."""
         p = self.layer.parameter
         return checked_lambdify([p] if p is not None else [], list(self.weights()), backend)
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        out = [(f"MomentExpansion of {self.layer}: k(Lambda xi) ~ sum_n w_n Lambda^(-2n-2) Delta^n delta(xi), "
+               f"n <= {self.order}   (2.22)")]
+        out += [f"  w_{n} = {fmt(w)}" for n, w in enumerate(self.weights())]
+        return out
 
 
 @lru_cache(maxsize=64)

@@ -1,0 +1,168 @@
+"""Argument validators shared by every stage: one place for each rule.
+
+Imports nothing of thinlayer (it is the bottom of the import table in
+``tests/test_architecture.py``).  Each check returns the normalised value or raises a
+``TypeError``/``ValueError`` whose one-line message names the argument and what would be valid.
+"""
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Callable
+from fractions import Fraction
+from typing import Any
+
+import mpmath
+import sympy as sp
+
+__all__ = ["check_choice", "check_int", "check_list", "check_order", "parse_nu", "positive"]
+
+HALF = sp.Rational(1, 2)
+
+
+def check_order(n: Any, name: str) -> int:
+    """A non-negative integer (an order of expansion, a moment index).
+
+    >>> check_order(3, "order")
+    3
+    """
+    if isinstance(n, bool) or not isinstance(n, numbers.Integral):
+        raise TypeError(f"{name} must be a non-negative integer, got {n!r}")
+    if n < 0:
+        raise ValueError(f"{name} must be a non-negative integer, got {n}")
+    return int(n)
+
+
+def check_int(value: Any, name: str, lo: int) -> int:
+    """An integer ``>= lo`` (a count of points, modes, iterations)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < lo:
+        raise ValueError(f"{name} must be an integer >= {lo}, got {value!r}")
+    return int(value)
+
+
+def positive(value: Any, name: str) -> float:
+    """A finite positive real number, as a float.
+
+    >>> positive(2, "H")
+    2.0
+    """
+    if isinstance(value, bool) or not isinstance(value, (numbers.Real, sp.Number, mpmath.mpf)):
+        raise TypeError(f"{name} must be a positive real number, got {value!r} ({type(value).__name__})")
+    v = float(value)
+    if not (math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} must be a finite positive number, got {value!r}")
+    return v
+
+
+def check_choice(value: str, allowed: tuple[str, ...], name: str) -> str:
+    """One of a fixed set of strings."""
+    if value not in allowed:
+        raise ValueError(f"{name} must be one of {allowed}, got {value!r}")
+    return value
+
+
+def check_list(values: Any, check: Callable[[Any], Any], name: str) -> tuple:
+    """A non-empty sequence (or a single value), each checked, duplicates dropped in order."""
+    if isinstance(values, (numbers.Real, str)):
+        values = (values,)
+    try:
+        vals = tuple(values)
+    except TypeError as exc:
+        raise TypeError(f"{name} must be a sequence of numbers, got {values!r}") from exc
+    if not vals:
+        raise ValueError(f"{name} is empty: give at least one value")
+    out: list = []
+    for v in vals:
+        c = check(v)
+        if c not in out:
+            out.append(c)
+    return tuple(out)
+
+
+def _exact_binary(x: float | mpmath.mpf) -> sp.Rational:
+    """The exact rational value of a binary float."""
+    if isinstance(x, mpmath.mpf):
+        sign, man, exp, _ = x._mpf_
+        return sp.Rational(int(man) * 2 ** max(exp, 0), 2 ** max(-exp, 0)) * (-1 if sign else 1)
+    return sp.Rational(*float(x).as_integer_ratio())
+
+
+def parse_nu(
+    nu: Any,
+    *,
+    floats: str = "mpf",
+    lower: Any = -1,
+    upper: Any = HALF,
+    upper_closed: bool = False,
+    symbols: bool = True,
+    example: str = "'3/10', 0.3",
+    range_hint: str = "",
+) -> Any:
+    """The one Poisson-ratio parser: a Symbol, an exact Rational or a float, range-checked.
+
+    Parameters
+    ----------
+    nu : Symbol, int, Fraction, sympy Rational, str, float or mpmath.mpf
+        The Poisson ratio as given.  A string must be a plain number (``"3/10"``, ``"0.3"``).
+    floats : {"mpf", "exact", "Float", "float"}
+        What a float becomes: an mpmath float, its exact binary rational, a 17-digit sympy Float
+        (0.5 becomes exactly 1/2) or a Python float.
+    lower, upper : number
+        The open lower and the upper end of the admissible range.
+    upper_closed : bool
+        Whether ``nu = upper`` is admissible.
+    symbols : bool
+        Whether a sympy Symbol is returned as it is (else it is an error).
+    example : str
+        Valid values quoted in the error message.
+    range_hint : str
+        Why the range is what it is, appended to the out-of-range message.
+
+    Returns
+    -------
+    Symbol, Rational, mpmath.mpf, Float or float
+
+    Examples
+    --------
+    >>> parse_nu("3/10"), parse_nu(0.5, floats="Float", upper_closed=True)
+    (3/10, 1/2)
+    """
+    if isinstance(nu, sp.Symbol):
+        if not symbols:
+            raise TypeError(f"a numeric Poisson ratio is needed here (e.g. nu={example.split(',')[-1].strip()}), "
+                            f"got the symbol {nu}")
+        return nu
+    if isinstance(nu, bool):
+        raise TypeError("nu must be a number, got a bool")
+    if isinstance(nu, sp.Basic) and not nu.is_number:
+        raise TypeError(f"nu must be None, a Symbol or a number, got the expression {nu!r}")
+    if isinstance(nu, (sp.Rational, numbers.Integral, Fraction)):
+        val: Any = sp.Rational(nu)
+    elif isinstance(nu, str):
+        try:
+            val = sp.Rational(Fraction(nu.strip()))
+        except (TypeError, ValueError, ZeroDivisionError) as exc:
+            raise ValueError(f"nu={nu!r} is not a number; give e.g. {example}") from exc
+    elif isinstance(nu, (float, sp.Float, mpmath.mpf, numbers.Real)):
+        f = mpmath.mpf(str(nu)) if isinstance(nu, sp.Float) else mpmath.mpf(nu)
+        if not mpmath.isfinite(f):
+            raise ValueError(f"nu must be finite, got {nu!r}")
+        if floats == "exact":
+            val = _exact_binary(f)
+        elif floats == "Float":
+            val = HALF if f == 0.5 else sp.Float(float(f), 17)
+        elif floats == "float":
+            val = float(f)
+        else:
+            val = f
+    else:
+        raise TypeError(f"nu must be a Symbol, a rational or a float, got {type(nu).__name__}")
+    lo, hi = sp.Rational(lower), sp.Rational(upper)
+    v = sp.Rational(val) if isinstance(val, sp.Rational) else val
+    inside = (lo < v <= hi) if upper_closed else (lo < v < hi)
+    if not inside:
+        rel = "<=" if upper_closed else "<"
+        raise ValueError(f"Poisson ratio nu={nu!r} is outside the admissible range {lo} < nu {rel} {hi}"
+                         + (f": {range_hint}" if range_hint else ""))
+    return val
+
