@@ -22,8 +22,8 @@ def run() -> list[tuple[str, float, str]]:
     import numpy as np
 
     from thinlayer import BondedLayer, Punch, solve
-    from thinlayer.layers.coefficients import kernel_coefficients
     from thinlayer.asymptotics.solution import _edge_shifts
+    from thinlayer.layers.coefficients import kernel_coefficients
 
     punch = Punch.elliptic_paraboloid(4, 1)
     rows = []

@@ -42,14 +42,14 @@ BondedLayer(nu=0.3) BondedLayer(nu) BondedLayer(kappa)
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
 import mpmath
 import sympy as sp
 
-__all__ = ["RichDisplay", "Table", "display_math", "fmt", "table"]
+__all__ = ["RichDisplay", "Table", "display_math", "fmt", "latex_escape", "table"]
 
 def display_math(tex: str) -> str:
     r"""The LaTeX of a result (lines joined by ``\\`` and a newline) as one display block for Jupyter.
@@ -191,3 +191,13 @@ def table(header: Iterable[str], rows: Iterable[Iterable[Any]], digits: int = 12
     return Table(head, body)
 
 
+def latex_escape(text: str) -> str:
+    r"""Plain prose -> LaTeX text mode: every special character escaped.
+
+    >>> print(latex_escape("50% & x_1 \\input{f}"))
+    50\% \& x\_1 \textbackslash{}input\{f\}
+    """
+    rep = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
+           "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
+           "<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}"}
+    return "".join(rep.get(ch, ch) for ch in text)

@@ -532,7 +532,7 @@ class AlexandrovSolution(RichDisplay):
     def q(self, v_: sp.Expr = v) -> sp.Expr:
         """Normalised boundary layer (3.24), valid for ``v >= h``::
 
-            Q(v) = v erf(sqrt(B (v - h))) + sqrt((v - h)/(pi B)) exp(-B (v - h)).
+        Q(v) = v erf(sqrt(B (v - h))) + sqrt((v - h)/(pi B)) exp(-B (v - h)).
         """
         _, B, _, h = self._BCh()
         x = v_ - h
@@ -546,8 +546,8 @@ class AlexandrovSolution(RichDisplay):
     def q_general(self, tau_: sp.Expr = tau, h: sp.Expr | None = None) -> sp.Expr:
         """General solution (3.23) of (3.22) for a given edge position ``h`` (normalised by ``A``)::
 
-            Q = (tau + h) erf sqrt(B tau) + sqrt(tau/(pi B)) e^{-B tau}
-                + (h - h_0) sqrt(A/(pi tau)) e^{-B tau},     h_0 = 1/sqrt(C) - 1/(2B).
+        Q = (tau + h) erf sqrt(B tau) + sqrt(tau/(pi B)) e^{-B tau}
+            + (h - h_0) sqrt(A/(pi tau)) e^{-B tau},     h_0 = 1/sqrt(C) - 1/(2B).
         """
         A, B, C, _ = self._BCh()
         hh = sp.Symbol("h", real=True) if h is None else sp.sympify(h)

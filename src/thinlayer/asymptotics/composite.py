@@ -35,9 +35,9 @@ import sympy as sp
 
 from .. import symbols as S
 from ..display import RichDisplay, fmt
-from .inner import InnerPressure, _vartheta, inner_pressure
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
+from .inner import InnerPressure, _vartheta, inner_pressure
 
 __all__ = ["CompositePressure", "composite_pressure", "BOUNDARY_LAYERS"]
 

@@ -50,12 +50,12 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
-from ..numerics.direct import _positive
 from ..display import RichDisplay, fmt
-from .inner import _vartheta, inner_pressure
 from ..layers.kernels import LayerKernel
+from ..numerics.direct import _positive
 from ..punch import Punch, PunchError
 from ..results import checked_lambdify, latex_equation
+from .inner import _vartheta, inner_pressure
 
 __all__ = [
     "ForceLaw",

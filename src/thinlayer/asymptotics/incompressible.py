@@ -135,16 +135,15 @@ from typing import Any
 import mpmath
 import numpy as np
 import sympy as sp
-from sympy import QQ
 
 from .. import symbols as S
 from .._checks import check_order as _check_order
 from .._series import quotient_field
 from ..layers.coefficients import IncompressibleCoefficients, incompressible_coefficients
-from ..layers.kernels import HALF, BondedLayer, IncompressibleLayer, IncompressibleLayerError, LayerKernel
-from ..symbols import laplacian
+from ..layers.kernels import HALF, BondedLayer, IncompressibleLayer, LayerKernel
 from ..punch import Punch, PunchError
 from ..results import checked_lambdify, latex_equation
+from ..symbols import laplacian
 
 __all__ = [
     "EllipseValues",

@@ -29,7 +29,6 @@ import sympy as sp
 from .. import symbols as S
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel, _check_order
-from ..symbols import laplacian
 from ..punch import Punch
 from ..results import checked_lambdify
 
@@ -37,7 +36,7 @@ METHODS = ("closed", "recursion")
 
 
 def _vartheta(layer: LayerKernel) -> sp.Expr:
-    """vartheta = mu/(1 - nu) (2.1) for the layer (symbol vartheta for a GenericLayer)."""
+    """Vartheta = mu/(1 - nu) (2.1) for the layer (symbol vartheta for a GenericLayer)."""
     v = getattr(layer, "vartheta", None)
     if v is not None:
         return v
@@ -89,7 +88,8 @@ class InnerPressure(RichDisplay):
     @property
     def arguments(self) -> tuple[sp.Symbol, ...]:
         """Default argument order of :meth:`lambdify`:
-        ``(x1, x2, delta_0, H, mu)`` then every other free symbol sorted by name (nu, punch parameters)."""
+        ``(x1, x2, delta_0, H, mu)`` then every other free symbol sorted by name (nu, punch parameters).
+        """
         base = (S.x1, S.x2, S.delta0, S.H, S.mu)
         rest = sorted(self.pressure.free_symbols - set(base), key=lambda q: q.name)
         return base + tuple(rest)

@@ -22,11 +22,11 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
-from ..numerics.direct import _positive
-from .force_law import ORDERS, ForceLaw, ForceValues, force_law
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
+from ..numerics.direct import _positive
 from ..punch import Punch, PunchError
+from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
+from .force_law import ORDERS, ForceLaw, ForceValues, force_law
 
 __all__ = ["ContactSolution", "solve", "MAX_FORCE_ORDER"]
 

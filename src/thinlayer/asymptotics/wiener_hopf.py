@@ -12,7 +12,7 @@ with ``c = pi^2 vartheta H_* b_1^*(s)``.  ``int N(t) e^{i w t} dt = pi^2 F(w)``.
 F by Alexandrov's ``F~(s) = sqrt(s^2 + B^2)/(s^2 + C)`` (3.19); this module solves the equation
 with the exact kernel (2.3) and keeps F~ for comparison.
 
-Derivation (own; checked in ``tests/test_wiener_hopf.py``)
+Derivation (own; checked in ``tests/asymptotics/test_wiener_hopf.py``)
 ---------------------------------------------------------
 Extend the equation to ``tau < 0`` with an unknown left-hand side ``g(tau)`` and Fourier
 transform (``Q+(w) = int_0^oo q e^{i w tau} dtau``, analytic for ``Im w > 0``)::
@@ -186,7 +186,7 @@ class _Layer:
         return 3 - 4 * self.nu
 
     def zero_rate(self) -> float:
-        """sigma > 0 with F(i sigma) = 0: sin(2 sigma)/(2 sigma) = 1/kappa, 2 sigma in (0, pi).
+        """Sigma > 0 with F(i sigma) = 0: sin(2 sigma)/(2 sigma) = 1/kappa, 2 sigma in (0, pi).
 
         Frictionless base: ``F(iy) = (1 - cos 2y)/(y (sin 2y + 2y))``, first (double) zero ``y = pi``.
         """
@@ -198,7 +198,7 @@ class _Layer:
         return 0.5 * optimize.brentq(lambda x: math.sin(x) / x - 1 / k, 1e-12, math.pi, xtol=1e-15)
 
     def pole_rate(self) -> float:
-        """y > 0 with 1/F(i y) = 0: 2 kappa cos 2y + 1 + kappa^2 - 4 y^2 = 0 (smallest root).
+        """Y > 0 with 1/F(i y) = 0: 2 kappa cos 2y + 1 + kappa^2 - 4 y^2 = 0 (smallest root).
 
         Frictionless base: ``sin 2y + 2y`` has no real zero but 0, so F has no pole on the imaginary
         axis; the scale 1 (the thickness) is used as a quadrature breakpoint instead.
@@ -318,7 +318,7 @@ class _Normaliser:
 
 
 def _log_ratio_over_t2(kern: _Kernel, norm: _Normaliser, dps: int):
-    """t -> log(F(t)/F0(t))/t^2 in mpmath, free of the cancellation at small t.
+    """T -> log(F(t)/F0(t))/t^2 in mpmath, free of the cancellation at small t.
 
     ``log R(t) = O(t^2)``: the working precision is raised by ``2 log10(1/t)`` digits, and below
     ``10^-(dps/2+3)`` the limit ``m_1[F] - m_1[F0]`` is used (error ``O(t^2)``, below 10^-dps).

@@ -383,8 +383,8 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     ap = build_parser()
     args = ap.parse_args(argv)
-    from .derivation import DerivationFileError
     from ..punch import PunchError
+    from .derivation import DerivationFileError
 
     try:
         return args.func(args)

@@ -17,11 +17,11 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover
     import tomli as tomllib
 
-from ..layers.coefficients import kernel_coefficients
 from ..asymptotics.inner import inner_pressure
+from ..asymptotics.moment_expansion import moment_expansion
+from ..layers.coefficients import kernel_coefficients
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..layers.moments import kernel_moment
-from ..asymptotics.moment_expansion import moment_expansion
 from ..punch import Punch
 from .report import SEPARATOR
 

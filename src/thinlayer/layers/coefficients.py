@@ -15,9 +15,9 @@ numerator and denominator of L(s)/s (never by ``sympy.series`` on the whole expr
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
-from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 import mpmath
@@ -27,7 +27,13 @@ from sympy.polys.rings import ring
 
 from .. import symbols as S
 from .._checks import check_order as _check_order
-from .._series import bonded_series_parts, powers, quotient_field, quotient_fraction_free, reciprocal_recurrence
+from .._series import (
+    bonded_series_parts,
+    powers,
+    quotient_field,
+    quotient_fraction_free,
+    reciprocal_recurrence,
+)
 from ..display import RichDisplay, fmt
 from ..results import checked_lambdify
 
@@ -108,8 +114,9 @@ def _flip(f) -> tuple[int, Any]:
 
 
 def _poly_ratio_expr(num, den_factors: dict, content, domain: _PolyDomain) -> sp.Expr:
-    """sympy expression ``num / (content * prod f^e)``: factored denominator, and a factored
-    numerator when its degree is small enough for factoring to be cheap."""
+    """Sympy expression ``num / (content * prod f^e)``: factored denominator, and a factored
+    numerator when its degree is small enough for factoring to be cheap.
+    """
     if not num:
         return sp.Integer(0)
     c, prim = num.primitive()

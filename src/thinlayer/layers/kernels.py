@@ -17,25 +17,22 @@ evaluation in numpy and mpmath.
 """
 from __future__ import annotations
 
-import numbers
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
-from fractions import Fraction
 from typing import Any, ClassVar
 
 import mpmath
 import numpy as np
 import sympy as sp
 
-from . import numeric as kernel_numeric
 from .. import symbols as S
 from .._checks import check_order as _check_order
 from .._checks import parse_nu
 from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
-from .coefficients import IncompressibleCoefficients, incompressible_coefficients, kernel_coefficients
-from .moments import kernel_moment
 from ..display import RichDisplay, fmt
-
+from . import numeric as kernel_numeric
+from .coefficients import incompressible_coefficients, kernel_coefficients
+from .moments import kernel_moment
 
 HALF = sp.Rational(1, 2)
 
@@ -229,7 +226,7 @@ class BondedLayer(LayerKernel):
 
     @property
     def kappa(self):
-        """kappa = 3 - 4 nu (2.3): a sympy expression, a Rational, or an mpmath number."""
+        """Kappa = 3 - 4 nu (2.3): a sympy expression, a Rational, or an mpmath number."""
         if self.parameter_name == "kappa":
             return S.kappa
         if isinstance(self.nu, mpmath.mpf):
@@ -239,7 +236,7 @@ class BondedLayer(LayerKernel):
 
     @property
     def nu_expr(self) -> sp.Expr:
-        """nu as a sympy object (in terms of kappa when ``parameter='kappa'``)."""
+        """Nu as a sympy object (in terms of kappa when ``parameter='kappa'``)."""
         if self.parameter_name == "kappa":
             return (3 - S.kappa) / 4
         return sp.Float(self.nu, self.dps) if isinstance(self.nu, mpmath.mpf) else self.nu
@@ -248,12 +245,12 @@ class BondedLayer(LayerKernel):
 
     @property
     def vartheta(self) -> sp.Expr:
-        """vartheta = mu/(1 - nu) (2.1)."""
+        """Vartheta = mu/(1 - nu) (2.1)."""
         return S.mu / (1 - self.nu_expr)
 
     @property
     def numeric_nu(self) -> float | None:
-        """nu as a float, None for a symbolic layer."""
+        """Nu as a float, None for a symbolic layer."""
         return None if self.parameter is not None else float(self.nu)
 
     @property
@@ -467,7 +464,7 @@ class IncompressibleLayer(LayerKernel):
 
     @property
     def kappa(self) -> sp.Integer:
-        """kappa = 3 - 4 nu = 1 (2.3)."""
+        """Kappa = 3 - 4 nu = 1 (2.3)."""
         return 3 - 4 * self.nu
 
     @property
@@ -476,7 +473,7 @@ class IncompressibleLayer(LayerKernel):
 
     @property
     def vartheta(self) -> sp.Expr:
-        """vartheta = mu/(1 - nu) = 2 mu (2.1)."""
+        """Vartheta = mu/(1 - nu) = 2 mu (2.1)."""
         return S.mu / (1 - self.nu)
 
     @property

@@ -6,7 +6,14 @@
   solver :func:`thinlayer.numerics.direct.solve_axisymmetric` (:mod:`.axisymmetric`).
 """
 from .axisymmetric import AxisymmetricPunchContact, solve_axisymmetric
-from .fft2d import CoarseGridWarning, Contact2D, ContactConvergenceError, influence_coefficients, layer_correction_kernel, solve_2d
+from .fft2d import (
+    CoarseGridWarning,
+    Contact2D,
+    ContactConvergenceError,
+    influence_coefficients,
+    layer_correction_kernel,
+    solve_2d,
+)
 
 __all__ = [
     "AxisymmetricPunchContact",

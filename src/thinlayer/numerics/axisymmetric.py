@@ -16,11 +16,11 @@ from typing import Any
 
 import sympy as sp
 
-from . import direct as _direct
 from .. import symbols as S
-from .direct import AxisymmetricContact
 from ..layers.kernels import HalfSpace, LayerKernel
 from ..punch import Punch
+from . import direct as _direct
+from .direct import AxisymmetricContact
 
 __all__ = ["AxisymmetricPunchContact", "radial_profile", "solve_axisymmetric"]
 

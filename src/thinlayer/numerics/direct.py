@@ -84,7 +84,9 @@ def _positive(value: Any, name: str) -> float:
 
 def _is_incompressible(layer: Any) -> bool:
     """True for the incompressible bonded layer (kappa = 1), the one kernel that admits nu = 1/2."""
-    from ..asymptotics.incompressible import IncompressibleLayer  # late import: incompressible.py imports this module
+    from ..asymptotics.incompressible import (
+        IncompressibleLayer,  # late import: incompressible.py imports this module
+    )
 
     return isinstance(layer, IncompressibleLayer)
 

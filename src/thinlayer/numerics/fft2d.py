@@ -81,7 +81,7 @@ below H every layer acts like a half-space).  Eliminating P1: ``(1 - t)^{3/2} t^
 
 Accuracy and limitations
 ------------------------
-* Measured (tests/test_numerics_2d.py): Hertz's force is reached with error ``c (Delta/a)^2``,
+* Measured (tests/numerics/test_fft2d.py): Hertz's force is reached with error ``c (Delta/a)^2``,
   c = 0.03-0.08, observed order 2.0-2.2; the contour vertices lie within 0.15 Delta of Hertz's
   circle/ellipse (rms 0.05 Delta), the equivalent contact radius within 0.02 Delta; the staircase
   area ``contact_area_cells`` is only first-order accurate.  On a thin layer (H/a = 0.1, Delta = H/10)
@@ -114,9 +114,9 @@ import sympy as sp
 from scipy import interpolate, optimize, special
 
 from .. import symbols as S
-from .direct import _nu_and_layer, _positive
 from ..layers.kernels import HalfSpace, LayerKernel
 from ..punch import Punch
+from .direct import _nu_and_layer, _positive
 
 __all__ = [
     "CoarseGridWarning",

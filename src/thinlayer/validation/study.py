@@ -271,7 +271,8 @@ class PressureProfile:
 @dataclass(frozen=True, eq=False)
 class ContourData:
     """Contact contours for the plots: numerical polygon(s), Gamma_0 moved in by ``h^* H`` (exact h^*),
-    ``Gamma_0`` itself and Gamma_0 moved in by Alexandrov's h^*."""
+    ``Gamma_0`` itself and Gamma_0 moved in by Alexandrov's h^*.
+    """
 
     shape: str
     nu: float
@@ -656,11 +657,11 @@ def _same_ratio(got: float, want: float) -> None:
 
 
 def _sphere_case(nu: float, eps: float) -> tuple[ValidationRow, list[PressureProfile], list[ContourData]]:
-    from ..numerics.direct import contact_for_radius
+    from ..asymptotics.solution import solve
     from ..numerics import solve_axisymmetric
     from ..numerics.axisymmetric import radial_profile
+    from ..numerics.direct import contact_for_radius
     from ..punch import Punch
-    from ..asymptotics.solution import solve
 
     layer, punch = _layer(nu), Punch.paraboloid(R=_SPHERE_R)
     a0 = math.sqrt(2.0 * _SPHERE_R * _DELTA0)
@@ -770,9 +771,9 @@ def _elliptic_case(nu: float, eps: float, cells_per_H: float, workers: int | Non
     from scipy import ndimage
     from scipy.interpolate import RegularGridInterpolator
 
+    from ..asymptotics.solution import solve
     from ..numerics import solve_2d
     from ..punch import Punch
-    from ..asymptotics.solution import solve
 
     layer, punch = _layer(nu), Punch.elliptic_paraboloid(R1=_ELLIPSE_R[0], R2=_ELLIPSE_R[1])
     a1, a2, _, _, a = _ellipse_geometry()
@@ -1092,9 +1093,9 @@ def speed_comparison(nu: float = 0.3, H_over_a: float = 0.1, *, repeat: int = 3,
     lambdified force law.
     """
     from ..asymptotics.force_law import force_law
+    from ..asymptotics.solution import solve
     from ..numerics import solve_2d, solve_axisymmetric
     from ..punch import Punch
-    from ..asymptotics.solution import solve
 
     v, eps = _check_nu(nu), _check_ratio(H_over_a)
     repeat = _check_int(repeat, "repeat", 1)

@@ -8,13 +8,11 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 import pytest
 import sympy as sp
 from scipy import integrate, special
 
 from thinlayer import BondedLayer
-from thinlayer import symbols as S
 
 th, psi, sig, v, vp, eps = sp.symbols("theta psi sigma v v' epsilon", real=True)
 R1s, R2s, d0s, Hs, vt = sp.symbols("R_1^* R_2^* delta_0^* H_* vartheta", positive=True)

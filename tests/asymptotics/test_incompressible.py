@@ -25,7 +25,6 @@ import sympy as sp
 
 from thinlayer import BondedLayer, FrictionlessLayer, IncompressibleLayerError, Punch, PunchError
 from thinlayer import symbols as S
-from thinlayer.numerics.direct import solve_axisymmetric
 from thinlayer.asymptotics.incompressible import (
     IncompressibleLayer,
     _psi_chi,
@@ -45,6 +44,7 @@ from thinlayer.asymptotics.incompressible import (
     two_term_edge_shift,
     two_term_sphere,
 )
+from thinlayer.numerics.direct import solve_axisymmetric
 from thinlayer.results import MissingArgumentError
 
 slow = pytest.mark.slow

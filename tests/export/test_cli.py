@@ -9,7 +9,7 @@ import sympy as sp
 
 from thinlayer.export.cli import build_parser, main
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def run(capsys, *argv):

@@ -1,5 +1,4 @@
 """Inner expansion of the contact pressure (2.24)-(2.31), (4.1)."""
-import time
 
 import mpmath as mp
 import numpy as np
@@ -8,8 +7,16 @@ import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from thinlayer import (BondedLayer, FrictionlessLayer, GenericLayer, MissingArgumentError, Punch, PunchError,
-                       inner_pressure, moment_expansion)
+from thinlayer import (
+    BondedLayer,
+    FrictionlessLayer,
+    GenericLayer,
+    MissingArgumentError,
+    Punch,
+    PunchError,
+    inner_pressure,
+    moment_expansion,
+)
 from thinlayer import symbols as S
 
 A, m1 = GenericLayer.A_symbol, GenericLayer.m_symbol(1)

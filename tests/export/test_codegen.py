@@ -46,7 +46,7 @@ from thinlayer import (
 )
 from thinlayer.export.codegen import LANGUAGES, NameCollisionError, generate, generate_all, identifier
 
-GOLDEN = Path(__file__).parent / "golden"
+GOLDEN = Path(__file__).resolve().parents[1] / "golden"
 UPDATE = os.environ.get("THINLAYER_UPDATE_GOLDEN") == "1"
 RTOL = 1e-12
 

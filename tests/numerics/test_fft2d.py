@@ -45,13 +45,13 @@ import sympy as sp
 from scipy import integrate, optimize, special
 
 from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace, Punch
-from thinlayer.numerics import direct
 from thinlayer import symbols as S
 from thinlayer.numerics import (
     AxisymmetricPunchContact,
     CoarseGridWarning,
     Contact2D,
     ContactConvergenceError,
+    direct,
     influence_coefficients,
     layer_correction_kernel,
     solve_2d,

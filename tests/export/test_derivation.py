@@ -7,7 +7,7 @@ import pytest
 from thinlayer.export.cli import main
 from thinlayer.export.derivation import DerivationFileError, load_derivation, report_latex, write_report
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_default_derivation_report(tmp_path):

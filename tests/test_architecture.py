@@ -1,0 +1,244 @@
+"""The package's architecture: imports go one way along the pipeline, and nothing reaches inside.
+
+Every import of every module is parsed (imports inside functions too; those under
+``if TYPE_CHECKING:`` are never executed and are left out).  The allowed direction is one table,
+:data:`RANK`: a module may import a module of its own group or of a lower rank, never a higher one,
+and two groups of the same rank (the asymptotic stages and the direct numerics) never import each
+other.  Inside ``asymptotics/`` the stages import only earlier ones, in the paper's order
+(:data:`STAGES`).  Also checked: no private name crosses a module boundary, no import cycle, the
+symbolic pipeline loads neither scipy nor the numerics, no code outside ``layers/`` asks a layer
+for its concrete type or name, and no module is over 900 lines without a one-line reason at its top.
+"""
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "thinlayer"
+
+#: group -> rank.  A module imports only from its own group or from a lower rank.
+RANK = {
+    "thinlayer._checks": 0,      # argument validators: import nothing of thinlayer
+    "thinlayer._series": 0,      # power-series arithmetic
+    "thinlayer.symbols": 0,      # the paper's symbols
+    "thinlayer.results": 1,      # Result protocol, checked_lambdify
+    "thinlayer.display": 1,      # text and Jupyter display
+    "thinlayer.layers": 2,       # (2.3)-(2.4), (2.15), (2.20), (2.21), (4.2), (I.1): the kernels and their data
+    "thinlayer.punch": 3,        # (1.1), (2.13): the punch catalogue
+    "thinlayer.asymptotics": 4,  # (2.14)-(3.25), (4.1), (I.2)-(I.13): the stages of the paper
+    "thinlayer.numerics": 4,     # (1.5)-(1.8) solved directly: independent of the asymptotics
+    "thinlayer.errata": 5,       # printed vs derived equations, each re-derived by the stages
+    "thinlayer.validation": 6,   # the only place that imports stages and numerics together
+    "thinlayer.export": 7,       # report, derivation files, code generation, CLI
+    "thinlayer": 8,              # the front door (__init__) and __main__
+}
+
+#: asymptotic stages in the paper's order: each imports only earlier ones
+STAGES = [
+    "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "composite",
+    "incompressible", "solution",
+]
+
+#: modules whose import must not load scipy (the symbolic pipeline)
+SYMBOLIC = ["thinlayer.layers", "thinlayer.punch", "thinlayer.asymptotics.moment_expansion",
+            "thinlayer.asymptotics.inner", "thinlayer.asymptotics.force_law", "thinlayer.asymptotics.solution"]
+
+LAYER_CLASSES = {"BondedLayer", "FrictionlessLayer", "HalfSpace", "GenericLayer", "IncompressibleLayer"}
+
+
+def _module_name(path: Path) -> str:
+    parts = ["thinlayer", *path.relative_to(SRC).with_suffix("").parts]
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+MODULES = {_module_name(p): p for p in sorted(SRC.rglob("*.py"))}
+
+
+def _is_package(mod: str) -> bool:
+    return MODULES[mod].name == "__init__.py"
+
+
+def _type_checking_lines(tree: ast.AST) -> set[int]:
+    lines: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            for sub in node.body:
+                lines.update(range(sub.lineno, sub.end_lineno + 1))
+    return lines
+
+
+def _imports(mod: str) -> list[tuple[str, str | None, int]]:
+    """``(imported module, imported name or None, line)`` for every executed import of ``mod``."""
+    tree = ast.parse(MODULES[mod].read_text())
+    skip = _type_checking_lines(tree)
+    package = mod if _is_package(mod) else mod.rsplit(".", 1)[0]
+    out = []
+    for node in ast.walk(tree):
+        if getattr(node, "lineno", None) in skip:
+            continue
+        if isinstance(node, ast.Import):
+            out += [(a.name, None, node.lineno) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")
+                base = base[: len(base) - (node.level - 1)]
+                target = ".".join(base + ([node.module] if node.module else []))
+            else:
+                target = node.module or ""
+            for a in node.names:
+                sub = f"{target}.{a.name}"
+                if sub in MODULES:  # "from . import symbols": the module itself
+                    out.append((sub, None, node.lineno))
+                else:
+                    out.append((target, a.name, node.lineno))
+    return out
+
+
+def _group(mod: str) -> str:
+    best = max((g for g in RANK if mod == g or mod.startswith(g + ".")), key=len)
+    return best
+
+
+def _internal_edges() -> list[tuple[str, str, str | None, int]]:
+    return [(m, t, name, line) for m in MODULES for t, name, line in _imports(m)
+            if t == "thinlayer" or t.startswith("thinlayer.")]
+
+
+def test_every_module_has_a_group():
+    assert all(_group(m) for m in MODULES)
+
+
+def test_imports_follow_the_table():
+    bad = []
+    for mod, target, _, line in _internal_edges():
+        g, h = _group(mod), _group(target)
+        if g == h:
+            continue
+        if RANK[h] > RANK[g] or (RANK[h] == RANK[g]):
+            bad.append(f"{mod}:{line} imports {target} ({h}, rank {RANK[h]} > {g}, rank {RANK[g]})"
+                       if RANK[h] > RANK[g] else f"{mod}:{line} imports {target}: {g} and {h} are independent")
+    assert not bad, "\n".join(bad)
+
+
+def _stage(mod: str) -> str | None:
+    parts = mod.split(".")
+    if len(parts) >= 3 and parts[1] == "asymptotics":
+        return parts[2]
+    return None
+
+
+def test_stages_import_only_earlier_stages():
+    bad = []
+    for mod, target, _, line in _internal_edges():
+        a, b = _stage(mod), _stage(target)
+        if a and b and a != b and a in STAGES and b in STAGES and STAGES.index(b) > STAGES.index(a):
+            bad.append(f"{mod}:{line} imports the later stage {target}")
+    unknown = {s for m in MODULES if (s := _stage(m)) and s not in STAGES and not s.startswith("_")}
+    assert not unknown, f"stages missing from STAGES: {unknown}"
+    assert not bad, "\n".join(bad)
+
+
+def test_no_private_name_crosses_a_module():
+    bad = []
+    for mod, target, name, line in _internal_edges():
+        if name and name.startswith("_") and not name.startswith("__") and target != mod:
+            bad.append(f"{mod}:{line} imports {target}.{name}")
+        if name is None and target.rsplit(".", 1)[-1].startswith("_") and _group(target) != _group(mod) \
+                and target not in ("thinlayer._checks", "thinlayer._series"):
+            bad.append(f"{mod}:{line} imports the private module {target}")
+    # attribute access to a private name of an imported module: ``module._name``
+    for mod, path in MODULES.items():
+        tree = ast.parse(path.read_text())
+        aliases = {}
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.Import, ast.ImportFrom)):
+                for a in node.names:
+                    aliases[a.asname or a.name.split(".")[0]] = a.name
+        mods = {alias for alias, name in aliases.items()
+                if name in {m.rsplit(".", 1)[-1] for m in MODULES} or name.startswith("thinlayer")}
+        for node in ast.walk(tree):
+            if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in mods
+                    and node.attr.startswith("_") and not node.attr.startswith("__")):
+                bad.append(f"{mod}:{node.lineno} uses {node.value.id}.{node.attr}")
+    assert not bad, "\n".join(bad)
+
+
+def test_no_import_cycle():
+    graph: dict[str, set[str]] = {m: set() for m in MODULES}
+    for mod, target, _, _ in _internal_edges():
+        if target in MODULES and target != mod:
+            graph[mod].add(target)
+    # a package's __init__ importing its own submodules is how re-exports work: not a cycle
+    for mod in list(graph):
+        graph[mod] = {t for t in graph[mod] if not (_is_package(t) and mod.startswith(t + "."))}
+    state: dict[str, int] = {}
+    stack: list[str] = []
+    cycles = []
+
+    def visit(m: str) -> None:
+        state[m] = 1
+        stack.append(m)
+        for t in graph[m]:
+            if state.get(t) == 1:
+                cycles.append(" -> ".join(stack[stack.index(t):] + [t]))
+            elif t not in state:
+                visit(t)
+        stack.pop()
+        state[m] = 2
+
+    for m in graph:
+        if m not in state:
+            visit(m)
+    assert not cycles, "\n".join(cycles)
+
+
+@pytest.mark.parametrize("mod", SYMBOLIC)
+def test_symbolic_pipeline_imports_no_scipy_and_no_numerics(mod):
+    """Module-level imports only: a function may still import scipy for a numeric evaluation."""
+    assert _top_level_scipy(mod) == [], f"{mod} imports {_top_level_scipy(mod)} at module level"
+
+
+def _top_level_scipy(mod: str) -> list[str]:
+    """Module-level (not function-level) imports of scipy or the numerics by ``mod`` and its package."""
+    mods = [m for m in MODULES if m == mod or m.startswith(mod + ".")]
+    bad = []
+    for m in mods:
+        tree = ast.parse(MODULES[m].read_text())
+        for node in tree.body:
+            if isinstance(node, ast.Import):
+                bad += [a.name for a in node.names if a.name.split(".")[0] == "scipy"]
+            elif isinstance(node, ast.ImportFrom) and (node.module or "").split(".")[0] == "scipy":
+                bad.append(node.module)
+        bad += [t for t, _, _ in _imports(m) if t.startswith("thinlayer.numerics")]
+    return bad
+
+
+def test_no_layer_type_or_name_checks_outside_layers():
+    bad = []
+    for mod, path in MODULES.items():
+        if _group(mod) == "thinlayer.layers":
+            continue
+        tree = ast.parse(path.read_text())
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Call) and getattr(node.func, "id", "") == "isinstance" and len(node.args) == 2:
+                names = {n.id for n in ast.walk(node.args[1]) if isinstance(n, ast.Name)}
+                names |= {n.attr for n in ast.walk(node.args[1]) if isinstance(n, ast.Attribute)}
+                if names & LAYER_CLASSES:
+                    bad.append(f"{mod}:{node.lineno} isinstance(..., {', '.join(sorted(names & LAYER_CLASSES))})")
+            if isinstance(node, ast.Compare):
+                for side in [node.left, *node.comparators]:
+                    if (isinstance(side, ast.Attribute) and side.attr == "name"
+                            and "layer" in ast.unparse(side.value).lower()):
+                        bad.append(f"{mod}:{node.lineno} compares {ast.unparse(side)}")
+    assert not bad, "\n".join(bad)
+
+
+def test_module_size():
+    bad = []
+    for mod, path in MODULES.items():
+        lines = path.read_text().splitlines()
+        if len(lines) > 900 and not any(line.startswith("# size:") for line in lines[:3]):
+            bad.append(f"{mod}: {len(lines)} lines and no '# size: <reason>' line at its top")
+    assert not bad, "\n".join(bad)
