@@ -13,6 +13,7 @@ Lambda stays visible in Phi^*.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import sympy as sp
 
@@ -50,6 +51,9 @@ class Punch(RichDisplay):
     >>> p.degree
     2
     """
+
+    #: the paper's equation this result reproduces
+    equation: ClassVar[str] = "1.1"
 
     expr: sp.Expr
     scaling: tuple = ()

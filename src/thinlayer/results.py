@@ -1,5 +1,10 @@
 """Immutable result objects: every stage of the derivation returns one.
 
+:class:`Result` is the one protocol they share: the paper's ``equation`` they reproduce, their
+``latex()`` and their own ``text_lines()`` (what ``print`` shows, through
+:class:`~thinlayer.display.RichDisplay`).  A :class:`SymbolicResult` also turns into numbers with
+``lambdify()``, which the code generators (:mod:`thinlayer.export.codegen`) read the same way.
+
 A result knows the paper's equation number it reproduces, prints itself as LaTeX and
 turns into numeric functions through :func:`checked_lambdify`, which refuses any
 expression with a free symbol that is not among the named arguments.
@@ -8,10 +13,35 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
+from typing import Any, Protocol, runtime_checkable
 
 import sympy as sp
 
 BACKENDS = ("numpy", "mpmath", "math", "sympy")
+
+
+@runtime_checkable
+class Result(Protocol):
+    """What every result of a stage offers: its equation, its LaTeX and its text."""
+
+    equation: str
+
+    def latex(self) -> str:
+        """The result as tagged LaTeX (the equation number in a tag)."""
+        ...
+
+    def text_lines(self) -> list[str]:
+        """The lines ``print(result)`` shows."""
+        ...
+
+
+@runtime_checkable
+class SymbolicResult(Result, Protocol):
+    """A result whose formulas become numeric functions (and generated code)."""
+
+    def lambdify(self, *args: Any, **kwargs: Any) -> Callable:
+        """The formulas as a numeric function (:func:`checked_lambdify`)."""
+        ...
 
 
 class MissingArgumentError(ValueError):
@@ -97,7 +127,7 @@ class Equation:
 
 
 def latex_equation(lhs: sp.Expr | str, rhs: sp.Expr | str, number: str | None) -> str:
-    """LaTeX of ``lhs = rhs`` with an optional ``\\tag`` of the paper's equation number."""
+    r"""LaTeX of ``lhs = rhs`` with an optional ``\tag`` of the paper's equation number."""
     l = lhs if isinstance(lhs, str) else sp.latex(lhs)
     r = rhs if isinstance(rhs, str) else sp.latex(rhs)
     tag = rf" \tag{{{number}}}" if number else ""

@@ -21,13 +21,13 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from thinlayer import symbols as S
+from thinlayer.asymptotics._contour_region import Poly2 as _Poly2
+from thinlayer.asymptotics._contour_region import as_polynomial as _as_polynomial
+from thinlayer.asymptotics._contour_region import region_curve as _region_curve
 from thinlayer.asymptotics.contour import (
     ContactContour,
-    _as_polynomial,
     _nodes_by_ode,
     _nodes_by_reference,
-    _Poly2,
-    _region_curve,
     contact_contour,
     ellipse_contour,
 )

@@ -86,7 +86,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any
+from typing import Any, ClassVar
 
 import mpmath
 import numpy as np
@@ -231,6 +231,9 @@ class AlexandrovParameters(RichDisplay):
     (3.21) ``1/C - 1/(2B^2) = -m_1``.  Attributes are sympy expressions of nu for a symbolic
     layer, exact sympy numbers for an exact nu, mpmath numbers for a float nu.
     """
+
+    #: the paper's equation this result reproduces
+    equation: ClassVar[str] = "3.19"
 
     A: Any
     m1: Any
@@ -515,6 +518,9 @@ class AlexandrovSolution(RichDisplay):
     ``Q(v) ~ v`` as ``v -> oo`` (matching the inner pressure (2.29), linear in the distance from
     the contour), ``Q(h) = 0`` (3.18), ``h`` from (3.25).
     """
+
+    #: the paper's equation this result reproduces
+    equation: ClassVar[str] = "3.23"
 
     params: AlexandrovParameters
     h: Any

@@ -37,7 +37,7 @@ from .. import symbols as S
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
-from .inner import InnerPressure, _vartheta, inner_pressure
+from .inner import InnerPressure, inner_pressure
 
 __all__ = ["CompositePressure", "composite_pressure", "BOUNDARY_LAYERS"]
 
@@ -173,7 +173,7 @@ class CompositePressure(RichDisplay):
         v = (a - sp.sqrt(S.x1**2 + S.x2**2)) / S.H
         nu = {S.nu: self._nu} if self._nu is not None else {}
         p_in = self.inner.pressure.subs({S.delta0: self.delta0, **nu})
-        amp = (_vartheta(self.layer).subs(nu) / self.layer.A).subs(S.mu, 1)
+        amp = (self.layer.vartheta.subs(nu) / self.layer.A).subs(S.mu, 1)
         val = p_in + sp.Float(float(amp), 17) * S.mu * g * (Q.subs(vs, v) - v)
         pc = sp.Piecewise((0, v <= sp.Float(self.h, 17)), (0, val < 0), (val, True))
         return (S.x1, S.x2, S.H, S.mu), {"p": pc}
@@ -183,7 +183,7 @@ class CompositePressure(RichDisplay):
         return self
 
     def latex(self) -> str:
-        th = sp.latex(_vartheta(self.layer))
+        th = sp.latex(self.layer.vartheta)
         kind = "exact (2.3)" if self.boundary_layer == "exact" else "Alexandrov (3.24)"
         return (
             r"p_c(\mathbf{x}) = p_{\mathrm{in}}(\mathbf{x}) + \frac{" + th + r"\,|\nabla\Phi(s)|}{\mathcal{A}}"
@@ -195,10 +195,12 @@ class CompositePressure(RichDisplay):
         """The lines of ``str(self)``."""
         kind = "exact (2.3)" if self.boundary_layer == "exact" else "Alexandrov (3.24)"
         return [
-            f"CompositePressure: inner ({self.inner.order} terms) + {kind} boundary layer - common part   (2.26), (3.24)",
+            f"CompositePressure: inner ({self.inner.order} terms) + {kind} boundary layer - common part"
+            "   (2.26), (3.24)",
             f"  {self.punch.name}: Phi = {fmt(self.punch.expr)} on {self.layer}",
             f"  delta0 = {self.delta0:.6g}, H = {self.H:.6g}, mu = {self.mu:.6g}",
-            f"  h* = {self.h:.10g}, amplitude vartheta/A = {self.amplitude:.10g}, boundary layer for n/H < {self.band:.4g}",
+            f"  h* = {self.h:.10g}, amplitude vartheta/A = {self.amplitude:.10g}, "
+            f"boundary layer for n/H < {self.band:.4g}",
         ]
 
 
@@ -231,7 +233,7 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
     if nu is not None:
         vals[S.nu] = nu
     p_expr = inner.pressure.subs(vals)
-    th = float(_vartheta(layer).subs(vals))
+    th = float(layer.vartheta.subs(vals))
     p_lam = sp.lambdify((S.x1, S.x2), p_expr, modules="numpy", cse=True)
 
     def p_in(a, b):

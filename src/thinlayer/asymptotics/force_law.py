@@ -50,12 +50,12 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import positive as _positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
-from ..numerics.direct import _positive
 from ..punch import Punch, PunchError
 from ..results import checked_lambdify, latex_equation
-from .inner import _vartheta, inner_pressure
+from .inner import inner_pressure
 
 __all__ = [
     "ForceLaw",
@@ -243,7 +243,7 @@ class ForceLaw(RichDisplay):
     @property
     def general(self) -> sp.Expr:
         """The law in terms of the integrals ``V``, ``J`` (any punch)."""
-        th = _vartheta(self.layer)
+        th = self.layer.vartheta
         return th / (self.layer.A * S.H) * _V + self.coefficient * _J
 
     @property
@@ -291,7 +291,7 @@ class ForceLaw(RichDisplay):
         return tuple(a for a in self.arguments if a in free), outs
 
     def latex(self) -> str:
-        th = _vartheta(self.layer)
+        th = self.layer.vartheta
         names = {_V: r"\iint_{\omega_0}(\delta_0 - \Phi)\,d\mathbf{x}",
                  _J: r"\oint_{\Gamma_0}|\nabla\Phi|\,ds"}
         rem_P = r" + O\!\left(P_0 \frac{H^3}{a^3}\right)"
@@ -352,9 +352,9 @@ class ForceLaw(RichDisplay):
         sub = {S.delta0: d0, S.H: HH, S.mu: mm, **vals}
         if nu is not None:
             sub[S.nu] = sp.nsimplify(nu) if isinstance(nu, str) else nu
-        th_expr = _vartheta(self.layer).subs(sub)
+        th_expr = self.layer.vartheta.subs(sub)
         if not th_expr.is_number:
-            raise ValueError(f"vartheta = {_vartheta(self.layer)} needs the Poisson ratio: pass nu= "
+            raise ValueError(f"vartheta = {self.layer.vartheta} needs the Poisson ratio: pass nu= "
                              f"(the {self.layer.name} kernel does not fix it)")
         th = float(th_expr)
         A = float(self.layer.A)
@@ -439,7 +439,8 @@ class ForceLaw(RichDisplay):
                     f"  P1 = {fmt(self.P1)}",
                     f"  |omega| = {fmt(self.area0)} - h* H ({fmt(self.perimeter)}) + O(|omega| (H/a)**2)"]
         else:
-            out += ["  P  = vartheta/(A H) iint_omega0 (delta0 - Phi) dx + c oint_Gamma0 |grad Phi| ds + O(P0 (H/a)**3)",
+            out += ["  P  = vartheta/(A H) iint_omega0 (delta0 - Phi) dx + c oint_Gamma0 |grad Phi| ds"
+                    " + O(P0 (H/a)**3)",
                     f"  c  = {fmt(self.coefficient)}",
                     "  no closed form: use .evaluate(delta0, H, mu, ...) (integrals over the contact contour)"]
         return out
@@ -473,12 +474,12 @@ def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
         raise TypeError(f"layer must be a thinlayer layer kernel (e.g. BondedLayer(0.3)), got {layer!r}")
     if not isinstance(punch, Punch):
         punch = Punch(punch)
-    if layer.name == "half-space":
+    if not layer.has_thickness:
         raise ValueError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
     inner = inner_pressure(layer, punch, order=2)
     lap = punch.laplacian()
     p1 = inner.terms[1]
-    th = _vartheta(layer)
+    th = layer.vartheta
     # p_1 = (vartheta H / A) M_1 Laplacian(Phi) (4.1): read the factor off the derived term
     p1_factor = sp.cancel(p1 / lap) if lap != 0 else th * S.H * layer.M(1) / layer.A
     if p1_factor.has(S.x1) or p1_factor.has(S.x2):

@@ -27,20 +27,13 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import check_order as _check_order
 from ..display import RichDisplay, fmt
-from ..layers.kernels import LayerKernel, _check_order
+from ..layers.kernels import LayerKernel
 from ..punch import Punch
 from ..results import checked_lambdify
 
 METHODS = ("closed", "recursion")
-
-
-def _vartheta(layer: LayerKernel) -> sp.Expr:
-    """Vartheta = mu/(1 - nu) (2.1) for the layer (symbol vartheta for a GenericLayer)."""
-    v = getattr(layer, "vartheta", None)
-    if v is not None:
-        return v
-    return S.vartheta if layer.name == "generic" else S.VARTHETA
 
 
 @dataclass(frozen=True)
@@ -219,7 +212,7 @@ def inner_pressure(layer: LayerKernel, punch: Punch, order: int | None = None,
     _check_order(order, "order")
     coef = layer.coefficients(order - 1)
     A = coef.A_expr
-    theta = _vartheta(layer)
+    theta = layer.vartheta
     gap, gap_s = _gap_dicts(punch)
     pref = theta / (A * S.H)  # dimensional p_0 = pref (delta_0 - Phi)
     pref_s = S.vartheta / (A * S.H_s)  # phi^*/(pi^2 A) = pref_s (delta_0^* - Phi^*), (2.25), (2.27)

@@ -27,8 +27,9 @@ from functools import lru_cache
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import check_order as _check_order
 from ..display import RichDisplay, fmt
-from ..layers.kernels import LayerKernel, _check_order
+from ..layers.kernels import LayerKernel
 from ..layers.moments import kernel_moment
 from ..results import checked_lambdify
 from ..symbols import laplacian

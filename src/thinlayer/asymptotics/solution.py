@@ -17,13 +17,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
-from typing import Any
+from typing import Any, ClassVar
 
 import mpmath
 import sympy as sp
 
-from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
-from ..numerics.direct import _positive
+from .._checks import parse_nu
+from .._checks import positive as _positive
+from ..layers.kernels import LayerKernel
 from ..punch import Punch, PunchError
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, force_law
@@ -46,18 +47,7 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     """The layer and its numeric Poisson ratio (given by the layer, or by ``nu`` for a nu-free kernel)."""
     if not isinstance(layer, LayerKernel):
         raise TypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3); got {layer!r}")
-    if isinstance(layer, FrictionlessLayer):
-        if nu is None:
-            raise ValueError("the frictionless-base kernel does not fix the Poisson ratio: pass nu= "
-                             "(-1 < nu < 1/2) for vartheta = mu/(1 - nu)")
-        try:
-            nv = float(sp.nsimplify(nu)) if isinstance(nu, str) else float(nu)
-        except (TypeError, ValueError, sp.SympifyError) as exc:
-            raise ValueError(f"nu must be a number in (-1, 1/2), got {nu!r}") from exc
-        if isinstance(nu, bool) or not -1 < nv < 0.5:
-            raise ValueError(f"nu = {nu!r} is outside the admissible range -1 < nu < 1/2")
-        return layer, nv
-    if not isinstance(layer, BondedLayer):
+    if layer.base is None or not layer.has_compressible_expansion or layer.symbolic_coefficients:
         raise NotImplementedError(
             f"solve() supports BondedLayer and FrictionlessLayer, got {type(layer).__name__}; "
             "the boundary layer and edge shift are derived for those kernels"
@@ -65,9 +55,15 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     if layer.parameter is not None:
         raise ValueError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
                          "not the symbolic BondedLayer()")
-    if nu is not None and abs(float(nu) - float(layer.nu)) > 1e-12:
-        raise ValueError(f"nu = {nu!r} disagrees with the layer's Poisson ratio {float(layer.nu)}")
-    return layer, float(layer.nu)
+    fixed = layer.numeric_nu
+    if fixed is None:  # the kernel does not depend on nu (frictionless base): vartheta still does
+        if nu is None:
+            raise ValueError(f"the {layer.base}-base kernel does not fix the Poisson ratio: pass nu= "
+                             "(-1 < nu < 1/2) for vartheta = mu/(1 - nu)")
+        return layer, parse_nu(nu, floats="float", example="0.3, '3/10'")
+    if nu is not None and abs(float(nu) - fixed) > 1e-12:
+        raise ValueError(f"nu = {nu!r} disagrees with the layer's Poisson ratio {fixed}")
+    return layer, fixed
 
 
 def _numeric_punch(punch: Any, parameters: dict | None) -> Punch:
@@ -103,6 +99,9 @@ class ContactSolution:
     boundary_layer:
         ``"exact"`` or ``"alexandrov"``: which boundary layer :attr:`pressure` uses.
     """
+
+    #: the paper's equation this result reproduces
+    equation: ClassVar[str] = "1.8"
 
     layer: LayerKernel
     punch: Punch
@@ -197,7 +196,7 @@ class ContactSolution:
         v = self.values
         nu = getattr(self.layer, "nu", None)
         nu = sp.latex(sp.nsimplify(self.nu) if nu is None or isinstance(nu, mpmath.mpf) else nu)
-        if isinstance(self.layer, FrictionlessLayer):
+        if self.layer.base == "frictionless":
             nu += r"\ (\text{frictionless base})"
         rows = [
             rf"\Phi = {sp.latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
@@ -211,11 +210,15 @@ class ContactSolution:
         ]
         return " \\\\\n".join(rows)
 
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return str(self).splitlines()
+
     def __str__(self) -> str:
         v = self.values
         return (
             f"ContactSolution({self.punch.name}: delta0={self.delta0:.6g}, H={self.H:.6g}, mu={self.mu:.6g}, "
-            f"nu={self.nu:.6g}{', frictionless base' if isinstance(self.layer, FrictionlessLayer) else ''}; "
+            f"nu={self.nu:.6g}{', frictionless base' if self.layer.base == 'frictionless' else ''}; "
             f"H/a={self.H_over_a:.3g})\n"
             f"  force        P = {v.force:.8g}  (leading {v.P0:.8g}, correction {v.P1:+.6g}; "
             f"remainder ~{v.P0 * self.H_over_a**3:.1g})\n"
@@ -302,9 +305,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         contour = contact_contour(pn.expr, d0)
     else:
         _check_contact(law, d0)
-    from .wiener_hopf import _rational_nu
-
-    h_ex, h_al = _edge_shifts(_rational_nu(layer))
+    h_ex, h_al = _edge_shifts(layer.edge_shift_key)
     vals = law.evaluate(d0, HH, mm, edge_shift=h_ex, contour=contour, nu=nu_value)
     if order == 0:
         vals = ForceValues(vals.delta0, vals.H, vals.P0, 0.0, vals.area0, vals.perimeter, 0.0, vals.V, vals.J)

@@ -83,15 +83,16 @@ import numbers
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import lru_cache
-from typing import Any
+from typing import Any, ClassVar
 
 import mpmath
 import numpy as np
 import sympy as sp
 from scipy import optimize, special
 
+from .._checks import parse_nu
 from ..display import RichDisplay, fmt
-from ..layers.kernels import BondedLayer, FrictionlessLayer
+from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 
 __all__ = [
     "KERNELS",
@@ -124,42 +125,18 @@ FRICTIONLESS = "frictionless"
 def _rational_nu(nu: Any) -> sp.Rational | str:
     """Exact rational value of a Poisson ratio (a float is taken as its exact binary value).
 
-    A :class:`~thinlayer.FrictionlessLayer` (or the string ``"frictionless"``) gives the key
-    ``FRICTIONLESS``: its kernel is independent of nu.
+    A layer gives its :attr:`~thinlayer.layers.kernels.LayerKernel.edge_shift_key`: its exact nu, or
+    ``FRICTIONLESS`` for the frictionless base (its kernel is independent of nu); so does the string
+    ``"frictionless"``.
     """
-    if isinstance(nu, FrictionlessLayer) or nu == FRICTIONLESS:
+    if isinstance(nu, LayerKernel):
+        return nu.edge_shift_key
+    if isinstance(nu, str) and nu == FRICTIONLESS:
         return FRICTIONLESS
-    if isinstance(nu, BondedLayer):
-        if nu.parameter is not None:
-            raise ValueError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
-                             "(give BondedLayer(0.3), BondedLayer('3/10') or a number)")
-        nu = nu.nu
     if isinstance(nu, bool) or not isinstance(nu, (numbers.Real, str, mpmath.mpf, sp.Basic, Fraction)):
         raise TypeError(f"nu must be a real number in (-1, 1/2) or a BondedLayer, got {type(nu).__name__}")
-    if isinstance(nu, sp.Basic) and not nu.is_number:
-        raise TypeError(f"nu must be a number, got the expression {nu!r}")
-    if isinstance(nu, mpmath.mpf):
-        if not mpmath.isfinite(nu):
-            raise ValueError(f"nu must be finite, got {nu}")
-        sign, man, exp, _ = nu._mpf_
-        val = sp.Rational(int(man) * 2 ** max(exp, 0), 2 ** max(-exp, 0)) * (-1 if sign else 1)
-    elif isinstance(nu, float):
-        if not math.isfinite(nu):
-            raise ValueError(f"nu must be finite, got {nu}")
-        val = sp.Rational(*nu.as_integer_ratio())
-    elif isinstance(nu, sp.Float):
-        val = sp.Rational(nu)
-    elif isinstance(nu, str):
-        try:
-            val = sp.Rational(nu)
-        except (TypeError, ValueError, sp.SympifyError) as exc:
-            raise ValueError(f"nu={nu!r} is not a number; give e.g. '3/10' or 0.3") from exc
-    else:
-        val = sp.Rational(nu)
-    if not (-1 < val < sp.Rational(1, 2)):
-        raise ValueError(f"Poisson ratio nu={nu!r} is outside the admissible range -1 < nu < 1/2 "
-                         "(A = (1-2nu)/(2(1-nu)^2) must be positive)")
-    return val
+    return parse_nu(nu, floats="exact", symbols=False, example="'3/10' or 0.3",
+                    range_hint="A = (1-2nu)/(2(1-nu)^2) must be positive")
 
 
 def _check_choice(value: str, allowed: tuple[str, ...], name: str) -> str:
@@ -457,7 +434,7 @@ class EdgeShiftTable(RichDisplay):
 
 def edge_shift_table(nus: Any, dps: int = 20) -> EdgeShiftTable:
     """Exact and Alexandrov edge shifts for each Poisson ratio in ``nus`` (3.18), (3.25)."""
-    if isinstance(nus, (str, numbers.Real, BondedLayer)):
+    if isinstance(nus, (str, numbers.Real, LayerKernel)):
         nus = [nus]
     rows = []
     for nu in nus:
@@ -575,6 +552,9 @@ class WienerHopfSolution(RichDisplay):
     sigma, tau_max:
         ``qhat - tau - h = O(e^{-sigma tau})``; the table covers ``0 <= tau <= tau_max``.
     """
+
+    #: the paper's equation this result reproduces
+    equation: ClassVar[str] = "3.18"
 
     nu: sp.Rational
     kernel: str
