@@ -18,6 +18,7 @@ import sympy as sp
 
 from . import symbols as S
 from .display import latex_escape
+from .parse import as_expr
 
 
 @dataclass(frozen=True)
@@ -44,7 +45,7 @@ class Erratum:
 # --------------------------------------------------------------------------- checks
 def _series_F(nu, order: int) -> sp.Expr:
     """Independent route: sympy's own ``series`` of L(s)/s (2.3) at low order (not the engine's method)."""
-    k = 3 - 4 * sp.sympify(nu)
+    k = 3 - 4 * as_expr(nu)
     s = S.s
     L = (2 * k * sp.sinh(2 * s) - 4 * s) / (2 * k * sp.cosh(2 * s) + 1 + k**2 + 4 * s**2)
     return sp.series(L / s, s, 0, 2 * order + 1).removeO()

@@ -19,6 +19,7 @@ import sympy as sp
 
 from . import symbols as S
 from .display import RichDisplay, fmt
+from .parse import ExpressionError, as_expr, parse_expression
 from .symbols import laplacian
 
 
@@ -64,10 +65,16 @@ class Punch(RichDisplay):
                  name: str = "punch"):
         if isinstance(expr, str):
             try:
-                expr = sp.sympify(expr, locals={x1.name: x1, x2.name: x2})
-            except (sp.SympifyError, SyntaxError, TypeError) as exc:
-                raise PunchError(f"could not parse the punch expression {expr!r}: {exc}") from exc
-        expr = sp.sympify(expr)
+                expr = parse_expression(expr, what="punch")
+            except ExpressionError as exc:
+                raise PunchError(f"the punch: {exc}") from None
+        if expr is None or isinstance(expr, (bool, bytes)):
+            raise PunchError(f"the punch must be a polynomial in x_1, x_2 (a sympy expression or a string such as "
+                             f"'x_1**2/2 + x_2**2/2'), got {expr!r}")
+        try:
+            expr = as_expr(expr, "the punch")
+        except (TypeError, ValueError) as exc:
+            raise PunchError(str(exc)) from None
         if not isinstance(x1, sp.Symbol) or not isinstance(x2, sp.Symbol) or x1 == x2:
             raise PunchError(f"x1 and x2 must be two different sympy Symbols, got {x1!r}, {x2!r}")
         # the user's coordinates may be any symbols (also unassumed ones): map onto the canonical ones
@@ -86,7 +93,7 @@ class Punch(RichDisplay):
         poly = sp.Poly(expr, S.x1, S.x2)
         if poly.total_degree() < 1:
             raise PunchError(f"the punch Phi = {expr} is constant; it must depend on {x1} or {x2}")
-        sc = tuple(sorted((sp.sympify(scaling or {}).items()), key=lambda kv: str(kv[0])))
+        sc = tuple(sorted(((as_expr(k), as_expr(v)) for k, v in (scaling or {}).items()), key=lambda kv: str(kv[0])))
         for k, _ in sc:
             if not isinstance(k, sp.Symbol) or k not in expr.free_symbols:
                 raise PunchError(f"scaling key {k!r} is not a parameter of the punch {expr}")
@@ -99,8 +106,8 @@ class Punch(RichDisplay):
     @classmethod
     def elliptic_paraboloid(cls, R1=None, R2=None) -> "Punch":
         """``Phi = x1^2/(2 R1) + x2^2/(2 R2)`` (1.1); symbols R_1, R_2 when not given."""
-        r1 = sp.Symbol("R_1", positive=True) if R1 is None else sp.sympify(R1)
-        r2 = sp.Symbol("R_2", positive=True) if R2 is None else sp.sympify(R2)
+        r1 = sp.Symbol("R_1", positive=True) if R1 is None else as_expr(R1)
+        r2 = sp.Symbol("R_2", positive=True) if R2 is None else as_expr(R2)
         for nm, r in (("R1", r1), ("R2", r2)):
             if r.is_number and not r > 0:
                 raise PunchError(f"{nm} must be positive, got {r}")
@@ -110,15 +117,15 @@ class Punch(RichDisplay):
     @classmethod
     def paraboloid(cls, R=None) -> "Punch":
         """Paraboloid of revolution ``Phi = (x1^2 + x2^2)/(2R)``."""
-        r = sp.Symbol("R", positive=True) if R is None else sp.sympify(R)
+        r = sp.Symbol("R", positive=True) if R is None else as_expr(R)
         scaling = {r: S.Lambda * S.starred(r)} if isinstance(r, sp.Symbol) else {}
         return cls((S.x1**2 + S.x2**2) / (2 * r), scaling=scaling, name="paraboloid of revolution")
 
     @classmethod
     def fourth_degree(cls, R=None, K=None) -> "Punch":
         """Fourth-degree paraboloid ``Phi = (x1^2 + x2^2)/(2R) + (x1^2 + x2^2)^2/K^3`` (section 5)."""
-        r = sp.Symbol("R", positive=True) if R is None else sp.sympify(R)
-        k = sp.Symbol("K", positive=True) if K is None else sp.sympify(K)
+        r = sp.Symbol("R", positive=True) if R is None else as_expr(R)
+        k = sp.Symbol("K", positive=True) if K is None else as_expr(K)
         rr = S.x1**2 + S.x2**2
         return cls(rr / (2 * r) + rr**2 / k**3, name="fourth-degree paraboloid")
 

@@ -89,7 +89,7 @@ def checked_lambdify(
     items = [exprs] if single else list(exprs)
     free: set[sp.Symbol] = set()
     for e in items:
-        free |= sp.sympify(e).free_symbols
+        free |= e.free_symbols if isinstance(e, sp.Basic) else set()
     missing = sorted(free - set(args), key=lambda q: q.name)
     if missing:
         names = ", ".join(m.name for m in missing)

@@ -12,19 +12,17 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
+from ..parse import as_expr, parse_expression
 
 
 def as_polynomial(Phi) -> tuple[sp.Expr, list[tuple[int, int, float]]]:
     """Phi -> (sympy expression in the canonical x1, x2, [(i, j, c_ij)])."""
     expr = getattr(Phi, "expr", Phi)  # a thinlayer Punch carries its expression in .expr
     if isinstance(expr, str):
-        try:
-            expr = sp.sympify(expr, locals={S.x1.name: S.x1, S.x2.name: S.x2})
-        except (sp.SympifyError, SyntaxError, TypeError) as exc:
-            raise ValueError(f"could not parse Phi = {Phi!r}: {exc}") from exc
+        expr = parse_expression(expr, what="Phi")
     try:
-        expr = sp.sympify(expr)
-    except (sp.SympifyError, TypeError) as exc:
+        expr = as_expr(expr, "Phi")
+    except (TypeError, ValueError) as exc:
         raise TypeError(f"Phi must be a sympy expression in x1, x2, got {Phi!r} ({type(Phi).__name__})") from exc
     if not isinstance(expr, sp.Expr):
         raise TypeError(f"Phi must be a sympy expression in x1, x2, got {expr!r} ({type(expr).__name__})")

@@ -95,6 +95,7 @@ import sympy as sp
 from .. import symbols as S
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
+from ..parse import as_expr
 from ..results import latex_equation
 
 #: fast normal variable (3.7), distance from the edge (3.22), Laplace variable, kernel argument
@@ -133,14 +134,14 @@ def _to_mpf(x: Any) -> mpmath.mpf:
     """A real number (sympy, mpmath, float) as an mpf at the current precision."""
     if _is_mp(x):
         return mpmath.mpf(x)
-    x = sp.sympify(x)
+    x = as_expr(x)
     if not x.is_number:
         raise ValueError(f"a numeric value is needed, got the expression {x}; build the layer with a numeric nu")
     return mpmath.mpf(str(sp.N(x, mpmath.mp.dps + 10)))
 
 
 def _to_sympy(x: Any, dps: int) -> sp.Expr:
-    return sp.Float(mpmath.nstr(x, dps + 5, strip_zeros=False), dps) if _is_mp(x) else sp.sympify(x)
+    return sp.Float(mpmath.nstr(x, dps + 5, strip_zeros=False), dps) if _is_mp(x) else as_expr(x)
 
 
 def _check_t(t_: Any) -> mpmath.mpf:
@@ -308,7 +309,7 @@ def alexandrov_fit(A: Any, m1: Any, dps: int = 30) -> AlexandrovParameters:
             C = B / A_
         with mpmath.workdps(dps):
             return AlexandrovParameters(+A_, +m_, +B, +C, dps)
-    A_, m_ = sp.sympify(A), sp.sympify(m1)
+    A_, m_ = as_expr(A), as_expr(m1)
     disc = sp.factor(sp.together(A_**2 + 2 * m_))
     if disc.is_number:
         if not A_.is_positive:
@@ -556,7 +557,7 @@ class AlexandrovSolution(RichDisplay):
             + (h - h_0) sqrt(A/(pi tau)) e^{-B tau},     h_0 = 1/sqrt(C) - 1/(2B).
         """
         A, B, C, _ = self._BCh()
-        hh = sp.Symbol("h", real=True) if h is None else sp.sympify(h)
+        hh = sp.Symbol("h", real=True) if h is None else as_expr(h)
         e = sp.exp(-B * tau_)
         return (
             (tau_ + hh) * sp.erf(sp.sqrt(B * tau_))

@@ -68,6 +68,7 @@ import sympy as sp
 
 from .. import symbols as S
 from ..display import RichDisplay, fmt
+from ..parse import as_expr
 from ._contour_region import Poly2, as_polynomial, region_curve, short, signed_area
 
 __all__ = ["ContactContour", "ContourAccuracy", "EllipseContour", "contact_contour", "ellipse_contour"]
@@ -765,9 +766,9 @@ def ellipse_contour(R1=None, R2=None, delta0=None) -> EllipseContour:
     >>> ellipse_contour(4, 1, sp.Rational(1, 2)).e2
     3/4
     """
-    r1 = sp.Symbol("R_1", positive=True) if R1 is None else sp.sympify(R1)
-    r2 = sp.Symbol("R_2", positive=True) if R2 is None else sp.sympify(R2)
-    d0 = S.delta0 if delta0 is None else sp.sympify(delta0)
+    r1 = sp.Symbol("R_1", positive=True) if R1 is None else as_expr(R1)
+    r2 = sp.Symbol("R_2", positive=True) if R2 is None else as_expr(R2)
+    d0 = S.delta0 if delta0 is None else as_expr(delta0)
     for nm, v in (("R1", r1), ("R2", r2), ("delta0", d0)):
         if v.is_number and not (v.is_real and v > 0):
             raise ValueError(f"{nm} must be positive, got {v}")

@@ -53,6 +53,7 @@ from .. import symbols as S
 from .._checks import positive as _positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
+from ..parse import parse_number
 from ..punch import Punch, PunchError
 from ..results import checked_lambdify, latex_equation
 from .inner import inner_pressure
@@ -351,7 +352,7 @@ class ForceLaw(RichDisplay):
             raise ValueError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
         sub = {S.delta0: d0, S.H: HH, S.mu: mm, **vals}
         if nu is not None:
-            sub[S.nu] = sp.nsimplify(nu) if isinstance(nu, str) else nu
+            sub[S.nu] = parse_number(nu, "nu") if isinstance(nu, str) else nu
         th_expr = self.layer.vartheta.subs(sub)
         if not th_expr.is_number:
             raise ValueError(f"vartheta = {self.layer.vartheta} needs the Poisson ratio: pass nu= "

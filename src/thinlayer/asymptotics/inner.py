@@ -30,6 +30,7 @@ from .. import symbols as S
 from .._checks import check_order as _check_order
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
+from ..parse import as_expr
 from ..punch import Punch
 from ..results import checked_lambdify
 
@@ -164,7 +165,7 @@ def _gap_dicts(punch: Punch) -> tuple[dict[Mono, Any], dict[Mono, Any]]:
     sc = dict(punch.scaling)
     gap = {k: -c for k, c in phi.items()}
     gap[(0, 0)] = S.delta0 + gap.get((0, 0), 0)
-    gap_s = {(i, j): -S.Lambda * sp.sympify(c).xreplace(sc) * S.H_s ** (i + j) for (i, j), c in phi.items()}
+    gap_s = {(i, j): -S.Lambda * as_expr(c).xreplace(sc) * S.H_s ** (i + j) for (i, j), c in phi.items()}
     gap_s[(0, 0)] = S.delta0_s + gap_s.get((0, 0), 0)
     return gap, gap_s
 

@@ -16,6 +16,7 @@ uniformly (inner terms alone: ``O((H/a)^{2K})`` away from the edge).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from fractions import Fraction
 from functools import cached_property, lru_cache
 from typing import Any, ClassVar
 
@@ -195,7 +196,8 @@ class ContactSolution:
     def latex(self) -> str:
         v = self.values
         nu = getattr(self.layer, "nu", None)
-        nu = sp.latex(sp.nsimplify(self.nu) if nu is None or isinstance(nu, mpmath.mpf) else nu)
+        nu = sp.latex(sp.Rational(Fraction(mpmath.nstr(mpmath.mpf(self.nu), 15)))
+                      if nu is None or isinstance(nu, mpmath.mpf) else nu)
         if self.layer.base == "frictionless":
             nu += r"\ (\text{frictionless base})"
         rows = [

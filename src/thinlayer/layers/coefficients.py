@@ -35,6 +35,7 @@ from .._series import (
     reciprocal_recurrence,
 )
 from ..display import RichDisplay, fmt
+from ..parse import as_expr
 from ..results import checked_lambdify
 
 if TYPE_CHECKING:
@@ -219,7 +220,7 @@ def _to_expr(x: Any, layer: LayerKernel) -> sp.Expr:
         return x
     if isinstance(x, mpmath.mpf):
         return sp.Float(x, getattr(layer, "dps", 15))
-    return sp.sympify(x)
+    return as_expr(x)
 
 
 @lru_cache(maxsize=256)

@@ -1,0 +1,91 @@
+"""Every code block of the README runs: Python blocks are executed, shell blocks run line by line.
+
+Two lines are not run here, each for a stated reason: the README's test command (``python3 -m pytest``,
+this very suite; CI runs it) and the full benchmark table (minutes; run with ``THINLAYER_SLOW=1``).
+A ``text`` block is a picture of the source tree and is compared with the tree instead.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+README = (ROOT / "README.md").read_text()
+BLOCKS = re.findall(r"^```(\w+)\n(.*?)^```", README, flags=re.S | re.M)
+SLOW = os.environ.get("THINLAYER_SLOW") == "1"
+
+
+def _blocks(lang: str) -> list[str]:
+    return [body for kind, body in BLOCKS if kind == lang]
+
+
+def test_the_readme_has_code():
+    assert _blocks("python") and _blocks("bash")
+
+
+@pytest.mark.parametrize("k", range(len(_blocks("python"))))
+def test_python_block_runs(k, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    code = _blocks("python")[k]
+    exec(compile(code, f"README python block {k + 1}", "exec"), {"__name__": "__readme__"})
+
+
+def _shell_lines() -> list[str]:
+    out = []
+    for body in _blocks("bash"):
+        for line in body.splitlines():
+            line = line.split("  #")[0].strip()
+            if line:
+                out.append(line)
+    return out
+
+
+def _why_not_run(line: str) -> str | None:
+    if "-m pytest" in line:
+        return "the README's test command is this suite itself (CI runs it)"
+    if "benchmarks/run.py" in line and not SLOW:
+        return "the full benchmark table takes minutes: THINLAYER_SLOW=1 runs it"
+    return None
+
+
+@pytest.mark.parametrize("line", _shell_lines())
+def test_shell_line_runs(line, tmp_path):
+    reason = _why_not_run(line)
+    if reason:
+        pytest.skip(reason)
+    # a copy of what the commands read (derivation files, benchmarks), so outputs land in tmp_path
+    for folder in ("derivations", "benchmarks"):
+        shutil.copytree(ROOT / folder, tmp_path / folder)
+    env = dict(os.environ, THINLAYER_NB_SMALL="1")
+    for part in line.split("&&"):
+        argv = shlex.split(part)
+        if argv[:4] == ["python3", "-m", "pip", "install"]:
+            continue  # the package is installed already (CI installs it with the test extra)
+        if argv[0] == "thinlayer":
+            argv = [sys.executable, "-m", "thinlayer", *argv[1:]]
+        elif argv[0] == "python3":
+            argv[0] = sys.executable
+        if "--pdf" in argv and shutil.which("pdflatex") is None and shutil.which("latexmk") is None:
+            argv.remove("--pdf")
+        res = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600)
+        assert res.returncode == 0, f"{line!r} failed ({res.returncode}):\n{res.stdout[-2000:]}\n{res.stderr[-2000:]}"
+
+
+def test_tree_picture_matches_the_package():
+    """The "where things live" map names every folder and top-level module of src/thinlayer."""
+    (tree,) = _blocks("text")
+    src = ROOT / "src" / "thinlayer"
+    names = [p.name + ("/" if p.is_dir() else "") for p in src.iterdir()
+             if not p.name.startswith("__") and p.name != "py.typed" and not p.name.endswith(".egg-info")
+             and (p.is_dir() or p.suffix == ".py")]
+    missing = [n for n in names if n not in tree]
+    assert not missing, f"the README's map misses {missing}"
+    for word in re.findall(r"\b([a-z_]+)/", tree):
+        assert (src / word).is_dir() or word == "src", f"the map names a folder {word}/ that does not exist"
