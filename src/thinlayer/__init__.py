@@ -7,149 +7,95 @@ and ``lambdify()``:
 ``moment_expansion`` (2.22) -> ``inner_pressure`` (2.24)-(2.31), (4.1) ->
 ``contact_contour`` (3.1)-(3.14) -> ``alexandrov_solution`` / ``boundary_layer_exact`` (3.15)-(3.25) ->
 ``force_law`` (1.8) and ``composite_pressure``; ``solve`` joins them for numeric parameters.
+The direct numerical solvers (``solve_axisymmetric``, ``solve_2d``) are the independent reference.
+
+The folders follow the pipeline: ``layers/`` -> ``punch`` -> ``asymptotics/`` (and, independent of it,
+``numerics/``) -> ``validation/`` -> ``export/``.  Names that used to be importable from here and are
+no longer in ``__all__`` still are for one release, with a ``DeprecationWarning`` naming their module.
 """
+from __future__ import annotations
+
+import importlib
+import warnings
+from typing import Any
+
 from . import errata, symbols
-from .asymptotics.boundary_layer import (
-    AlexandrovParameters,
-    AlexandrovSolution,
-    alexandrov_kernel,
-    alexandrov_parameters,
-    alexandrov_solution,
-    boundary_layer_kernel,
-)
-from .asymptotics.composite import CompositePressure, composite_pressure
-from .asymptotics.contour import (
-    ContactContour,
-    ContourAccuracy,
-    EllipseContour,
-    contact_contour,
-    ellipse_contour,
-)
-from .asymptotics.force_law import ForceLaw, ForceValues, boundary_layer_force_defect, force_law
-from .asymptotics.incompressible import (
-    EllipseValues,
-    GridContact,
-    IncompressibleCoefficients,
-    IncompressibleEllipse,
-    IncompressibleLayer,
-    IncompressibleRadial,
-    ObstacleProblem,
-    RadialValues,
-    Regime,
-    SphereModels,
-    SphereValues,
-    ThinLayerOperator,
-    TwoTermEdgeLayer,
-    TwoTermSphere,
-    compare_sphere_models,
-    incompressible_axisymmetric,
-    incompressible_coefficients,
-    incompressible_ellipse,
-    obstacle_problem,
-    regime,
-    solve_obstacle_grid,
-    thin_layer_operator,
-    two_term_edge_layer,
-    two_term_edge_shift,
-    two_term_sphere,
-)
-from .asymptotics.inner import InnerPressure, inner_pressure
-from .asymptotics.moment_expansion import MomentExpansion, moment_expansion
+from .asymptotics.boundary_layer import alexandrov_solution
+from .asymptotics.composite import composite_pressure
+from .asymptotics.contour import contact_contour, ellipse_contour
+from .asymptotics.force_law import force_law
+from .asymptotics.incompressible import obstacle_problem, regime, thin_layer_operator, two_term_sphere
+from .asymptotics.inner import inner_pressure
+from .asymptotics.moment_expansion import moment_expansion
 from .asymptotics.solution import ContactSolution, solve
-from .asymptotics.wiener_hopf import (
-    WienerHopfSolution,
-    boundary_layer_exact,
-    edge_shift_alexandrov,
-    edge_shift_exact,
-    edge_shift_table,
-    wiener_hopf_solution,
-)
-from .layers.coefficients import KernelCoefficients, kernel_coefficients
+from .asymptotics.wiener_hopf import boundary_layer_exact, edge_shift_alexandrov, edge_shift_exact
+from .layers.coefficients import kernel_coefficients
 from .layers.kernels import (
     BondedLayer,
     FrictionlessLayer,
     GenericLayer,
     HalfSpace,
+    IncompressibleLayer,
     IncompressibleLayerError,
     LayerKernel,
 )
 from .layers.moments import kernel_moment
-from .numerics.direct import AxisymmetricContact, contact_for_radius, solve_axisymmetric, surface_displacement
+from .numerics import solve_2d, solve_axisymmetric
 from .punch import Punch, PunchError
 from .results import MissingArgumentError, checked_lambdify
 
 __all__ = [
-    "BondedLayer",
-    "FrictionlessLayer",
-    "GenericLayer",
-    "HalfSpace",
-    "IncompressibleLayerError",
-    "LayerKernel",
-    "KernelCoefficients",
-    "kernel_coefficients",
-    "kernel_moment",
-    "MomentExpansion",
-    "moment_expansion",
+    # layers: the kernel L(u) (2.3)-(2.4)
+    "BondedLayer", "FrictionlessLayer", "HalfSpace", "IncompressibleLayer", "GenericLayer", "LayerKernel",
+    # the punch (1.1)
     "Punch",
-    "PunchError",
-    "InnerPressure",
-    "inner_pressure",
-    "MissingArgumentError",
-    "checked_lambdify",
-    "errata",
-    "ContactContour",
-    "ContourAccuracy",
-    "EllipseContour",
-    "contact_contour",
-    "ellipse_contour",
-    "AxisymmetricContact",
-    "solve_axisymmetric",
-    "contact_for_radius",
-    "surface_displacement",
-    "WienerHopfSolution",
-    "boundary_layer_exact",
-    "edge_shift_alexandrov",
-    "edge_shift_exact",
-    "edge_shift_table",
-    "wiener_hopf_solution",
-    "symbols",
-    "AlexandrovParameters",
-    "AlexandrovSolution",
-    "alexandrov_kernel",
-    "alexandrov_parameters",
-    "alexandrov_solution",
-    "boundary_layer_kernel",
-    "CompositePressure",
-    "composite_pressure",
-    "ForceLaw",
-    "ForceValues",
-    "boundary_layer_force_defect",
-    "force_law",
-    "ContactSolution",
-    "solve",
-    "IncompressibleLayer",
-    "incompressible_coefficients",
-    "IncompressibleCoefficients",
-    "thin_layer_operator",
-    "ThinLayerOperator",
-    "obstacle_problem",
-    "ObstacleProblem",
-    "incompressible_ellipse",
-    "IncompressibleEllipse",
-    "EllipseValues",
-    "incompressible_axisymmetric",
-    "IncompressibleRadial",
-    "RadialValues",
-    "solve_obstacle_grid",
-    "GridContact",
-    "two_term_sphere",
-    "TwoTermSphere",
-    "SphereValues",
-    "two_term_edge_shift",
-    "two_term_edge_layer",
-    "TwoTermEdgeLayer",
-    "regime",
-    "Regime",
-    "compare_sphere_models",
-    "SphereModels",
+    # the stages, in the paper's order
+    "kernel_coefficients", "kernel_moment", "moment_expansion", "inner_pressure",
+    "contact_contour", "ellipse_contour", "alexandrov_solution", "boundary_layer_exact",
+    "edge_shift_exact", "edge_shift_alexandrov", "force_law", "composite_pressure",
+    # nu = 1/2 and near it (I.1)-(I.13)
+    "thin_layer_operator", "obstacle_problem", "two_term_sphere", "regime",
+    # numbers: the contact solution and the direct solvers
+    "solve", "ContactSolution", "solve_axisymmetric", "solve_2d",
+    # errors and tools
+    "IncompressibleLayerError", "PunchError", "MissingArgumentError", "checked_lambdify",
+    # modules
+    "errata", "symbols",
 ]
+
+#: names importable from ``thinlayer`` before the redesign, and the module each lives in now
+_MOVED = {
+    **dict.fromkeys(["ContactContour", "ContourAccuracy", "EllipseContour"], "thinlayer.asymptotics.contour"),
+    **dict.fromkeys(["AlexandrovParameters", "AlexandrovSolution", "alexandrov_kernel", "alexandrov_parameters",
+                     "boundary_layer_kernel"], "thinlayer.asymptotics.boundary_layer"),
+    "CompositePressure": "thinlayer.asymptotics.composite",
+    "KernelCoefficients": "thinlayer.layers.coefficients",
+    **dict.fromkeys(["AxisymmetricContact", "contact_for_radius", "surface_displacement"],
+                    "thinlayer.numerics.axisymmetric"),
+    **dict.fromkeys(["ForceLaw", "ForceValues", "boundary_layer_force_defect"], "thinlayer.asymptotics.force_law"),
+    **dict.fromkeys(["incompressible_coefficients", "IncompressibleCoefficients"], "thinlayer.layers.coefficients"),
+    **dict.fromkeys(["ThinLayerOperator", "ObstacleProblem", "incompressible_ellipse", "IncompressibleEllipse",
+                     "EllipseValues", "incompressible_axisymmetric", "IncompressibleRadial", "RadialValues",
+                     "TwoTermSphere", "SphereValues", "two_term_edge_shift", "two_term_edge_layer",
+                     "TwoTermEdgeLayer", "Regime"], "thinlayer.asymptotics.incompressible"),
+    **dict.fromkeys(["solve_obstacle_grid", "GridContact"], "thinlayer.numerics.obstacle"),
+    **dict.fromkeys(["compare_sphere_models", "SphereModels"], "thinlayer.validation.comparison"),
+    "InnerPressure": "thinlayer.asymptotics.inner",
+    "MomentExpansion": "thinlayer.asymptotics.moment_expansion",
+    **dict.fromkeys(["WienerHopfSolution", "edge_shift_table", "wiener_hopf_solution"],
+                    "thinlayer.asymptotics.wiener_hopf"),
+}
+
+
+def __getattr__(name: str) -> Any:
+    """A name moved out of ``__all__``: import it from its module, with a DeprecationWarning."""
+    module = _MOVED.get(name)
+    if module is None:
+        raise AttributeError(f"module 'thinlayer' has no attribute {name!r}")
+    warnings.warn(f"thinlayer.{name} is deprecated: import it from {module} (thinlayer 0.2 removes this alias)",
+                  DeprecationWarning, stacklevel=2)
+    return getattr(importlib.import_module(module), name)
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_MOVED))
