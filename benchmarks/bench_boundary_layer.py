@@ -5,16 +5,7 @@ computed at import.
 """
 from __future__ import annotations
 
-import time
-
-
-def _best(fn, repeat: int = 3) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
+from _timing import best, main
 
 
 def run() -> list[tuple[str, float, str]]:
@@ -46,21 +37,20 @@ def run() -> list[tuple[str, float, str]]:
     with mpmath.workdps(15):
         rows = [
             ("boundary_layer_kernel N(t=1) (3.17), nu=0.3, dps=15",
-             _best(lambda: boundary_layer_kernel(layer, 1.0), 2), "< 2 s"),
+             best(lambda: boundary_layer_kernel(layer, 1.0), 2), "< 2 s"),
             ("alexandrov_kernel N~(t=1) laplace route, dps=15",
-             _best(lambda: alexandrov_kernel(layer, 1.0)), "< 0.2 s"),
+             best(lambda: alexandrov_kernel(layer, 1.0)), "< 0.2 s"),
             ("alexandrov_kernel_numpy N~ at 1000 points",
-             _best(lambda: alexandrov_kernel_numpy(layer, ts)), "< 0.05 s"),
+             best(lambda: alexandrov_kernel_numpy(layer, ts)), "< 0.05 s"),
             ("alexandrov_parameters + solution, symbolic nu (cold caches)",
-             _best(symbolic, 2), "< 2 s"),
+             best(symbolic, 2), "< 2 s"),
             ("alexandrov_parameters, float nu (cached)",
-             _best(lambda: alexandrov_parameters(layer)), "< 1e-4 s"),
+             best(lambda: alexandrov_parameters(layer)), "< 1e-4 s"),
             ("AlexandrovSolution.q_numeric at 1e5 points",
-             _best(lambda: sol.q_numeric(vs)), "< 0.02 s"),
+             best(lambda: sol.q_numeric(vs)), "< 0.02 s"),
         ]
     return rows
 
 
 if __name__ == "__main__":  # pragma: no cover
-    for name, sec, target in run():
-        print(f"{name:60s} {sec * 1e3:9.2f} ms   target {target}")
+    main(run)

@@ -5,16 +5,7 @@ computed at import.
 """
 from __future__ import annotations
 
-import time
-
-
-def _best(fn, repeat: int = 5) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
+from _timing import best, main
 
 
 def run() -> list[tuple[str, float, str]]:
@@ -30,15 +21,15 @@ def run() -> list[tuple[str, float, str]]:
     c = contact_contour(ellipse, 0.5)
     rows = [
         ("contact_contour elliptic paraboloid R1=4, R2=1, delta0=0.5",
-         _best(lambda: contact_contour(ellipse, 0.5)), "< 0.05 s"),
+         best(lambda: contact_contour(ellipse, 0.5), 5), "< 0.05 s"),
         ("contact_contour non-symmetric quartic, delta0=0.05",
-         _best(lambda: contact_contour(nonsym, 0.05)), "< 0.2 s"),
+         best(lambda: contact_contour(nonsym, 0.05), 5), "< 0.2 s"),
         ("contact_contour fourth-degree paraboloid, delta0=0.3",
-         _best(lambda: contact_contour(quartic, 0.3)), "< 0.2 s"),
+         best(lambda: contact_contour(quartic, 0.3), 5), "< 0.2 s"),
         ("ContactContour.integrate (polynomial, star-shaped)",
-         _best(lambda: c.integrate(lambda u, v: u * u + v)), "< 0.01 s"),
+         best(lambda: c.integrate(lambda u, v: u * u + v), 5), "< 0.01 s"),
         ("ContactContour.rho/b1/b2 at 10^4 points",
-         _best(lambda: (c.rho(_grid(c)), c.b1(_grid(c)), c.b2(_grid(c))), 3), "< 0.5 s"),
+         best(lambda: (c.rho(_grid(c)), c.b1(_grid(c)), c.b2(_grid(c))), 3), "< 0.5 s"),
     ]
     return rows
 
@@ -50,5 +41,4 @@ def _grid(c):
 
 
 if __name__ == "__main__":  # pragma: no cover
-    for name, sec, target in run():
-        print(f"{name:60s} {sec * 1e3:9.2f} ms   target {target}")
+    main(run)

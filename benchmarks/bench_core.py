@@ -1,18 +1,8 @@
 """Benchmarks of the symbolic core (issue 2 speed targets)."""
 from __future__ import annotations
 
-import time
-
 import numpy as np
-
-
-def _best(fn, repeat=3):
-    best = float("inf")
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t)
-    return best
+from _timing import best, main
 
 
 def run() -> list[tuple[str, float, str]]:
@@ -29,18 +19,22 @@ def run() -> list[tuple[str, float, str]]:
         return f
 
     coeffs(3)()  # warm the polynomial machinery once
-    rows.append(("m_n, M_k for n <= 10, symbolic nu", _best(coeffs(10)), "< 0.1 s"))
-    rows.append(("m_n, M_k for n <= 30, symbolic nu", _best(coeffs(30), 1), "< 5 s"))
+    rows.append(("m_n, M_k for n <= 10, symbolic nu", best(coeffs(10)), "< 0.1 s"))
+    rows.append(("m_n, M_k for n <= 30, symbolic nu", best(coeffs(30), 1), "< 5 s"))
 
     punch = Punch.general(12)
     kernel_coefficients(layer, 6)
     rows.append(("inner expansion, degree-12 punch, symbolic coefficients",
-                 _best(lambda: inner_pressure(layer, punch)), "< 1 s"))
+                 best(lambda: inner_pressure(layer, punch)), "< 1 s"))
 
     ip = inner_pressure(BondedLayer(0.3), Punch.elliptic_paraboloid(R1=2.0, R2=1.0))
     f = ip.lambdify()
     x = np.random.default_rng(0).uniform(-1, 1, 10**6)
     y = np.random.default_rng(1).uniform(-1, 1, 10**6)
     f(x, y, 0.1, 0.05, 1.0)
-    rows.append(("lambdified inner pressure on 10^6 points", _best(lambda: f(x, y, 0.1, 0.05, 1.0)), "< 50 ms"))
+    rows.append(("lambdified inner pressure on 10^6 points", best(lambda: f(x, y, 0.1, 0.05, 1.0)), "< 50 ms"))
     return rows
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main(run)

@@ -1,20 +1,11 @@
 """Timings of the direct numerical solvers of :mod:`thinlayer.numerics` (issue 4).
 
 ``run()`` returns ``(name, seconds, target)`` rows; nothing runs at import.  The names carry the
-accuracy reached (against the independent axisymmetric solver of :mod:`thinlayer.numerics.direct`).
+accuracy reached (against the independent axisymmetric solver of :mod:`thinlayer.numerics.axisymmetric`).
 """
 from __future__ import annotations
 
-import time
-
-
-def _timed(fn, repeat: int = 1):
-    best, out = float("inf"), None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
+from _timing import main, timed
 
 
 def run() -> list[tuple[str, float, str]]:
@@ -26,19 +17,19 @@ def run() -> list[tuple[str, float, str]]:
     punch = Punch.paraboloid(R=R)
     rows: list[tuple[str, float, str]] = []
 
-    secs, ref = _timed(lambda: solve_axisymmetric(layer, punch, delta0, H), repeat=3)
+    secs, ref = timed(lambda: solve_axisymmetric(layer, punch, delta0, H), repeat=3)
     if not max(ref.force_error, ref.radius_error / ref.radius) < 1e-6:
         raise RuntimeError(f"axisymmetric solve not converged to 1e-6: {ref.force_error}, {ref.radius_error}")
     rows.append((f"numerics.solve_axisymmetric H/a=0.1 (est. err {ref.force_error:.0e})", secs, "< 1 s"))
     thin = 80.0**2 / (2 * R)  # overlap radius 80 H: H/a = 0.0125
-    secs80, ref80 = _timed(lambda: solve_axisymmetric(layer, punch, thin, H), repeat=1)
+    secs80, ref80 = timed(lambda: solve_axisymmetric(layer, punch, thin, H), repeat=1)
     if not max(ref80.force_error, ref80.radius_error / ref80.radius) < 1e-6:
         raise RuntimeError(f"axisymmetric H/a=0.0125 not converged to 1e-6: {ref80.force_error}")
     rows.append((f"numerics.solve_axisymmetric H/a=0.0125 (est. err {ref80.force_error:.0e})", secs80, "< 30 s"))
 
     results = {}
     for n, repeat, target in ((256, 3, "< 1 s"), (1024, 1, "< 10 s")):
-        secs, res = _timed(lambda n=n: solve_2d(layer, punch, delta0=delta0, H=H, n=n), repeat=repeat)
+        secs, res = timed(lambda n=n: solve_2d(layer, punch, delta0=delta0, H=H, n=n), repeat=repeat)
         results[n] = (secs, res)
         name = (f"solve_2d sphere a=10H {n}^2: dP {res.force / ref.force - 1:+.0e}, "
                 f"dc {res.contact_radius / ref.radius - 1:+.0e}")
@@ -64,7 +55,7 @@ def _contactmechanics_rows(layer, punch, R, delta0, H, ref, secs_ours, ours) -> 
     nu, mu = float(layer.nu), 1.0
     n, L = ours.n, ours.spacing * ours.n
     rows = []
-    secs1, res1 = _timed(lambda: solve_2d(layer, punch, delta0=delta0, H=H, n=n, workers=1))
+    secs1, res1 = timed(lambda: solve_2d(layer, punch, delta0=delta0, H=H, n=n, workers=1))
     rows.append((f"solve_2d sphere a=10H {n}^2, workers=1: dP {res1.force / ref.force - 1:+.0e}", secs1,
                  "< 10 s"))
     try:
@@ -82,7 +73,7 @@ def _contactmechanics_rows(layer, punch, R, delta0, H, ref, secs_ours, ours) -> 
         return constrained_conjugate_gradients(sub, heights, offset=delta0, pentol=1e-10 * delta0,
                                                forcetol=1e-12, thermotol=1e-12, maxiter=5000)
 
-    secs_cm, res = _timed(cm)
+    secs_cm, res = timed(cm)
     P = float(np.sum(res.jac))
     rows.append((f"contactmechanics thickness=H {n}^2: dP {P / ref.force - 1:+.0e}, {res.nit} it", secs_cm,
                  f">= solve_2d ({secs_ours:.1f} s)"))
@@ -91,6 +82,5 @@ def _contactmechanics_rows(layer, punch, R, delta0, H, ref, secs_ours, ours) -> 
     return rows
 
 
-if __name__ == "__main__":
-    for name, sec, target in run():
-        print(f"{name:62s} {sec:8.3f} s   (target {target})")
+if __name__ == "__main__":  # pragma: no cover
+    main(run)

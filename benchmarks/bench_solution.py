@@ -6,16 +6,7 @@ with numeric parameters under 0.2 s; the composite pressure on 10^6 points under
 """
 from __future__ import annotations
 
-import time
-
-
-def _best(fn, repeat: int = 3) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
+from _timing import best, main, timed
 
 
 def run() -> list[tuple[str, float, str]]:
@@ -36,36 +27,33 @@ def run() -> list[tuple[str, float, str]]:
         solve(BondedLayer(round(nu[0], 6)), punch, delta0=0.5, H=0.05)
 
     cold()  # imports
-    rows.append(("solve(elliptic paraboloid), fresh nu (cold caches)", _best(cold), "< 0.2 s"))
+    rows.append(("solve(elliptic paraboloid), fresh nu (cold caches)", best(cold), "< 0.2 s"))
     layer = BondedLayer(0.3)
     solve(layer, punch, delta0=0.5, H=0.05)
     rows.append(("solve(elliptic paraboloid), same nu, new delta0, H",
-                 _best(lambda: solve(layer, punch, delta0=0.4, H=0.04)), "< 0.2 s"))
+                 best(lambda: solve(layer, punch, delta0=0.4, H=0.04)), "< 0.2 s"))
     rows.append(("solve(elliptic paraboloid, force=P) inverse problem",
-                 _best(lambda: solve(layer, punch, force=20.0, H=0.04)), "< 0.2 s"))
+                 best(lambda: solve(layer, punch, force=20.0, H=0.04)), "< 0.2 s"))
     quartic = Punch.fourth_degree(1, 1)
     rows.append(("solve(fourth-degree paraboloid) (numeric contour)",
-                 _best(lambda: solve(layer, quartic, delta0=0.5, H=0.05)), "< 0.5 s"))
+                 best(lambda: solve(layer, quartic, delta0=0.5, H=0.05)), "< 0.5 s"))
     rows.append(("solve(fourth-degree paraboloid, force=P) inverse (Brent)",
-                 _best(lambda: solve(layer, quartic, force=20.0, H=0.05), 1), "< 2 s"))
+                 best(lambda: solve(layer, quartic, force=20.0, H=0.05), 1), "< 2 s"))
 
     sol = solve(layer, punch, delta0=0.5, H=0.05)
-    t0 = time.perf_counter()
-    comp = sol.composite
-    rows.append(("composite pressure build, exact boundary layer (first use per nu)",
-                 time.perf_counter() - t0, "< 10 s"))
+    secs, comp = timed(lambda: sol.composite)
+    rows.append(("composite pressure build, exact boundary layer (first use per nu)", secs, "< 10 s"))
     rng = np.random.default_rng(0)
     x1 = rng.uniform(-2.1, 2.1, 10**6)
     x2 = rng.uniform(-1.05, 1.05, 10**6)
     comp(x1, x2)
     rows.append(("composite pressure on 10^6 points (box around the ellipse)",
-                 _best(lambda: comp(x1, x2)), "< 0.2 s"))
+                 best(lambda: comp(x1, x2)), "< 0.2 s"))
     alex = solve(layer, punch, delta0=0.5, H=0.05, boundary_layer="alexandrov").composite
     rows.append(("composite pressure on 10^6 points, Alexandrov boundary layer",
-                 _best(lambda: alex(x1, x2)), "< 0.2 s"))
+                 best(lambda: alex(x1, x2)), "< 0.2 s"))
     return rows
 
 
 if __name__ == "__main__":  # pragma: no cover
-    for name, sec, target in run():
-        print(f"{name:70s} {sec:9.4f} s   target {target}")
+    main(run)

@@ -3,26 +3,24 @@
 ``run()`` returns ``(name, seconds, target)`` rows; nothing runs at import.  The speed rows compare
 the asymptotic force (:func:`thinlayer.solve`, and the lambdified force law (1.8) alone) with the
 direct solvers run at the cheapest resolution that reaches the asymptotic force's accuracy
-(:func:`thinlayer.validation.study.speed_comparison`, sphere, nu = 0.3).
+(:func:`thinlayer.validation.speed_comparison`, sphere, nu = 0.3).
 """
 from __future__ import annotations
 
-import time
+from _timing import main, timed
 
 
 def run() -> list[tuple[str, float, str]]:
-    from thinlayer.validation.study import speed_comparison, validate_elliptic, validate_sphere
+    from thinlayer.validation import speed_comparison, validate_elliptic, validate_sphere
 
     rows: list[tuple[str, float, str]] = []
     validate_sphere(0.3, (0.1,))  # warm the caches (exact boundary-layer table, force law)
-    t = time.perf_counter()
-    st = validate_sphere(0.3, (0.2, 0.1, 0.05, 0.025, 0.0125))
+    secs, st = timed(lambda: validate_sphere(0.3, (0.2, 0.1, 0.05, 0.025, 0.0125)))
     rows.append((f"validation: sphere nu=0.3, 5 H/a (slope P {st.observed_orders(('force',))[0].observed:.2f})",
-                 time.perf_counter() - t, "< 5 s"))
-    t = time.perf_counter()
-    st = validate_elliptic(0.3, (0.1,))
+                 secs, "< 5 s"))
+    secs, st = timed(lambda: validate_elliptic(0.3, (0.1,)))
     rows.append((f"validation: elliptic nu=0.3 H/a=0.1 ({st.rows[0].solver.split(' (')[0]} + coarse)",
-                 time.perf_counter() - t, "< 10 s"))
+                 secs, "< 10 s"))
 
     for eps in (0.1, 0.05):
         sc = speed_comparison(0.3, eps, repeat=3)
@@ -43,6 +41,5 @@ def run() -> list[tuple[str, float, str]]:
     return rows
 
 
-if __name__ == "__main__":
-    for name, sec, target in run():
-        print(f"{name:62s} {sec:10.5f} s   (target {target})")
+if __name__ == "__main__":  # pragma: no cover
+    main(run)

@@ -5,20 +5,20 @@ import importlib.util
 import sys
 from pathlib import Path
 
+from _timing import print_header, print_rows
+
 
 def main(names: list[str]) -> int:
     here = Path(__file__).parent
     mods = sorted(here.glob("bench_*.py"))
     if names:
         mods = [m for m in mods if any(n in m.stem for n in names)]
-    print(f"{'benchmark':<62} {'seconds':>10}  target")
-    print("-" * 86)
+    print_header()
     for path in mods:
         spec = importlib.util.spec_from_file_location(path.stem, path)
         mod = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(mod)
-        for name, secs, target in mod.run():
-            print(f"{name[:62]:<62} {secs:>10.4f}  {target}", flush=True)
+        print_rows(mod.run())
     return 0
 
 

@@ -91,7 +91,7 @@ def _printed_p1() -> sp.Expr:
 
 
 def _residual_order4(p0: sp.Expr, p1: sp.Expr) -> sp.Expr:
-    """Coefficient of Lambda^{-4} in  [sum_n (-1)^n pi^2 A m_n Lambda^{-2n-2} Delta^n](p0 + Lambda^{-2} p1) - Lambda^{-2} phi^*  (2.24)."""
+    """Coefficient of Lambda^{-4} in  [sum_n (-1)^n pi^2 A m_n Lambda^{-2n-2} Delta^n](p0 + Lambda^{-2} p1) - Lambda^{-2} phi^*  (2.24)."""  # noqa: E501 (one formula or one table row)
     from .asymptotics.moment_expansion import moment_expansion
     from .layers.kernels import GenericLayer
 
@@ -214,11 +214,12 @@ def _check_4_1() -> bool:
 ENTRIES: tuple[Erratum, ...] = (
     Erratum(
         "2.1", "sign of the surface displacement",
-        r"u_3 = -\frac{1}{4\pi^2\vartheta}\iint \hat p_\varepsilon \frac{\mathcal{L}(\alpha H)}{\alpha} e^{-i\alpha\cdot x}\,d\alpha",
-        r"u_3 = +\frac{1}{4\pi^2\vartheta}\iint \hat p_\varepsilon \frac{\mathcal{L}(\alpha H)}{\alpha} e^{-i\alpha\cdot x}\,d\alpha",
+        r"u_3 = -\frac{1}{4\pi^2\vartheta}\iint \hat p_\varepsilon \frac{\mathcal{L}(\alpha H)}{\alpha} e^{-i\alpha\cdot x}\,d\alpha",  # noqa: E501 (one formula or one table row)
+        r"u_3 = +\frac{1}{4\pi^2\vartheta}\iint \hat p_\varepsilon \frac{\mathcal{L}(\alpha H)}{\alpha} e^{-i\alpha\cdot x}\,d\alpha",  # noqa: E501 (one formula or one table row)
         "With x_3 into the layer and p = -sigma_33 > 0, (1.5) needs u_3 > 0 in contact; for L = 1 the plus "
         "sign gives Boussinesq's u_3 = (1-nu)/(2 pi mu) iint p/|x-y| and (2.6) with its positive right side. "
-        "The direct numerical solver built on the plus sign satisfies (1.5) to 1e-13 (tests/numerics/test_axisymmetric.py).",
+        "The direct numerical solver built on the plus sign satisfies (1.5) to 1e-13 "
+        "(tests/numerics/test_axisymmetric.py).",
         _check_2_1,
     ),
     Erratum(
@@ -243,7 +244,8 @@ ENTRIES: tuple[Erratum, ...] = (
         r"(-1)^n \pi^2 \mathcal{A} m_n C_n^k (2k)! (2n-2k)!",
         "The coefficient of s_1^{2k} s_2^{2n-2k} in (s_1^2+s_2^2)^n is C_n^k, and its derivative "
         "d^{2k}_{s1} d^{2n-2k}_{s2} at 0 is (2k)!(2n-2k)!. Checked against (2.19) evaluated with sympy's own "
-        "series of L(s)/s, and numerically by quadrature of k(xi) (tests/asymptotics/test_moment_expansion.py). Only the derived "
+        "series of L(s)/s, and numerically by quadrature of k(xi) "
+        "(tests/asymptotics/test_moment_expansion.py). Only the derived "
         "form gives mu_alpha/alpha! = (-1)^n pi^2 A m_n C_n^k, the weight printed in (2.22). The two agree for "
         "n <= 1 and for n = 2, k = 1, so the misprint is visible first in mu_{4,0}.",
         _check_2_21,
@@ -255,7 +257,8 @@ ENTRIES: tuple[Erratum, ...] = (
         "(2.28) with k = 1 gives p_1^* = m_1 Delta p_0^* and Delta p_0^* = -vartheta H_* (1/R_1^*+1/R_2^*)/A. "
         "Substituting p_0^* + Lambda^{-2} p_1^* back into (2.24) leaves no Lambda^{-4} residual with the "
         "derived sign and a non-zero one with the printed sign; the moment expansion itself is checked "
-        "numerically in tests/asymptotics/test_moment_expansion.py, and the sign of the resulting force correction against a "
+        "numerically in tests/asymptotics/test_moment_expansion.py, and the sign of the resulting force "
+        "correction against a "
         "direct numerical solution of the contact problem.",
         _check_2_30,
     ),
@@ -289,9 +292,9 @@ ENTRIES: tuple[Erratum, ...] = (
         "s^2 term of (2.20) gives 1/(2B^2) - 1/C = m_1.",
         _check_3_21_alexandrov,
     ),
-    Erratum(
+    Erratum(  # noqa: E501 (one formula or one table row)
         "4.1", "undefined symbol f^*",
-        r"p_k^* = \frac{(-1)^k}{\pi^2\mathcal{A}} M_k \Delta^k f^*", r"p_k^* = \frac{(-1)^k}{\pi^2\mathcal{A}} M_k \Delta^k \varphi^*",
+        r"p_k^* = \frac{(-1)^k}{\pi^2\mathcal{A}} M_k \Delta^k f^*", r"p_k^* = \frac{(-1)^k}{\pi^2\mathcal{A}} M_k \Delta^k \varphi^*",  # noqa: E501 (one formula or one table row)
         "f^* is not defined; with phi^* of (2.25) the closed form equals the recursion (2.27)-(2.28) "
         "term by term (symbolic check on a non-symmetric quartic punch).",
         _check_4_1,

@@ -159,8 +159,8 @@ class _Parser:
         if kind == "name":
             nxt = self.peek()
             if nxt is not None and nxt[1] == "(":
-                raise ExpressionError(f"{value}(...) at position {pos} is a function call: a formula here is a "
-                                      f"polynomial with parameters ({_ALLOWED})")
+                raise ExpressionError(f"{value}(...) at position {pos} is a function call, not a polynomial term: "
+                                      f"a formula here is a polynomial with parameters ({_ALLOWED})")
             if value in self.names:
                 return self.names[value]
             if self.allowed is not None and value not in self.allowed:

@@ -2,7 +2,7 @@
 
 Independent routes: the closed forms are checked against numerical integrals over the spectral
 contour; the laws and the composite pressure against the direct numerical solution of the full
-contact problem (:mod:`thinlayer.numerics.direct`, which uses no thin-layer series); the force defect of
+contact problem (:mod:`thinlayer.numerics.axisymmetric`, which uses no thin-layer series); the force defect of
 the boundary layer against quadrature of the Wiener--Hopf solution.
 """
 from __future__ import annotations
@@ -73,7 +73,7 @@ def test_closed_forms_equal_contour_integrals(nu):
         from thinlayer.asymptotics.contour import contact_contour
 
         num = law.evaluate(0.3, 0.02, 1.7, edge_shift=0.1, contour=contact_contour(punch.expr, 0.3))
-        generic = type(law)(law.layer, law.punch, "contour", None, None, None, None, law.coefficient, law.p1_factor)  # numeric route
+        generic = type(law)(law.layer, law.punch, "contour", None, None, None, None, law.coefficient, law.p1_factor)  # numeric route  # noqa: E501 (one formula or one table row)
         num = generic.evaluate(0.3, 0.02, 1.7, edge_shift=0.1)
         for q in ("P0", "P1", "area0", "perimeter", "V", "J"):
             assert getattr(num, q) == pytest.approx(getattr(closed, q), rel=1e-10), q

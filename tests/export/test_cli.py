@@ -152,3 +152,15 @@ def test_codegen_prints_and_validates(capsys):
                            "R_2=1", "--nu", "0.3", "--delta0", "0.25", "--H", "0.02"], "radial")]:
         code, out, err = run(capsys, *argv)
         assert code == 2 and reason in err, (argv, err)
+
+
+def test_cli_and_no_overwrite(tmp_path, capsys):
+    f = ROOT / "derivations" / "quartic_punch.toml"
+    assert main(["derive", str(f), "--out", str(tmp_path)]) == 0
+    assert main(["derive", str(f), "--out", str(tmp_path)]) == 0  # our own file: replaced
+    mine = tmp_path / "quartic_punch.tex"
+    mine.write_text("my notes\n")
+    assert main(["derive", str(f), "--out", str(tmp_path)]) == 2
+    assert "not written by thinlayer" in capsys.readouterr().err
+    assert mine.read_text() == "my notes\n"
+    assert main(["derive", str(f), "--out", str(tmp_path), "--force"]) == 0

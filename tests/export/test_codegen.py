@@ -1,5 +1,7 @@
 """Code generation (issue 5, item 3): C, Fortran, Rust, Julia, Octave and a standalone numpy module.
 
+Identifiers and collisions are tested in ``test_codegen_names.py``, bad inputs in ``test_codegen_spec.py``.
+
 The generated C, Fortran and Rust are compiled (gcc, gfortran, rustc), run at about ten argument
 points and compared with ``checked_lambdify(..., "numpy")`` to 1e-12 relative.  A missing compiler
 skips its tests and names the Debian package that provides it.  The standalone Python module is
@@ -12,7 +14,7 @@ sympy that wrote them; under another sympy minor release a difference skips the 
 instead of failing it (sympy 1.12 and 1.13 print these cases identically to 1.14).
 When a change is intended, regenerate them and review the diff::
 
-    THINLAYER_UPDATE_GOLDEN=1 python3 -m pytest -q tests/test_codegen.py
+    THINLAYER_UPDATE_GOLDEN=1 python3 -m pytest -q tests/export/test_codegen.py
 
 If ``octave`` happens to be installed, the Octave output is also run; Julia is never run here.
 """
@@ -36,15 +38,12 @@ import sympy as sp
 
 from thinlayer import (
     BondedLayer,
-    FrictionlessLayer,
-    GenericLayer,
-    MissingArgumentError,
     Punch,
     checked_lambdify,
     inner_pressure,
     kernel_coefficients,
 )
-from thinlayer.export.codegen import LANGUAGES, NameCollisionError, generate, generate_all, identifier
+from thinlayer.export.codegen import LANGUAGES, generate, generate_all
 
 GOLDEN = Path(__file__).resolve().parents[1] / "golden"
 UPDATE = os.environ.get("THINLAYER_UPDATE_GOLDEN") == "1"
@@ -397,7 +396,7 @@ def test_golden_files(key, language):
         diff = "".join(difflib.unified_diff(golden.splitlines(True), text.splitlines(True), str(path),
                                             "generated"))
         pytest.fail(f"generated {language} differs from {path}:\n{diff}\nIf the change is intended, rerun "
-                    f"with THINLAYER_UPDATE_GOLDEN=1 python3 -m pytest tests/test_codegen.py; review the "
+                    f"with THINLAYER_UPDATE_GOLDEN=1 python3 -m pytest tests/export/test_codegen.py; review the "
                     f"diff")
 
 
@@ -437,7 +436,7 @@ def test_octave_output_runs_if_octave_is_installed(tmp_path):
 
 
 # ---------------------------------------------------------------------------------------------
-# API, names and bad input
+# API, names in the code, protocol
 # ---------------------------------------------------------------------------------------------
 
 def test_generated_code_api_and_files():
@@ -474,19 +473,6 @@ def test_scaled_names_are_sanitised_and_documented(tmp_path):
     assert_close(got, ip.lambdify(args, scaled=True)(*pts.T)[:, None], "scaled pressure")
 
 
-def test_identifiers():
-    assert identifier("H_*", "c") == "H_s"
-    assert identifier("delta_0^*", "rust") == "delta_0_s"
-    assert identifier("x_{1}", "julia") == "x_1"
-    assert identifier("\\vartheta", "octave") == "vartheta"
-    assert identifier("μ", "fortran") == "mu" and identifier("Δ", "c") == "Delta"
-    assert identifier("2x", "c") == "v_2x"
-    assert identifier("\\mathcal{A}", "rust") == "A" and identifier("\\boldsymbol{\\xi}_1", "c") == "xi_1"
-    assert identifier("lambda", "python") == "lambda_" and identifier("lambda", "c") == "lambda"
-    assert identifier("end", "julia") == "end_" and identifier("END", "fortran") == "END_"
-    assert identifier("exp", "c") == "exp_"  # would shadow the math function
-
-
 def test_awkward_symbol_names_survive_the_comments(tmp_path):
     # a LaTeX name in the Python docstring (\\xi is an escape) and a C comment terminator in a name
     xi, odd = sp.Symbol("\\xi", real=True), sp.Symbol("q*/2", positive=True)
@@ -503,73 +489,6 @@ def test_keyword_symbols_are_renamed_in_the_code(tmp_path):
     assert gc.arguments == ("lambda_", "end")
     assert load_module(gc, tmp_path).prod(3.0, 4.0) == 12.0
     assert generate(lam * end, "octave", name="prod", args=[lam, end]).arguments == ("lambda", "end_")
-
-
-def test_bad_language():
-    with pytest.raises(ValueError, match="c, fortran, rust, julia, octave, python"):
-        generate(CASES["inner_pressure"].result, "cobol")
-    assert generate(CASES["inner_pressure"].result, "MATLAB").language == "octave"
-
-
-def test_bad_inputs():
-    x = sp.Symbol("x")
-    with pytest.raises(ValueError, match="cannot generate code from a object"):
-        generate(object(), "c")
-    with pytest.raises(ValueError, match="strings are not parsed"):
-        generate("x**2", "c", args=[x])
-    with pytest.raises(ValueError, match="args is required"):
-        generate(x**2, "c")
-    with pytest.raises(ValueError, match="must be a sympy Symbol"):
-        generate(x**2, "c", args=["x"])
-    with pytest.raises(ValueError, match="repeat"):
-        generate(x**2, "c", args=[x, x])
-    with pytest.raises(ValueError, match="complex"):
-        generate(sp.I * x, "c", args=[x])
-    with pytest.raises(ValueError, match="not a sympy expression"):
-        generate({"a": sp.Eq(x, 1)}, "c", args=[x])
-    with pytest.raises(ValueError, match="no symbolic parameter"):
-        generate(kernel_coefficients(BondedLayer(sp.Rational(1, 4)), 1), "c")
-    with pytest.raises(ValueError, match="no symbolic parameter"):
-        generate(kernel_coefficients(FrictionlessLayer(), 1), "c")
-    with pytest.raises(ValueError, match="GenericLayer"):
-        generate(kernel_coefficients(GenericLayer(), 1), "c")
-    with pytest.raises(MissingArgumentError, match="y"):
-        generate(x + sp.Symbol("y"), "c", args=[x])
-    with pytest.raises(NotImplementedError, match="g"):
-        generate(sp.Function("g")(x), "c", args=[x])
-    with pytest.raises(NotImplementedError):
-        generate(sp.besselj(0, x), "python", args=[x])
-
-
-def test_bad_function_names():
-    x = sp.Symbol("x")
-    for name, lang in [("for", "c"), ("fn", "rust"), ("end", "julia"), ("function", "octave"),
-                       ("lambda", "python"), ("EXP", "fortran"), ("2f", "c"), ("my-f", "python"),
-                       ("f" * 64, "fortran")]:
-        with pytest.raises(ValueError, match="function name"):
-            generate(x, lang, name=name, args=[x])
-    assert generate(x, "c", name="f" * 64, args=[x]).function_name == "f" * 64  # only Fortran limits length
-
-
-def test_name_collisions():
-    Hs, H_s = sp.Symbol("H_*"), sp.Symbol("H_s")
-    with pytest.raises(NameCollisionError, match=r"argument H_\* -> 'H_s'; argument H_s -> 'H_s'"):
-        generate(Hs + H_s, "c", args=[Hs, H_s])
-    R, r = sp.symbols("R r")
-    assert generate(R * r, "c", name="rr", args=[R, r]).arguments == ("R", "r")
-    with pytest.raises(NameCollisionError, match="Fortran ignores case"):
-        generate(R * r, "fortran", name="rr", args=[R, r])
-    lam, lam_ = sp.symbols("lambda lambda_")
-    with pytest.raises(NameCollisionError, match="lambda_"):
-        generate(lam + lam_, "python", name="f", args=[lam, lam_])
-    x = sp.Symbol("x")
-    with pytest.raises(NameCollisionError, match="function name"):
-        generate(x, "julia", name="x", args=[x])
-    out = sp.Symbol("out")
-    with pytest.raises(NameCollisionError, match="output array"):
-        generate([out, 2 * out], "c", args=[out])
-    with pytest.raises(NameCollisionError, match="argument x -> 'x'; output 'x' -> 'x'"):
-        generate({"p": x, "x": 2 * x}, "rust", args=[x])
 
 
 def test_write_refuses_to_overwrite(tmp_path):

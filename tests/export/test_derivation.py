@@ -1,10 +1,9 @@
-"""Derivation files, the LaTeX report and the command line."""
+"""Derivation files and the LaTeX report (the ``report``/``derive`` subcommand: test_cli.py)."""
 import shutil
 from pathlib import Path
 
 import pytest
 
-from thinlayer.export.cli import main
 from thinlayer.export.derivation import DerivationFileError, load_derivation, report_latex, write_report
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -19,18 +18,6 @@ def test_default_derivation_report(tmp_path):
     from thinlayer import errata
 
     assert "Errata" in text and text.count(r"\paragraph{(") == len(errata.ENTRIES)
-
-
-def test_cli_and_no_overwrite(tmp_path, capsys):
-    f = ROOT / "derivations" / "quartic_punch.toml"
-    assert main(["derive", str(f), "--out", str(tmp_path)]) == 0
-    assert main(["derive", str(f), "--out", str(tmp_path)]) == 0  # our own file: replaced
-    mine = tmp_path / "quartic_punch.tex"
-    mine.write_text("my notes\n")
-    assert main(["derive", str(f), "--out", str(tmp_path)]) == 2
-    assert "not written by thinlayer" in capsys.readouterr().err
-    assert mine.read_text() == "my notes\n"
-    assert main(["derive", str(f), "--out", str(tmp_path), "--force"]) == 0
 
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="needs pdflatex (installed by .ci/run)")

@@ -1,4 +1,4 @@
-"""Tests of the direct numerical contact solver :mod:`thinlayer.numerics.direct`.
+"""Tests of the direct axisymmetric contact solver :mod:`thinlayer.numerics.axisymmetric`.
 
 The expected values come from routes independent of the solver:
 
@@ -48,13 +48,13 @@ import sympy as sp
 from scipy import integrate
 
 from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, HalfSpace
-from thinlayer.numerics.direct import (
+from thinlayer.numerics import (
     AxisymmetricContact,
-    _basis_transform,
     contact_for_radius,
     solve_axisymmetric,
     surface_displacement,
 )
+from thinlayer.numerics._spectral import basis_transform
 
 slow = pytest.mark.slow
 
@@ -109,7 +109,7 @@ def test_basis_hankel_transform_against_quadrature(n, b):
     f = lambda th: mpmath.jacobi(n, 0, -0.5, mpmath.cos(2 * th)) * mpmath.besselj(0, b * mpmath.sin(th)) \
         * mpmath.sin(th)
     ref = float(mpmath.quad(f, [0, mpmath.pi / 4, mpmath.pi / 2]))
-    assert float(_basis_transform(n, np.array(b))) == pytest.approx(ref, rel=1e-12, abs=1e-14)
+    assert float(basis_transform(n, np.array(b))) == pytest.approx(ref, rel=1e-12, abs=1e-14)
 
 
 # --------------------------------------------------------------------------- half-space limit
@@ -321,3 +321,39 @@ def test_bad_input_messages():
         contact_for_radius(BondedLayer(0.3), good, 0.0, 1.0)
     with pytest.raises(TypeError, match="AxisymmetricContact"):
         surface_displacement(None, [0.0])
+
+
+# --------------------------------------------------------------------------- one solver, two ways to give the punch
+def test_punch_and_profile_forms_agree():
+    from thinlayer import Punch
+
+    R = 1000.0
+    a = solve_axisymmetric(BondedLayer(0.3), Punch.paraboloid(R=R), 0.05, 1.0, error_estimate=False)
+    b = solve_axisymmetric(BondedLayer(0.3), "x_1**2/2000 + x_2**2/2000", 0.05, 1.0, error_estimate=False)
+    c = solve_axisymmetric(BondedLayer(0.3), paraboloid(R), 0.05, 1.0, error_estimate=False)
+    assert a.punch == Punch.paraboloid(R=R) and b.punch is not None and c.punch is None
+    assert a.force == pytest.approx(c.force, rel=1e-12) and b.radius == pytest.approx(c.radius, rel=1e-12)
+    assert a.contact_radius == a.radius and a.contact_area == pytest.approx(math.pi * a.radius**2)
+    d = contact_for_radius(BondedLayer(0.3), Punch.paraboloid(R=R), a.radius, 1.0, error_estimate=False)
+    assert d.delta0 == pytest.approx(0.05, rel=1e-9) and d.punch == a.punch
+
+
+def test_half_space_needs_no_thickness():
+    res = solve_axisymmetric(HalfSpace(), paraboloid(2.0), 0.5, nu=0.3, error_estimate=False)
+    assert res.radius == pytest.approx(1.0, rel=1e-10)
+    with pytest.raises(ValueError, match="thickness H"):
+        solve_axisymmetric(BondedLayer(0.3), paraboloid(2.0), 0.5)
+
+
+def test_numeric_layer_nu():
+    from thinlayer.layers.kernels import IncompressibleLayer
+    from thinlayer.numerics._layer import numeric_layer_nu
+
+    assert numeric_layer_nu(BondedLayer(0.3), None) == 0.3
+    assert numeric_layer_nu(BondedLayer(0.3), 0.3) == 0.3
+    assert numeric_layer_nu(FrictionlessLayer(), 0.25) == 0.25
+    assert numeric_layer_nu(IncompressibleLayer(), None) == 0.5
+    with pytest.raises(ValueError, match="admissible"):
+        numeric_layer_nu(HalfSpace(), 0.5)
+    with pytest.raises(TypeError, match="nu must be"):
+        numeric_layer_nu(HalfSpace(), "0.3")

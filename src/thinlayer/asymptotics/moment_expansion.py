@@ -58,7 +58,9 @@ class MomentExpansion(RichDisplay):
         return sp.Add(*[w * Lam ** (-2 * n - 2) * laplacian(f, v1, v2, n) for n, w in enumerate(self.weights())])
 
     def pairing(self, phi: sp.Expr, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2, Lam: sp.Expr = S.Lambda) -> sp.Expr:
-        """``<k(Lambda xi), phi>`` by (2.16): ``sum_{|alpha| <= 2 order + 1} mu_alpha D^alpha phi(0) / (alpha! Lambda^{|alpha|+2})``.
+        """``<k(Lambda xi), phi>`` by (2.16).
+
+        ``sum_{|alpha| <= 2 order + 1} mu_alpha D^alpha phi(0) / (alpha! Lambda^{|alpha|+2})``.
 
         Built from the individual moments (2.21), not from the Laplacian form, so that
         comparing it with :meth:`apply` checks (2.21) against (2.22).
@@ -79,7 +81,7 @@ class MomentExpansion(RichDisplay):
         """``k(Lambda xi) ~ sum_n ...`` with the weights written out, tagged (2.22)."""
         parts = []
         for n, w in enumerate(self.weights()):
-            op = r"\delta(\boldsymbol{\xi})" if n == 0 else rf"\Delta^{{{n}}}\delta(\boldsymbol{{\xi}})" if n > 1 else r"\Delta\delta(\boldsymbol{\xi})"
+            op = r"\delta(\boldsymbol{\xi})" if n == 0 else rf"\Delta^{{{n}}}\delta(\boldsymbol{{\xi}})" if n > 1 else r"\Delta\delta(\boldsymbol{\xi})"  # noqa: E501 (one formula)
             parts.append(rf"\left({sp.latex(w)}\right) \Lambda^{{{-2 * n - 2}}} {op}")
         return r"k(\Lambda\boldsymbol{\xi}) \sim " + " + ".join(parts) + r" + \dots \tag{2.22}"
 

@@ -1,4 +1,4 @@
-"""Command line: ``thinlayer {report,coefficients,inner,solve,codegen,errata} ...``.
+"""Command line: ``thinlayer {report,coefficients,inner,solve,codegen,errata,validate} ...``.
 
 Every subcommand prints readable text by default, ``--json`` for machine-readable output (keys
 documented in each subcommand's ``--help``) and, where a formula is the answer, ``--latex``.
@@ -13,6 +13,8 @@ from pathlib import Path
 from typing import Any
 
 import sympy as sp
+
+from ..parse import as_expr
 
 EXIT_OK, EXIT_FAILURE, EXIT_BAD_INPUT = 0, 1, 2
 
@@ -77,7 +79,7 @@ def _num(x: Any) -> float | None:
 
 def _expr_json(e: Any) -> dict:
     """``{"expr": sympy string, "latex": LaTeX, "value": float or null}``."""
-    e = sp.sympify(e)
+    e = as_expr(e)
     return {"expr": str(e), "latex": sp.latex(e), "value": _num(e) if e.is_number else None}
 
 
@@ -272,19 +274,7 @@ def _cmd_codegen(args) -> int:
 # ---------------------------------------------------------------------------------------------
 # the parser
 # ---------------------------------------------------------------------------------------------
-def build_parser() -> argparse.ArgumentParser:
-    fmt = argparse.RawDescriptionHelpFormatter
-    ap = argparse.ArgumentParser(
-        prog="thinlayer", formatter_class=fmt,
-        description="Symbolic asymptotics of a rigid punch pressed into a thin elastic layer.",
-        epilog="examples:\n"
-               "  thinlayer report derivations/elliptic_paraboloid.toml --out build --pdf\n"
-               "  thinlayer coefficients --nu 3/10 --order 4 --json\n"
-               "  thinlayer solve --nu 0.3 --kind elliptic_paraboloid --param R_1=4 --param R_2=1 "
-               "--delta0 0.5 --H 0.05\n\n"
-               "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure")
-    sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
-
+def _add_report(sub: Any, fmt: type) -> None:
     r = sub.add_parser("report", aliases=["derive"], formatter_class=fmt,
                        help="carry out a derivation file and write its LaTeX report (and PDF)",
                        description="Carry out a derivation file (derivations/*.toml) and write <out>/<name>.tex.\n"
@@ -297,9 +287,12 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(r, latex=False)
     r.set_defaults(func=_cmd_report)
 
+
+def _add_coefficients(sub: Any, fmt: type) -> None:
     c = sub.add_parser("coefficients", formatter_class=fmt, help="A, m_n (2.20), M_k (4.2) and kernel moments (2.21)",
                        description="Coefficients of the layer kernel's expansions.\n"
-                                   "JSON keys: nu, model, order, A, m (list m_0..m_order), M (list M_0..M_order), moments "
+                                   "JSON keys: nu, model, order, A, m (list m_0..m_order), M (list M_0..M_order), "
+                                   "moments "
                                    "({'mu_i,j': ...}); every value is {expr, latex, value (float or null)}.",
                        epilog="examples:\n  thinlayer coefficients --nu 3/10 --order 4 --json\n"
                               "  thinlayer coefficients --order 2 --latex     # symbolic nu")
@@ -309,6 +302,8 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(c)
     c.set_defaults(func=_cmd_coefficients)
 
+
+def _add_inner(sub: Any, fmt: type) -> None:
     i = sub.add_parser("inner", formatter_class=fmt, help="inner expansion of the contact pressure (2.26), (4.1)",
                        description="Inner expansion p_0 + p_1 + ... for a punch.\n"
                                    "JSON keys: punch, nu, order, arguments, terms, scaled_terms, pressure "
@@ -322,6 +317,8 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(i)
     i.set_defaults(func=_cmd_inner)
 
+
+def _add_solve(sub: Any, fmt: type) -> None:
     s = sub.add_parser("solve", formatter_class=fmt, help="contact solution for numeric parameters",
                        description="Force, contact area and edge shift for numeric parameters (thinlayer.solve).\n"
                                    "JSON keys: nu, H, mu, delta0, force, force_leading, force_correction, "
@@ -342,6 +339,8 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(s)
     s.set_defaults(func=_cmd_solve)
 
+
+def _add_errata(sub: Any, fmt: type) -> None:
     e = sub.add_parser("errata", formatter_class=fmt, help="the misprints found by re-deriving the paper",
                        description="The errata registry.\nJSON: a list of {equation, kind, quantity, printed, "
                                    "derived, evidence}.",
@@ -349,6 +348,8 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(e)
     e.set_defaults(func=_cmd_errata)
 
+
+def _add_codegen(sub: Any, fmt: type) -> None:
     g = sub.add_parser("codegen", formatter_class=fmt, help="generate C, Fortran, Rust, Julia, Octave or Python code",
                        description="Generate functions from a result: 'inner' (pressure (2.26)), 'force' (force "
                                    "law (1.8) and contact area), 'coefficients' (A, m_n, M_k of nu), 'composite' "
@@ -374,13 +375,48 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
 
-    from ..validation.study import add_cli as _validate_cli
 
-    _validate_cli(sub, fmt)
+def build_parser() -> argparse.ArgumentParser:
+    """The ``thinlayer`` argument parser: one subcommand per stage of the work.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        With the subcommands report (alias derive), coefficients, inner, solve, errata, codegen and
+        validate (from :mod:`thinlayer.validation`); each sets ``func``, its handler.
+    """
+    from ..validation import add_cli as add_validate
+
+    fmt = argparse.RawDescriptionHelpFormatter
+    ap = argparse.ArgumentParser(
+        prog="thinlayer", formatter_class=fmt,
+        description="Symbolic asymptotics of a rigid punch pressed into a thin elastic layer.",
+        epilog="examples:\n"
+               "  thinlayer report derivations/elliptic_paraboloid.toml --out build --pdf\n"
+               "  thinlayer coefficients --nu 3/10 --order 4 --json\n"
+               "  thinlayer solve --nu 0.3 --kind elliptic_paraboloid --param R_1=4 --param R_2=1 "
+               "--delta0 0.5 --H 0.05\n\n"
+               "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure")
+    sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
+    for add in (_add_report, _add_coefficients, _add_inner, _add_solve, _add_errata, _add_codegen):
+        add(sub, fmt)
+    add_validate(sub, fmt)
     return ap
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run the command line and return its exit code.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments after ``thinlayer`` (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        0 success, 2 bad input (a one-line reason on stderr), 1 any other failure.
+    """
     ap = build_parser()
     args = ap.parse_args(argv)
     from ..punch import PunchError

@@ -32,6 +32,8 @@ class DerivationFileError(ValueError):
 
 @dataclass(frozen=True)
 class Derivation:
+    """A validated derivation file: what :func:`report_latex` derives, in the paper's order."""
+
     name: str
     title: str
     layer: LayerKernel
@@ -57,11 +59,11 @@ def _validation_table(vt: Any) -> dict | None:
     if unknown:
         raise DerivationFileError(f"[validation] unknown key(s) {sorted(unknown)}; valid keys are "
                                   f"{sorted(_VALIDATION_KEYS)}")
-    from ..validation.study import _check_list, _check_nu, _check_ratio, _check_shapes
+    from ..validation import check_nus, check_ratios, check_shapes
 
-    checks = (("nu", lambda v: list(_check_list(v, _check_nu, "nu")), [0.3]),
-              ("H_over_a", lambda v: list(_check_list(v, _check_ratio, "H_over_a")), [0.1, 0.05, 0.025]),
-              ("shapes", lambda v: list(_check_shapes(v)), ["sphere"]))
+    checks = (("nu", lambda v: list(check_nus(v, "nu")), [0.3]),
+              ("H_over_a", lambda v: list(check_ratios(v, "H_over_a")), [0.1, 0.05, 0.025]),
+              ("shapes", lambda v: list(check_shapes(v)), ["sphere"]))
     out = {}
     for key, check, default in checks:
         try:
@@ -69,6 +71,8 @@ def _validation_table(vt: Any) -> dict | None:
         except (TypeError, ValueError) as exc:
             raise DerivationFileError(f"[validation] {key} = {vt.get(key)!r}: {exc}") from exc
     return out
+
+
 _CONTACT_KEYS = {"delta0", "H", "mu", "nu", "parameters", "force"}
 
 
@@ -91,15 +95,15 @@ def _contact_table(ct: Any, layer: LayerKernel, punch: Punch) -> dict | None:
                 raise DerivationFileError(f"[contact] {key} = {val!r} is invalid: expected a number > 0")
             out[key] = float(val)
     nu = ct.get("nu")
-    if layer.name == "frictionless":
+    if layer.base == "frictionless":
         if not isinstance(nu, (int, float)) or isinstance(nu, bool) or not -1 < nu < 0.5:
             raise DerivationFileError(f"[contact] nu = {nu!r}: the frictionless base needs a number in (-1, 1/2) "
                                       "for vartheta = mu/(1 - nu)")
         out["nu"] = float(nu)
-    elif layer.name == "bonded" and getattr(layer, "parameter", None) is not None:
+    elif _compressible_bonded(layer) and layer.parameter is not None:
         if nu is None:
             raise DerivationFileError("[contact] needs 'nu' (a number in (-1, 1/2)) because [layer] nu is symbolic")
-    if nu is not None and layer.name == "bonded":
+    if nu is not None and _compressible_bonded(layer):
         try:
             out["layer"] = BondedLayer(nu)
         except (ValueError, TypeError) as exc:
@@ -120,6 +124,11 @@ def _contact_table(ct: Any, layer: LayerKernel, punch: Punch) -> dict | None:
     return out
 
 
+def _compressible_bonded(layer: LayerKernel) -> bool:
+    """A compressible layer bonded to its base (not the incompressible limit): the (3.15)-(3.25) sections apply."""
+    return layer.base == "bonded" and layer.has_compressible_expansion
+
+
 def _need(table: dict, key: str, where: str, kinds: tuple, what: str) -> Any:
     if key not in table:
         raise DerivationFileError(f"[{where}] is missing the key '{key}' ({what})")
@@ -129,9 +138,44 @@ def _need(table: dict, key: str, where: str, kinds: tuple, what: str) -> Any:
     return val
 
 
-def load_derivation(path: str | Path) -> Derivation:
-    """Read and validate a derivation file."""
-    path = Path(path)
+def _layer_table(lay: dict) -> LayerKernel:
+    """The layer of ``[layer]``: ``model`` (bonded or frictionless) and ``nu`` (symbolic, exact or a number)."""
+    model = lay.get("model", "bonded")
+    if model not in ("bonded", "frictionless"):
+        raise DerivationFileError(f"[layer] model = {model!r}: valid models are 'bonded' and 'frictionless'")
+    if model == "frictionless":
+        return FrictionlessLayer()
+    nu = lay.get("nu", "symbolic")
+    if nu == "symbolic":
+        return BondedLayer()
+    if isinstance(nu, (int, float, str)) and not isinstance(nu, bool):
+        try:
+            return BondedLayer(nu)
+        except (ValueError, TypeError) as exc:
+            raise DerivationFileError(f"[layer] nu = {nu!r}: {exc}") from exc
+    raise DerivationFileError(f"[layer] nu = {nu!r}: use 'symbolic', an exact string like '3/10' or a number")
+
+
+def _punch_table(pu: dict) -> Punch:
+    """The punch of ``[punch]``: a catalogue ``kind`` or a polynomial ``expr``."""
+    if ("kind" in pu) == ("expr" in pu):
+        raise DerivationFileError("[punch] needs exactly one of 'kind' (a catalogue punch) or 'expr' (a polynomial)")
+    try:
+        if "kind" in pu:
+            kinds = {"elliptic_paraboloid": Punch.elliptic_paraboloid, "paraboloid": Punch.paraboloid,
+                     "fourth_degree": Punch.fourth_degree}
+            if pu["kind"] not in kinds:
+                raise DerivationFileError(f"[punch] kind = {pu['kind']!r}: valid kinds are {sorted(kinds)}")
+            return kinds[pu["kind"]]()
+        return Punch(_need(pu, "expr", "punch", (str,), "a polynomial in x_1, x_2 as a string"))
+    except ValueError as exc:
+        if isinstance(exc, DerivationFileError):
+            raise
+        raise DerivationFileError(f"[punch]: {exc}") from exc
+
+
+def _read_tables(path: Path) -> dict:
+    """The TOML tables of a derivation file, with the required ones present and no unknown one."""
     if not path.is_file():
         raise DerivationFileError(f"derivation file {path} does not exist")
     try:
@@ -144,48 +188,41 @@ def load_derivation(path: str | Path) -> Derivation:
     for t in ("derivation", "layer", "punch"):
         if not isinstance(data.get(t), dict):
             raise DerivationFileError(f"{path}: the table [{t}] is required")
+    return data
+
+
+def load_derivation(path: str | Path) -> Derivation:
+    """Read and validate a derivation file.
+
+    Parameters
+    ----------
+    path : str or Path
+        A TOML file with the tables ``[derivation]``, ``[layer]``, ``[punch]`` and optionally
+        ``[coefficients]``, ``[inner]``, ``[edge_shift]``, ``[contact]``, ``[validation]``.
+
+    Returns
+    -------
+    Derivation
+        The validated contents.
+
+    Raises
+    ------
+    DerivationFileError
+        naming the key and what is valid.
+    """
+    path = Path(path)
+    data = _read_tables(path)
     d = data["derivation"]
     name = _need(d, "name", "derivation", (str,), "a file-name-safe string")
     if not name.replace("_", "").replace("-", "").isalnum():
         raise DerivationFileError(f"[derivation] name = {name!r}: use letters, digits, '-' and '_' only")
     title = d.get("title", name)
-    lay = data["layer"]
-    model = lay.get("model", "bonded")
-    if model not in ("bonded", "frictionless"):
-        raise DerivationFileError(f"[layer] model = {model!r}: valid models are 'bonded' and 'frictionless'")
-    nu = lay.get("nu", "symbolic")
-    if model == "bonded":
-        if nu == "symbolic":
-            layer: LayerKernel = BondedLayer()
-        elif isinstance(nu, (int, float, str)) and not isinstance(nu, bool):
-            try:
-                layer = BondedLayer(nu)
-            except (ValueError, TypeError) as exc:
-                raise DerivationFileError(f"[layer] nu = {nu!r}: {exc}") from exc
-        else:
-            raise DerivationFileError(f"[layer] nu = {nu!r}: use 'symbolic', an exact string like '3/10' or a number")
-    else:
-        layer = FrictionlessLayer()
+    layer = _layer_table(data["layer"])
     co = data.get("coefficients", {})
     corder = co.get("order", 3)
     if not isinstance(corder, int) or isinstance(corder, bool) or not 1 <= corder <= 30:
         raise DerivationFileError(f"[coefficients] order = {corder!r}: an integer from 1 to 30")
-    pu = data["punch"]
-    if ("kind" in pu) == ("expr" in pu):
-        raise DerivationFileError("[punch] needs exactly one of 'kind' (a catalogue punch) or 'expr' (a polynomial)")
-    try:
-        if "kind" in pu:
-            kinds = {"elliptic_paraboloid": Punch.elliptic_paraboloid, "paraboloid": Punch.paraboloid,
-                     "fourth_degree": Punch.fourth_degree}
-            if pu["kind"] not in kinds:
-                raise DerivationFileError(f"[punch] kind = {pu['kind']!r}: valid kinds are {sorted(kinds)}")
-            punch = kinds[pu["kind"]]()
-        else:
-            punch = Punch(_need(pu, "expr", "punch", (str,), "a polynomial in x_1, x_2 as a string"))
-    except ValueError as exc:
-        if isinstance(exc, DerivationFileError):
-            raise
-        raise DerivationFileError(f"[punch]: {exc}") from exc
+    punch = _punch_table(data["punch"])
     inner = data.get("inner", {})
     iorder = inner.get("order")
     if iorder is not None and (not isinstance(iorder, int) or isinstance(iorder, bool) or iorder < 1):
@@ -203,15 +240,44 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
 
     With ``figure_dir`` (a folder next to the .tex file) the validation plots are written there and
     included; without it the report has the validation tables only.
-    """
-    from .report import Document, alexandrov_generic_latex, errata_section
 
-    layer, punch = der.layer, der.punch
+    Parameters
+    ----------
+    der : Derivation
+        A derivation, e.g. from :func:`load_derivation`.
+    figure_dir : str or Path, optional
+        Where to write the validation plots (next to the .tex file).
+
+    Returns
+    -------
+    str
+        The LaTeX document: kernel (2.3), coefficients (2.20), (4.2), moments (2.21), (2.22), inner
+        expansion (2.24)-(2.31), (4.1), boundary layer (3.15)-(3.25), force law (1.8), edge shift,
+        contact solution, validation and errata.
+    """
+    from .report import Document, errata_section
+
     doc = Document(der.title)
+    _kernel_sections(doc, der)
+    _inner_sections(doc, der)
+    _boundary_layer_sections(doc, der.layer, der.punch)
+    if der.edge_shift_nus:
+        _edge_shift_section(doc, der.edge_shift_nus)
+    if der.contact is not None:
+        _contact_section(doc, der)
+    if der.validation is not None:
+        _validation_section(doc, der.validation, figure_dir)
+    errata_section(doc)
+    return doc.latex()
+
+
+def _kernel_sections(doc: Any, der: Derivation) -> None:
+    """Kernel (2.3), coefficients (2.20), (4.2) (tabulated when numeric), moments (2.21) and (2.22)."""
+    layer = der.layer
     doc.section("Layer kernel (2.3), (2.4)").math(rf"\mathcal{{L}}(u) = {sp.latex(layer.L())} \tag{{2.3}}")
     co = kernel_coefficients(layer, der.coefficient_order)
     doc.section("Coefficients (2.20), (4.2)").math(co.latex())
-    if layer.name != "generic" and getattr(layer, "parameter", None) is None:
+    if not layer.symbolic_coefficients and layer.parameter is None:  # numbers: tabulate them
         rows = [[str(n), f"{float(co.m[n]):.12g}", f"{float(co.M[n]):.12g}"]
                 for n in range(1, der.coefficient_order + 1)]
         doc.table("rrr", ["$n$", "$m_n$ (2.20)", "$M_n$ (4.2)"], rows)
@@ -222,25 +288,36 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
             val = sp.factor(kernel_moment(layer, 2 * k, 2 * n - 2 * k))
             mom.append(rf"\mu_{{{2 * k},{2 * n - 2 * k}}} = {sp.latex(val)} \tag{{2.21}}")
     doc.math(SEPARATOR.join(mom)).math(moment_expansion(layer, min(2, der.coefficient_order)).latex())
+
+
+def _inner_sections(doc: Any, der: Derivation) -> None:
+    """The punch, the inner expansion (2.24)-(2.31), (4.1) and, for an ellipse, the contact area (3.1)."""
+    layer, punch = der.layer, der.punch
     doc.section("Punch and inner expansion (2.24)--(2.31), (4.1)").math(punch.latex())
     doc.math(inner_pressure(layer, punch, der.inner_order).latex())
     if punch.name == "elliptic paraboloid":
         from ..asymptotics.contour import ellipse_contour
 
         doc.section("Leading contact area (3.1)").math(ellipse_contour().latex())
-    if layer.name == "frictionless":
-        from ..asymptotics.force_law import force_law
+
+
+def _boundary_layer_sections(doc: Any, layer: LayerKernel, punch: Punch) -> None:
+    """Boundary layer (3.15)-(3.25) and force law (1.8): frictionless base or compressible bonded layer."""
+    from ..asymptotics.force_law import force_law
+
+    if layer.base == "frictionless":
         from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
         doc.section("Boundary layer and edge shift (frictionless base)").text(
-            "The kernel does not depend on $\\nu$; $m_1 = 0$, so Alexandrov's (3.20)--(3.21) give $B = 1/(2\\mathcal{A})$, "
-            "$C = B/\\mathcal{A}$, and the force has no correction of relative order $(H/a)^2$: the first correction is "
-            "of order $(H/a)^3$ (second-order boundary layer, not derived here; measured by the direct solver).")
+            "The kernel does not depend on $\\nu$; $m_1 = 0$, so Alexandrov's (3.20)--(3.21) give "
+            "$B = 1/(2\\mathcal{A})$, $C = B/\\mathcal{A}$, and the force has no correction of relative order "
+            "$(H/a)^2$: the first correction is of order $(H/a)^3$ (second-order boundary layer, not derived "
+            "here; measured by the direct solver).")
         doc.table("rr", ["$h^*$ exact (Wiener--Hopf)", "$h^*$ (3.25)"],
                   [[f"{float(edge_shift_exact(layer)):.10f}", f"{float(edge_shift_alexandrov(layer)):.10f}"]])
         doc.section("Force and contact area").math(force_law(layer, punch).latex())
-    if layer.name == "bonded":
-        from ..asymptotics.force_law import force_law
+    if _compressible_bonded(layer):
+        from .report import alexandrov_generic_latex
 
         doc.section("Boundary layer (3.15)--(3.25)").text(
             "Alexandrov's approximation (3.19) with $B$, $C$ fitted to $\\mathcal{A}$ (3.20) and $m_1$ (3.21); "
@@ -249,43 +326,49 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
         doc.section("Force and contact area with their first corrections in $H$").text(
             "Inner terms $p_0 + p_1$ plus the boundary layer's force defect; $a$ is the contact half-width.")
         doc.math(force_law(layer, punch).latex())
-    if der.edge_shift_nus:
-        from ..asymptotics.boundary_layer import alexandrov_parameters
-        from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
-        rows = []
-        for v in der.edge_shift_nus:
-            B, C = alexandrov_parameters(BondedLayer(v)).numeric()
-            rows.append([f"{v:g}", f"{float(B):.8f}", f"{float(C):.8f}", f"{float(edge_shift_exact(v)):.10f}",
-                         f"{float(edge_shift_alexandrov(v)):.10f}"])
-        doc.section("Edge shift of the contact area").text(
-            "The contour of the contact area lies at the distance $h^* H$ inside $\\Gamma_0$: exact "
-            "Wiener--Hopf value and Alexandrov's approximation (3.25).")
-        doc.table("rrrrr", ["$\\nu$", "$B$", "$C$", "$h^*$ exact", "$h^*$ (3.25)"], rows)
-    if der.contact is not None:
-        from ..asymptotics.solution import solve
 
-        c = der.contact
-        sol = solve(c.get("layer", layer), punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
-                    mu=c.get("mu", 1.0), parameters=c["parameters"], nu=c.get("nu"))
-        doc.section("Contact solution for numeric parameters").math(sol.latex())
-    if der.validation is not None:
-        from ..validation.study import validation_study
+def _edge_shift_section(doc: Any, nus: tuple) -> None:
+    """B, C (3.20)-(3.21) and the edge shift h*: exact (Wiener-Hopf) and Alexandrov's (3.25), per nu."""
+    from ..asymptotics.boundary_layer import alexandrov_parameters
+    from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
-        v = der.validation
-        study = validation_study(v["nu"], v["H_over_a"], v["shapes"], progress=False)
-        doc.section("Validation against the direct numerical solution").text(
-            "Asymptotic results (thinlayer.solve) against the direct numerical solution of the full "
-            "contact problem (thinlayer.numerics); relative errors, observed orders and the edge "
-            "shift from the numerical contact radius. Plots: run thinlayer validate with the option plots.")
-        doc.text("{\\footnotesize\n" + study.latex() + "\n}")
-        if figure_dir is not None:
-            figs = _validation_figures(study, Path(figure_dir))
-            for fig in figs:
-                doc.text(rf"\begin{{center}}\includegraphics[width=0.8\linewidth]{{{Path(figure_dir).name}/{fig}}}"
-                         r"\end{center}")
-    errata_section(doc)
-    return doc.latex()
+    rows = []
+    for v in nus:
+        B, C = alexandrov_parameters(BondedLayer(v)).numeric()
+        rows.append([f"{v:g}", f"{float(B):.8f}", f"{float(C):.8f}", f"{float(edge_shift_exact(v)):.10f}",
+                     f"{float(edge_shift_alexandrov(v)):.10f}"])
+    doc.section("Edge shift of the contact area").text(
+        "The contour of the contact area lies at the distance $h^* H$ inside $\\Gamma_0$: exact "
+        "Wiener--Hopf value and Alexandrov's approximation (3.25).")
+    doc.table("rrrrr", ["$\\nu$", "$B$", "$C$", "$h^*$ exact", "$h^*$ (3.25)"], rows)
+
+
+def _contact_section(doc: Any, der: Derivation) -> None:
+    """The contact solution for the numeric parameters of ``[contact]`` (:func:`thinlayer.solve`)."""
+    from ..asymptotics.solution import solve
+
+    c = der.contact
+    sol = solve(c.get("layer", der.layer), der.punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
+                mu=c.get("mu", 1.0), parameters=c["parameters"], nu=c.get("nu"))
+    doc.section("Contact solution for numeric parameters").math(sol.latex())
+
+
+def _validation_section(doc: Any, v: dict, figure_dir: str | Path | None) -> None:
+    """The validation table against the direct numerics (and its plots with ``figure_dir``)."""
+    from ..validation import validation_study
+
+    study = validation_study(v["nu"], v["H_over_a"], v["shapes"], progress=False)
+    doc.section("Validation against the direct numerical solution").text(
+        "Asymptotic results (thinlayer.solve) against the direct numerical solution of the full "
+        "contact problem (thinlayer.numerics); relative errors, observed orders and the edge "
+        "shift from the numerical contact radius. Plots: run thinlayer validate with the option plots.")
+    doc.text("{\\footnotesize\n" + study.latex() + "\n}")
+    if figure_dir is not None:
+        figs = _validation_figures(study, Path(figure_dir))
+        for fig in figs:
+            doc.text(rf"\begin{{center}}\includegraphics[width=0.8\linewidth]{{{Path(figure_dir).name}/{fig}}}"
+                     r"\end{center}")
 
 
 def _validation_figures(study, folder: Path) -> list[str]:
@@ -304,6 +387,22 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force:
     generated mark) or when ``force`` is given.  The text is generated completely before anything
     is written, the file is replaced atomically and the PDF compiled in a temporary folder, so a
     failed run leaves no half-written report.
+
+    Parameters
+    ----------
+    der : Derivation
+        The derivation to report.
+    out_dir : str or Path
+        The output folder (created if missing).
+    pdf : bool
+        Whether to compile the PDF too (needs latexmk or pdflatex).
+    force : bool
+        Whether to overwrite a .tex file that thinlayer did not write.
+
+    Returns
+    -------
+    Path
+        The .tex file.
     """
     from .report import check_writable, compile_pdf, write_tex
 

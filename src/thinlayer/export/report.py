@@ -110,7 +110,8 @@ def alexandrov_generic_latex() -> str:
     m1 = sp.Symbol("m_1", real=True)
     par = AlexandrovParameters(A=A, m1=m1, B=B, C=C)
     rows = [rf"\tilde{{\mathcal{{L}}}}(s) = {sp.latex(S.s * par.symbol())} \tag{{3.19}}",
-            r"B = \frac{1}{\mathcal{A} + \sqrt{\mathcal{A}^2 + 2 m_1}}, \quad C = \frac{B}{\mathcal{A}} \tag{3.20--3.21}",
+            r"B = \frac{1}{\mathcal{A} + \sqrt{\mathcal{A}^2 + 2 m_1}}, \quad "
+            r"C = \frac{B}{\mathcal{A}} \tag{3.20--3.21}",
             AlexandrovSolution(par, 1 / sp.sqrt(C) - 1 / (2 * B)).latex()]
     return SEPARATOR.join(rows)
 
@@ -156,7 +157,7 @@ def latex_engine() -> list[str]:
 
 
 def overfull_boxes(log: str, tolerance_pt: float = 1.0) -> list[str]:
-    """``Overfull \\hbox`` messages of a LaTeX log wider than ``tolerance_pt``."""
+    r"""``Overfull \hbox`` messages of a LaTeX log wider than ``tolerance_pt``."""
     out = []
     for m in re.finditer(r"Overfull \\hbox \(([\d.]+)pt too wide\)[^\n]*", log):
         if float(m.group(1)) > tolerance_pt:

@@ -430,7 +430,7 @@ class IncompressibleLayer(LayerKernel):
     ``A = lim L(s)/s = 0`` (2.4), so the compressible coefficients ``m_n`` of (2.20) do not exist
     (:meth:`coefficients`, :meth:`m`, :meth:`M` raise :class:`~thinlayer.IncompressibleLayerError`);
     the small-s data are ``L(s)/s = c_1 s^2 + c_2 s^4 + ...`` (:func:`incompressible_coefficients`).
-    Every stage that needs only ``L(u)`` works, e.g. :func:`thinlayer.numerics.direct.solve_axisymmetric`.
+    Every stage that needs only ``L(u)`` works, e.g. :func:`thinlayer.numerics.solve_axisymmetric`.
 
     Examples
     --------

@@ -1,46 +1,141 @@
-"""Axisymmetric punches: the spectral solver :func:`thinlayer.numerics.direct.solve_axisymmetric` driven by a Punch.
+"""Direct numerical solution of the axisymmetric unilateral contact problem (1.5)-(1.8).
 
-A :class:`~thinlayer.punch.Punch` is axisymmetric when ``Phi(x1, x2)`` depends on ``x1^2 + x2^2``
-only, i.e. when its angular derivative vanishes identically::
+This module is the *independent* route that validates the asymptotic expansions: it never
+uses ``A``, ``m_n`` or any thin-layer series; it only evaluates the kernel L(u) (2.3).
 
-    d Phi / d theta = x1 dPhi/dx2 - x2 dPhi/dx1 = 0.
+The punch is a :class:`~thinlayer.punch.Punch` (or a polynomial in ``x1, x2``) whose ``Phi`` depends on
+``x1^2 + x2^2`` only -- checked exactly, ``x1 dPhi/dx2 - x2 dPhi/dx1 = 0`` -- or directly its radial
+profile ``Phi(r)`` (a numpy callable or a sympy expression in one symbol).
 
-This is checked exactly on the polynomial (sympy), and the radial profile ``Phi(r) = Phi(r, 0)``
-is passed to the direct solver (spectral Galerkin method, see :mod:`thinlayer.numerics.direct`).
+Formulation
+-----------
+For an axisymmetric pressure p(r) on the disc r < c, the two-dimensional Fourier integral
+(2.1) reduces, with ``p_hat(alpha) = 2 pi pbar(alpha)`` and the angular integral
+``int_0^{2 pi} exp(i alpha r cos t) dt = 2 pi J0(alpha r)``, to the Hankel form::
+
+    u3(r) = (1/vartheta) int_0^oo pbar(a) L(a H) J0(a r) da,
+    pbar(a) = int_0^c p(rho) J0(a rho) rho d rho,       vartheta = mu / (1 - nu).
+
+(Check: for L = 1 this is Boussinesq's ``w = (1-nu)/(2 pi mu) iint p(y)/|x-y| dy``, because
+``int_0^oo J0(a r) J0(a rho) da`` is the ring average of ``1/(2 pi |x-y|)``.)  Note that the
+printed (2.1) carries a leading minus sign; with the sign convention of (1.5) (u3 >= delta0 - Phi,
+p >= 0) the kernel must be positive, as (2.6) has it.
+
+Discretisation (spectral Galerkin in the flat-punch basis)
+----------------------------------------------------------
+With x = r/c and y = 1 - 2 x^2 the pressure is expanded as::
+
+    p(r) = sum_n x_n psi_n(x),     psi_n(x) = (1 - x^2)^{-1/2} P_n^{(0,-1/2)}(1 - 2 x^2),
+
+whose Hankel transforms are (a Bateman-type Jacobi/Bessel integral; checked against mpmath
+quadrature in the tests)::
+
+    int_0^1 psi_n(x) J0(b x) x dx = beta_n j_{2n}(b),     beta_n = Gamma(n+1/2) / (sqrt(pi) n!),
+
+j_k the spherical Bessel function.  Galerkin projection of u3 = delta0 - Phi on psi_m gives::
+
+    (c/vartheta) sum_n K_mn x_n = F_m,   K_mn = int_0^oo beta_m beta_n j_2m(t) j_2n(t) L(t H/c) dt,
+    F_m = int_0^1 psi_m(x) (delta0 - Phi(c x)) x dx.
+
+Splitting ``L = 1 + (L - 1)``: the half-space part is diagonal by the Weber-Schafheitlin
+integral ``int_0^oo j_2m j_2n dt = pi delta_mn / (2(4n+1))`` (the flat-punch / Popov
+diagonalisation); the correction ``L(u) - 1 = O(u^2 e^{-2u})`` is smooth and exponentially
+decaying and is integrated by composite Gauss-Legendre quadrature on [0, 22 c/H].
+
+The basis represents both the bounded edge behaviour ``p ~ (c - r)^{1/2}`` and the flat-punch
+singularity ``p ~ (c - r)^{-1/2}``, whose coefficient is ``S = sum_n x_n P_n^{(0,-1/2)}(-1)``.
+The unknown contact radius is fixed by the condition that the pressure vanishes continuously
+at the edge (smooth punch, complementarity (1.5)): S = 0.  Because the solution is linear in
+delta0 at fixed c, ``delta0(c) = S[Phi] / S[1]`` in closed form; for a prescribed delta0 the
+radius follows by a bracketing root search (Brent) on this monotone function.  As the kernel's
+correction is analytic, the pressure is ``(1 - x^2)^{1/2}`` times a smooth function and the
+method converges spectrally; the boundary layer of width ~H at the edge needs about
+``8 sqrt(c/H)`` modes.  The error estimate is the change against a run with ~0.7 times as
+many modes (an over-estimate of the error of the finer run).  The discretisation itself lives in the
+private module ``thinlayer.numerics._spectral``.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
 import sympy as sp
+from scipy import integrate, optimize, special
 
 from .. import symbols as S
-from ..layers.kernels import HalfSpace, LayerKernel
+from .._checks import positive
+from ..display import RichDisplay, fmt
+from ..layers.kernels import LayerKernel
 from ..punch import Punch
-from . import direct as _direct
-from .direct import AxisymmetricContact
+from ._layer import numeric_layer_nu
+from ._spectral import Discretisation, correction_displacement, pressure_function, sample_radii
 
-__all__ = ["AxisymmetricPunchContact", "radial_profile", "solve_axisymmetric"]
+__all__ = ["AxisymmetricContact", "AxisymmetricPunchContact", "contact_for_radius", "radial_profile",
+           "solve_axisymmetric", "surface_displacement"]
+
+_MAX_MODES = 600
 
 #: the radius symbol of the radial profile Phi(r)
 r = sp.Symbol("r", nonnegative=True)
 
 
+# --------------------------------------------------------------------------- result
 @dataclass(frozen=True)
-class AxisymmetricPunchContact(AxisymmetricContact):
-    """:class:`thinlayer.numerics.direct.AxisymmetricContact` of a :class:`~thinlayer.punch.Punch`.
+class AxisymmetricContact(RichDisplay):
+    """Direct numerical solution of the axisymmetric unilateral contact problem (1.5)-(1.8).
 
-    Adds the punch and the names shared with :class:`~thinlayer.numerics.Contact2D`:
-    ``contact_radius`` (= ``radius``, c) and ``contact_area`` (``pi c^2``).
+    Attributes
+    ----------
+    layer : LayerKernel
+        Layer model (kernel (2.3)).
+    nu, mu, vartheta, H : float
+        Poisson ratio, shear modulus, ``vartheta = mu/(1-nu)`` (2.1), thickness.
+    delta0 : float
+        Indentation depth (1.5).
+    radius : float
+        Contact radius c (the pressure vanishes continuously at r = c).
+    force : float
+        Total force P = 2 pi int_0^c p r dr (1.8).
+    r, pressure : numpy.ndarray
+        Sample radii on [0, c] (clustered at the edge) and p(r) there (read-only arrays).
+    modes : int
+        Number of Galerkin modes.
+    radius_error, force_error, delta0_error : float
+        Convergence estimates: |change| against a run with ~0.7x the modes (absolute for
+        radius and delta0, relative for force); zero for the prescribed quantity.
+    coefficients : tuple of float
+        Coefficients of p in the normalised flat-punch basis (``vartheta/c`` included).
+    punch : Punch or None
+        The punch, when one was given (None for a bare radial profile ``Phi(r)``).
     """
 
-    punch: Any = None
+    layer: LayerKernel
+    nu: float
+    mu: float
+    vartheta: float
+    H: float
+    delta0: float
+    radius: float
+    force: float
+    r: np.ndarray = field(repr=False)
+    pressure: np.ndarray = field(repr=False)
+    modes: int
+    radius_error: float
+    force_error: float
+    delta0_error: float
+    coefficients: tuple[float, ...] = field(repr=False)
+    punch: Punch | None = None
+
+    @property
+    def equation(self) -> str:
+        return "1.5-1.8"
 
     @property
     def contact_radius(self) -> float:
-        """Contact radius c (the pressure vanishes continuously at r = c)."""
+        """Contact radius c (= ``radius``; the name shared with :class:`~thinlayer.numerics.Contact2D`)."""
         return self.radius
 
     @property
@@ -48,7 +143,33 @@ class AxisymmetricPunchContact(AxisymmetricContact):
         """Area of the contact disc, ``pi c^2``."""
         return math.pi * self.radius**2
 
+    def pressure_at(self, r: Any) -> np.ndarray:
+        """Contact pressure p(r) (zero outside the contact disc), accurate up to the edge."""
+        return pressure_function(np.asarray(self.coefficients), self.radius)(r)
 
+    def latex(self) -> str:
+        """One-line LaTeX summary of the solution with its convergence estimates."""
+        return (rf"c = {self.radius:.10g}\,(\pm {self.radius_error:.1e}),\quad "
+                rf"P = {self.force:.10g}\,(\pm {self.force_error:.1e}\,P),\quad "
+                rf"\delta_0 = {self.delta0:.10g},\quad H = {self.H:g},\quad \nu = {self.nu:g}")
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        what = f" of {self.punch.name} Phi = {fmt(self.punch.expr)}" if self.punch is not None else ""
+        layer = str(self.layer) if "nu=" in str(self.layer) else f"{self.layer}, nu = {self.nu:.6g}"
+        return [
+            f"{type(self).__name__}: direct numerical solution{what}   (1.5)-(1.8)",
+            f"  {layer}, mu = {self.mu:.6g}, H = {self.H:.6g}, delta0 = {self.delta0:.10g}",
+            f"  contact radius c = {self.radius:.12g}  (+- {self.radius_error:.1e})",
+            f"  force          P = {self.force:.12g}  (+- {self.force_error:.1e} P), {self.modes} modes",
+        ]
+
+
+#: former name of the result of a :class:`~thinlayer.punch.Punch` (now the same class, with ``punch`` set)
+AxisymmetricPunchContact = AxisymmetricContact
+
+
+# --------------------------------------------------------------------------- the punch and its profile
 def _as_punch(punch: Any) -> Punch:
     if isinstance(punch, (str, sp.Basic)):
         punch = Punch(punch)
@@ -63,8 +184,13 @@ def radial_profile(punch: Any) -> sp.Expr:
 
     Parameters
     ----------
-    punch:
-        A :class:`~thinlayer.punch.Punch` with numeric parameters.
+    punch : Punch or str
+        A :class:`~thinlayer.punch.Punch` with numeric parameters (or a polynomial in ``x1, x2``).
+
+    Returns
+    -------
+    sympy.Expr
+        ``Phi(r, 0)``.
 
     Raises
     ------
@@ -91,47 +217,291 @@ def radial_profile(punch: Any) -> sp.Expr:
     return sp.expand(phi.xreplace({S.x1: r, S.x2: sp.Integer(0)}))
 
 
-def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0,
-                       **kw: Any) -> AxisymmetricPunchContact:
-    """Direct solution of (1.5)-(1.8) for an axisymmetric punch via :func:`thinlayer.numerics.direct.solve_axisymmetric`.
+def _is_punch(shape: Any) -> bool:
+    """A Punch, a string, or a sympy expression in the plane coordinates ``thinlayer.symbols.x1, x2``."""
+    if isinstance(shape, (Punch, str)):
+        return True
+    return isinstance(shape, sp.Basic) and shape.has(S.x1, S.x2)
+
+
+def _vectorised(Phi_r: Any) -> Callable[[np.ndarray], np.ndarray]:
+    """Turn a numpy callable or a one-symbol sympy expression into a vectorised Phi(r)."""
+    if isinstance(Phi_r, sp.Basic):
+        free = sorted(Phi_r.free_symbols, key=str)
+        if len(free) > 1:
+            raise ValueError(f"Phi_r must depend on the radius only; it has free symbols {free}: "
+                             "substitute numbers for R, etc.")
+        f = sp.lambdify(free[0] if free else r, Phi_r, "numpy")
+    elif callable(Phi_r):
+        f = Phi_r
+    else:
+        raise TypeError(f"the punch must be a thinlayer Punch (or a polynomial in x1, x2) or a radial profile "
+                        f"Phi_r: a numpy-vectorised callable Phi(r) or a sympy expression in r; "
+                        f"got {Phi_r!r} ({type(Phi_r).__name__})")
+
+    def phi(rr: np.ndarray) -> np.ndarray:
+        rr = np.asarray(rr, dtype=float)
+        out = np.broadcast_to(np.asarray(f(rr), dtype=float), rr.shape)
+        if not np.all(np.isfinite(out)):
+            raise ValueError("Phi_r returned non-finite values on [0, c]")
+        return out
+
+    return phi
+
+
+def _profile(shape: Any) -> tuple[Punch | None, Callable[[np.ndarray], np.ndarray]]:
+    """``(punch or None, vectorised Phi(r))`` of an axisymmetric punch or of a radial profile."""
+    if _is_punch(shape):
+        punch = _as_punch(shape)
+        return punch, _vectorised(radial_profile(punch))
+    return None, _vectorised(shape)
+
+
+# --------------------------------------------------------------------------- input checks
+def _check_modes(n: Any) -> int | None:
+    if n is None:
+        return None
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
+        raise TypeError(f"n (number of modes) must be an integer, got {n!r}")
+    if not 4 <= n <= _MAX_MODES:
+        raise ValueError(f"n (number of modes) must lie in [4, {_MAX_MODES}], got {n}")
+    return int(n)
+
+
+def _default_modes(c_over_H: float) -> int:
+    return int(min(_MAX_MODES, math.ceil(8.0 * math.sqrt(max(c_over_H, 0.0))) + 12))
+
+
+def _material(layer: Any, H: Any, mu: Any, nu: Any) -> tuple[float, float, float]:
+    """Checked ``(H, mu, nu)``; H may be omitted (None) only for a layer without thickness (half-space)."""
+    nu_val = numeric_layer_nu(layer, nu)
+    if H is None:
+        if layer.has_thickness:
+            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
+        H = 1.0  # ignored by the half-space kernel
+    return positive(H, "H"), positive(mu, "mu"), nu_val
+
+
+# --------------------------------------------------------------------------- result assembly
+def _force(c: float, vt: float, d0: float, x1: np.ndarray, xP: np.ndarray, disc: Discretisation) -> float:
+    """``P = 2 pi c^2 x~_0/sqrt(d_0)`` (1.8): only psi_0 has nonzero mean."""
+    return 2 * math.pi * c * vt * (d0 * x1[0] - xP[0]) / disc.scale[0]
+
+
+def _result(layer, punch, nu, mu, H, delta0, c, disc, x1, xP, d0c, errs) -> AxisymmetricContact:
+    vartheta = mu / (1.0 - nu)
+    coef = (vartheta / c) * (delta0 * x1 - xP) if d0c is None else (vartheta / c) * (d0c * x1 - xP)
+    force = 2.0 * math.pi * c**2 * coef[0] / disc.scale[0]  # (1.8): only psi_0 has nonzero mean
+    radii = sample_radii(c)
+    p = pressure_function(coef, c)(radii)
+    radii.setflags(write=False)
+    p.setflags(write=False)
+    return AxisymmetricContact(layer, nu, mu, vartheta, H, delta0, float(c), float(force), radii, p, disc.modes,
+                               float(errs[0]), float(errs[1]), float(errs[2]), tuple(float(v) for v in coef),
+                               punch)
+
+
+# --------------------------------------------------------------------------- prescribed radius
+def contact_for_radius(layer: LayerKernel, punch: Any, radius: float, H: float | None = None, mu: float = 1.0,
+                       n: int | None = None, *, nu: float | None = None,
+                       error_estimate: bool = True) -> AxisymmetricContact:
+    """Solve the contact problem (1.5)-(1.8) for a prescribed contact radius c: delta0 and P follow.
 
     Parameters
     ----------
-    layer:
-        ``BondedLayer(nu)`` (numeric nu), ``FrictionlessLayer()`` or ``HalfSpace()``.
-    punch:
-        An axisymmetric :class:`~thinlayer.punch.Punch` with numeric parameters, e.g.
-        ``Punch.paraboloid(R=100)``.
-    delta0:
-        Indentation depth (> 0).
-    H:
-        Layer thickness (> 0; may be omitted for ``HalfSpace``).
-    mu:
+    layer : LayerKernel
+        ``BondedLayer(nu)`` with numeric nu, ``FrictionlessLayer()``, ``HalfSpace()``, the incompressible layer.
+    punch : Punch, str, sympy.Expr or callable
+        An axisymmetric :class:`~thinlayer.punch.Punch` with numeric parameters (or a polynomial in
+        ``x1, x2``), or its radial profile Phi(r) with Phi(0) = 0 (numpy callable or a sympy
+        expression in one symbol).
+    radius : float
+        Contact radius c > 0.
+    H : float, optional
+        Layer thickness (may be omitted, and is ignored, for ``HalfSpace``).
+    mu : float
         Shear modulus.
-    **kw:
-        Passed on: ``n`` (modes), ``nu`` (for layers without a Poisson ratio), ``error_estimate``.
+    n : int, optional
+        Number of Galerkin modes (default ``ceil(8 sqrt(c/H)) + 12``).
+    nu : float, optional
+        Poisson ratio, only for layers that do not carry one (``HalfSpace``, ``FrictionlessLayer``).
+    error_estimate : bool
+        Also solve with ~0.7 n modes and record the changes.
 
     Returns
     -------
-    AxisymmetricPunchContact
-        The direct result (``radius``, ``force``, ``pressure``, error estimates, ...) with
-        ``punch``, ``contact_radius`` and ``contact_area``.
+    AxisymmetricContact
+        With ``delta0`` such that p vanishes continuously at r = c (1.5).
+    """
+    punch, phi = _profile(punch)
+    c = positive(radius, "radius")
+    H, mu, nu_val = _material(layer, H, mu, nu)
+    N = _check_modes(n) or _default_modes(c / H)
+    runs = []
+    for modes in ([N, max(4, round(0.7 * N))] if error_estimate else [N]):
+        disc = Discretisation.build(layer, H, modes, c, c)
+        runs.append((disc, *disc.solve(c, phi)))
+    disc, d0, x1, xP = runs[0]
+    if not d0 > 0:
+        raise ValueError(f"no indentation delta0 > 0 gives contact radius {c}: is Phi increasing with Phi(0) = 0?")
+    vt = mu / (1.0 - nu_val)
+    errs = (0.0, 0.0, 0.0)
+    if error_estimate:
+        dc, d0c, x1c, xPc = runs[1]
+        Pf, Pc = _force(c, vt, d0, x1, xP, disc), _force(c, vt, d0c, x1c, xPc, dc)
+        errs = (0.0, abs(Pf - Pc) / abs(Pf), abs(d0 - d0c))
+    return _result(layer, punch, nu_val, mu, H, d0, c, disc, x1, xP, None, errs)
+
+
+# --------------------------------------------------------------------------- prescribed depth
+def _intersection_radius(phi: Callable, delta0: float, scale_hint: float) -> float:
+    """Radius where Phi(r) = delta0 (the rigid-body overlap), bracketed outward from scale_hint."""
+    if phi(np.array([0.0]))[0] >= delta0:
+        raise ValueError(f"Phi(0) = {phi(np.array([0.0]))[0]} >= delta0 = {delta0}: the punch does not "
+                         "touch the layer; Phi must be normalised with Phi(0) = 0 and increase with r")
+    hi = scale_hint
+    for _ in range(200):
+        if phi(np.array([hi]))[0] > delta0:
+            break
+        hi *= 2.0
+    else:
+        raise ValueError("Phi_r never reaches delta0: an unbounded, increasing profile (paraboloid, r^4, ...) "
+                         "is needed for a finite contact disc")
+    return optimize.brentq(lambda rr: phi(np.array([rr]))[0] - delta0, 0.0, hi, xtol=1e-14 * hi)
+
+
+def _radius_for_depth(layer, phi, delta0, H, N, c_int):
+    """Contact radius for a prescribed depth: Brent's method on delta0(c) - delta0."""
+    lo, hi = 0.3 * c_int, c_int + 6.0 * min(H, c_int)
+    for _ in range(60):
+        disc = Discretisation.build(layer, H, N, lo, hi)
+        f_lo = disc.solve(lo, phi)[0] - delta0
+        f_hi = disc.solve(hi, phi)[0] - delta0
+        if f_lo < 0 < f_hi:
+            break
+        if f_lo >= 0:
+            lo *= 0.5
+        if f_hi <= 0:
+            hi = hi * 1.5 + 2.0 * H
+    else:
+        raise ValueError("could not bracket the contact radius: is Phi convex and increasing (one contact disc)?")
+    c = optimize.brentq(lambda cc: disc.solve(cc, phi)[0] - delta0, lo, hi, xtol=1e-15 * hi, rtol=1e-15,
+                        maxiter=200)
+    d0c, x1, xP = disc.solve(c, phi)
+    return c, disc, d0c, x1, xP
+
+
+def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0,
+                       n: int | None = None, *, nu: float | None = None,
+                       error_estimate: bool = True) -> AxisymmetricContact:
+    """Direct solution of the unilateral contact problem (1.5)-(1.8) for an axisymmetric punch.
+
+    A rigid punch ``x3 = -Phi(r)`` is pressed to depth ``delta0`` into a layer of thickness H
+    on a rigid base (kernel L of the layer, (2.1), (2.3)).  The contact radius c is unknown and is
+    found from the condition that the pressure vanishes continuously at the edge (see the module
+    docstring for the spectral Galerkin method).  No asymptotic expansion is used.
+
+    Parameters
+    ----------
+    layer : LayerKernel
+        ``BondedLayer(nu)`` (numeric nu), ``FrictionlessLayer()``, ``HalfSpace()`` or the incompressible layer.
+    punch : Punch, str, sympy.Expr or callable
+        An axisymmetric :class:`~thinlayer.punch.Punch` with numeric parameters (or a polynomial in
+        ``x1, x2``), e.g. ``Punch.paraboloid(R=100)``; or directly the radial profile Phi(r), Phi(0) = 0,
+        increasing and convex (numpy callable or sympy expression in one symbol), e.g.
+        ``lambda r: r**2 / (2 * R)``.
+    delta0 : float
+        Indentation depth (> 0).
+    H : float, optional
+        Layer thickness (may be omitted, and is ignored, for ``HalfSpace``).
+    mu : float
+        Shear modulus.
+    n : int, optional
+        Number of Galerkin modes (default ``ceil(8 sqrt(c/H)) + 12``, from a first estimate of c).
+    nu : float, optional
+        Poisson ratio, only for layers that do not carry one (``HalfSpace``, ``FrictionlessLayer``).
+    error_estimate : bool
+        Also solve with ~0.7 n modes and record the changes of c and P.
+
+    Returns
+    -------
+    AxisymmetricContact
+        Frozen result with ``radius`` (= ``contact_radius``), ``force`` (1.8), ``r``, ``pressure``,
+        ``contact_area``, error estimates, and the ``punch`` when one was given.
 
     Examples
     --------
-    Hertz (half-space): ``c^2 = R delta0``.
+    Hertz's solution for the half-space (L = 1): c^2 = R delta0, P = 8 vartheta c^3 / (3 R).
 
     >>> from thinlayer import HalfSpace, Punch
+    >>> res = solve_axisymmetric(HalfSpace(), lambda r: r**2 / 2, 0.01, H=1.0, nu=0.3)
+    >>> round(res.radius**2 / 0.01, 10), round(res.force / (8 / 0.7 * res.radius**3 / 3), 10)
+    (1.0, 1.0)
     >>> res = solve_axisymmetric(HalfSpace(), Punch.paraboloid(R=2), 0.5, nu=0.3)
     >>> round(res.contact_radius, 10), round(res.contact_area, 10)
     (1.0, 3.1415926536)
     """
-    punch = _as_punch(punch)
-    profile = radial_profile(punch)
-    if H is None:
-        if not isinstance(layer, HalfSpace):
-            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
-        H = 1.0  # ignored by the half-space kernel
-    res = _direct.solve_axisymmetric(layer, profile, delta0, H, mu, **kw)
-    values = {f.name: getattr(res, f.name) for f in fields(res) if f.init}
-    return AxisymmetricPunchContact(**values, punch=punch)
+    punch, phi = _profile(punch)
+    delta0 = positive(delta0, "delta0")
+    H, mu, nu_val = _material(layer, H, mu, nu)
+    N_given = _check_modes(n)
+    c_int = _intersection_radius(phi, delta0, H)
+    N = N_given or _default_modes(c_int / H)
+    c, disc, d0c, x1, xP = _radius_for_depth(layer, phi, delta0, H, N, c_int)
+    if N_given is None and _default_modes(c / H) > N:  # first estimate of c was too small
+        N = _default_modes(c / H)
+        c, disc, d0c, x1, xP = _radius_for_depth(layer, phi, delta0, H, N, c_int)
+    errs = (0.0, 0.0, 0.0)
+    vt = mu / (1.0 - nu_val)
+    if error_estimate:
+        cc, discc, d0cc, x1c, xPc = _radius_for_depth(layer, phi, delta0, H, max(4, round(0.7 * N)), c_int)
+        Pf, Pc = _force(c, vt, d0c, x1, xP, disc), _force(cc, vt, d0cc, x1c, xPc, discc)
+        errs = (abs(c - cc), abs(Pf - Pc) / abs(Pf), 0.0)
+    return _result(layer, punch, nu_val, mu, H, delta0, c, disc, x1, xP, d0c, errs)
+
+
+# --------------------------------------------------------------------------- displacement (check route)
+def surface_displacement(result: AxisymmetricContact, r: Any) -> np.ndarray:
+    """Surface displacement u3(r) produced by the computed pressure, by a route independent of the solver.
+
+    The half-space part is evaluated in physical space with the ring kernel
+    ``u(r) = (2/(pi vartheta)) int_0^c p(rho) rho K(m)/(r + rho) d rho``, ``m = 4 r rho/(r+rho)^2``
+    (Boussinesq (2.1) with L = 1, averaged over a ring; K the complete elliptic integral), by adaptive
+    quadrature; the layer correction ``(1/vartheta) int pbar(a) (L(aH) - 1) J0(a r) da`` by quadrature
+    in a.  Inside the contact disc it must reproduce ``delta0 - Phi(r)`` (1.5); outside it must exceed it.
+
+    Parameters
+    ----------
+    result : AxisymmetricContact
+        A solution from :func:`solve_axisymmetric` or :func:`contact_for_radius`.
+    r : array_like
+        Radii (>= 0) where u3 is wanted.
+
+    Returns
+    -------
+    numpy.ndarray
+        u3 at ``r``.
+    """
+    if not isinstance(result, AxisymmetricContact):
+        raise TypeError(f"result must be an AxisymmetricContact, got {type(result).__name__}")
+    r = np.atleast_1d(np.asarray(r, dtype=float))
+    if np.any(r < 0) or not np.all(np.isfinite(r)):
+        raise ValueError("r must be finite and >= 0")
+    c, vt = result.radius, result.vartheta
+    p = pressure_function(np.asarray(result.coefficients), c)
+
+    def ring(rho: float, rr: float) -> float:
+        if rr == 0.0:
+            return float(p(np.array([rho]))[0]) * (math.pi / 2)  # K(0) = pi/2, rho/(0+rho) = 1
+        s = rr + rho
+        m1 = ((rr - rho) / s) ** 2  # 1 - m, computed without cancellation
+        return float(p(np.array([rho]))[0]) * rho * special.ellipkm1(m1) / s
+
+    hs = np.empty_like(r)
+    for i, rr in enumerate(r):
+        pts = [rr] if 0 < rr < c else None
+        val, _ = integrate.quad(ring, 0.0, c, args=(rr,), points=pts, limit=400, epsabs=0, epsrel=1e-12)
+        hs[i] = 2.0 / (math.pi * vt) * val
+    if not result.layer.has_thickness:
+        return hs
+    return hs + correction_displacement(result.layer, result.H, np.asarray(result.coefficients), c, vt, r)

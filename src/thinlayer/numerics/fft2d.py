@@ -12,7 +12,7 @@ with ``p_hat(alpha) = iint p e^{i alpha.x} dx`` (2.2) and ``F^{-1} f = (2 pi)^{-
 (The printed (2.1) has a leading minus sign; with p >= 0 the kernel must be positive --
 see :mod:`thinlayer.errata`.  For L = 1 this is Boussinesq's
 ``u3 = (1 - nu)/(2 pi mu) iint p(y)/|x - y| dy``.)  No asymptotic expansion is used: this is an
-independent check of the thin-layer results, like :mod:`thinlayer.numerics.direct` for axisymmetric punches.
+independent check of the thin-layer results, like :mod:`thinlayer.numerics.axisymmetric` for axisymmetric punches.
 
 Influence coefficients
 ----------------------
@@ -85,7 +85,7 @@ Accuracy and limitations
   c = 0.03-0.08, observed order 2.0-2.2; the contour vertices lie within 0.15 Delta of Hertz's
   circle/ellipse (rms 0.05 Delta), the equivalent contact radius within 0.02 Delta; the staircase
   area ``contact_area_cells`` is only first-order accurate.  On a thin layer (H/a = 0.1, Delta = H/10)
-  force and radius agree with :mod:`thinlayer.numerics.direct` to 2e-5 and 1e-4.
+  force and radius agree with :mod:`thinlayer.numerics.axisymmetric` to 2e-5 and 1e-4.
 * Only contact inside the computational square is modelled: the contact must stay two cells
   away from its boundary (checked, with an error); contact regions disconnected from the one
   around the tip and lying outside the square are not seen.  The default square is built from
@@ -114,9 +114,10 @@ import sympy as sp
 from scipy import interpolate, optimize, special
 
 from .. import symbols as S
-from ..layers.kernels import HalfSpace, LayerKernel
+from .._checks import positive
+from ..layers.kernels import LayerKernel
 from ..punch import Punch
-from .direct import _nu_and_layer, _positive
+from ._layer import U_MAX, gauss_panels, numeric_layer_nu, panel_count
 
 __all__ = [
     "CoarseGridWarning",
@@ -127,7 +128,6 @@ __all__ = [
     "solve_2d",
 ]
 
-_U_MAX = 22.0  # L(u) - 1 < 1e-16 beyond (as in thinlayer.numerics.direct)
 _R_CUT = 50.0  # in units of H: the layer kernel 1/(2 pi r) + g_c(r) is below 1e-15/H beyond
 _TABLE_STEP = 1.0 / 40.0  # spacing of the g_c table, in units of H
 _CELL_GAUSS = 4  # Gauss-Legendre points per direction for the cell integral of g_c
@@ -157,28 +157,28 @@ class Contact2D:
 
     Attributes
     ----------
-    layer, punch, nu, mu, vartheta, H:
+    layer, punch, nu, mu, vartheta, H : LayerKernel, Punch, float, float, float, float or None
         Layer model (kernel L, (2.3)), punch (1.1), Poisson ratio, shear modulus,
         ``vartheta = mu/(1 - nu)`` (2.1), thickness (None for the half-space).
-    delta0:
+    delta0 : float
         Indentation depth (prescribed, or computed when the force was prescribed).
-    force:
+    force : float
         Total force ``P = iint p dx = Delta^2 sum p`` (1.8).
-    contact_area:
+    contact_area : float
         Area enclosed by the sub-cell contact contour (see the module docstring).
-    contact_area_cells:
+    contact_area_cells : float
         Number of cells with p > 0 times Delta^2.
-    contour:
+    contour : tuple of numpy.ndarray
         Tuple of closed polygons, each a (k, 2) array of (x1, x2) vertices (first = last).
-    pressure:
+    pressure : numpy.ndarray
         N x N array, ``pressure[i, j] = p(x1[i], x2[j])`` (cell values; read-only).
-    gap:
+    gap : numpy.ndarray
         N x N array of ``u3 - delta0 + Phi`` at the cell centres (>= 0; 0 in contact).
-    x1, x2:
+    x1, x2 : numpy.ndarray
         Cell-centre coordinates (length N each).
-    spacing:
+    spacing : float
         Cell size Delta.
-    iterations, residual, tol:
+    iterations, residual, tol : int, float, float
         Polonsky-Keer iterations, final residual (contact conditions, relative to delta0), tolerance.
     """
 
@@ -244,15 +244,8 @@ def _love_square(X: np.ndarray, Y: np.ndarray, h: float) -> np.ndarray:
 
 
 def _t_quadrature(rho_max: float) -> tuple[np.ndarray, np.ndarray]:
-    """Composite 16-point Gauss-Legendre nodes on [0, _U_MAX], one J0(t rho_max) period per panel."""
-    pan = min(0.5, 2.0 * math.pi / max(rho_max, 1e-300))
-    npan = max(8, math.ceil(_U_MAX / pan))
-    xg, wg = special.roots_legendre(16)
-    edges = np.linspace(0.0, _U_MAX, npan + 1)
-    a, b = edges[:-1, None], edges[1:, None]
-    t = (0.5 * (b - a) * xg + 0.5 * (a + b)).ravel()
-    w = np.broadcast_to(0.5 * (b - a) * wg, (npan, 16)).ravel().copy()
-    return t, w
+    """Composite 16-point Gauss-Legendre nodes on [0, U_MAX], one J0(t rho_max) period per panel."""
+    return gauss_panels(U_MAX, panel_count(U_MAX, min(0.5, 2.0 * math.pi / max(rho_max, 1e-300))), 16)
 
 
 def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
@@ -263,11 +256,11 @@ def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         A layer kernel with numeric evaluation (``BondedLayer(0.3)``, ``FrictionlessLayer()``).
-    H:
+    H : float
         Layer thickness.
-    r:
+    r : array_like
         Radii >= 0.
 
     Returns
@@ -276,7 +269,7 @@ def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
         g_c at ``r`` (zero for the half-space).
     """
     r = np.asarray(r, dtype=float)
-    if isinstance(layer, HalfSpace):
+    if not layer.has_thickness:  # the half-space: L = 1
         return np.zeros_like(r)
     rho = r.ravel() / H
     t, w = _t_quadrature(float(rho.max(initial=0.0)))
@@ -297,15 +290,15 @@ def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, 
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         Layer kernel; ``HalfSpace()`` gives Boussinesq's coefficients.
-    H:
+    H : float or None
         Layer thickness (ignored by ``HalfSpace``).
-    spacing:
+    spacing : float
         Cell size Delta.
-    n:
+    n : int
         Number of offsets per direction.
-    nu, mu:
+    nu, mu : float
         Poisson ratio (only for layers that carry none) and shear modulus: ``vartheta = mu/(1 - nu)``.
 
     Returns
@@ -323,14 +316,14 @@ def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, 
     >>> round(float(C[0, 0]) / (4 * math.asinh(1) * 0.7 / (2 * math.pi)), 12)
     1.0
     """
-    nu_val = _nu_and_layer(layer, nu)
-    mu = _positive(mu, "mu")
-    d = _positive(spacing, "spacing")
+    nu_val = numeric_layer_nu(layer, nu)
+    mu = positive(mu, "mu")
+    d = positive(spacing, "spacing")
     n = _check_n(n)
     vartheta = mu / (1.0 - nu_val)
-    half = isinstance(layer, HalfSpace)
+    half = not layer.has_thickness
     if not half:
-        H = _positive(H, "H")
+        H = positive(H, "H")
     # C is symmetric in (k, l): evaluate on k <= l only
     kk, ll = np.triu_indices(n)
     X, Y = kk * d, ll * d
@@ -426,7 +419,8 @@ def _overlap_box(punch: Punch, phi: Callable, delta0: float) -> tuple[float, flo
         if not val < delta0:
             raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} does not touch the layer: "
                              f"min Phi = {val:.6g} (at x = {o[0]:.6g}, {o[1]:.6g}, found by descent from the origin) "
-                             f">= delta0 = {delta0:.6g}; increase delta0, or pass extent= if the contact lies elsewhere")
+                             f">= delta0 = {delta0:.6g}; increase delta0, or pass extent= if the contact lies "
+                             "elsewhere")
     th = np.linspace(0.0, 2.0 * math.pi, 72, endpoint=False)
     pts = []
     for c, s in zip(np.cos(th), np.sin(th)):
@@ -467,7 +461,7 @@ def _domain(extent: Any, punch: Punch, phi: Callable, delta0: float | None, H: f
         margin = 0.15 * size if H is None else min(2.0 * H, 0.15 * size)
         return 0.5 * (a0 + a1), 0.5 * (b0 + b1), 0.54 * size + margin
     if isinstance(extent, (numbers.Real, sp.Number)) and not isinstance(extent, bool):
-        return 0.0, 0.0, _positive(extent, "extent (half-width)")
+        return 0.0, 0.0, positive(extent, "extent (half-width)")
     try:
         a0, a1, b0, b1 = (float(v) for v in extent)
     except (TypeError, ValueError) as exc:
@@ -521,11 +515,43 @@ def _contour(p: np.ndarray, g: np.ndarray, x1: np.ndarray, x2: np.ndarray, d: fl
 
 
 # --------------------------------------------------------------------------- solver
+def _pk_residual(u: np.ndarray, w: np.ndarray, p: np.ndarray, force: float | None, delta0: float | None):
+    """Gap ``g``, contact set, ``g`` on it, rigid-body displacement and residual of the contact conditions."""
+    g = u - w
+    Ic = p > 0
+    if force is not None:
+        d0 = float(g[Ic].mean())  # w = -Phi: the rigid-body displacement is the mean of u + Phi
+        g -= d0
+        scale = abs(d0) if d0 != 0 else float(np.abs(u).max())
+    else:
+        d0, scale = delta0, delta0
+    gI = g[Ic]
+    res = max(float(np.abs(gI).max(initial=0.0)), -float(np.min(g, where=~Ic, initial=0.0))) / scale
+    return g, Ic, gI, d0, res
+
+
+def _pk_step(p: np.ndarray, g: np.ndarray, t: np.ndarray, tau: float, free: np.ndarray) -> tuple[bool, bool]:
+    """``p -= tau t`` in place, clipped at zero, penetrating free cells pushed in; return (overlap, clipped)."""
+    p -= tau * t
+    clipped = p < 0
+    any_clip = bool(clipped.any())
+    if any_clip:
+        p[clipped] = 0.0
+    overlap = free & (g < 0)  # free cells that penetrate (the clipped ones had p > 0 ...
+    if any_clip:
+        overlap |= clipped & (g < 0)  # ... unless clipped now)
+    has_ol = bool(overlap.any())
+    if has_ol:
+        p[overlap] -= tau * g[overlap]
+    return has_ol, any_clip
+
+
 def _polonsky_keer(conv: _Convolver, w: np.ndarray, cell: float, force: float | None, p0: np.ndarray,
                    tol: float, maxiter: int, delta0: float | None):
     """Polonsky-Keer CG for ``p >= 0, C p - w >= 0, p (C p - w) = 0`` (force mode: w up to a constant).
 
-    Returns (p, u, g, iterations, residual, delta0, converged).
+    Returns (p, u, g, iterations, residual, delta0, converged).  A stop is confirmed with a fresh
+    convolution ``u = C p`` (the linear steps update u without one).
     """
     p = p0.copy()
     u = conv(p)
@@ -533,17 +559,8 @@ def _polonsky_keer(conv: _Convolver, w: np.ndarray, cell: float, force: float | 
     G_old, conj, fresh = 1.0, False, True
     it = 0
     while True:
-        g = u - w
-        Ic = p > 0
+        g, Ic, gI, d0, res = _pk_residual(u, w, p, force, delta0)
         free = ~Ic
-        if force is not None:
-            d0 = float(g[Ic].mean())  # w = -Phi: the rigid-body displacement is the mean of u + Phi
-            g -= d0
-            scale = abs(d0) if d0 != 0 else float(np.abs(u).max())
-        else:
-            d0, scale = delta0, delta0
-        gI = g[Ic]
-        res = max(float(np.abs(gI).max(initial=0.0)), -float(np.min(g, where=free, initial=0.0))) / scale
         if res <= tol or it >= maxiter:
             if fresh:
                 return p, u, g, it, res, d0, res <= tol
@@ -570,17 +587,7 @@ def _polonsky_keer(conv: _Convolver, w: np.ndarray, cell: float, force: float | 
             u, fresh = conv(p), True
             continue
         tau = float(gI @ tI) / den
-        p -= tau * t
-        clipped = p < 0
-        any_clip = bool(clipped.any())
-        if any_clip:
-            p[clipped] = 0.0
-        overlap = free & (g < 0)  # free cells that penetrate (the clipped ones had p > 0 ...
-        if any_clip:
-            overlap |= clipped & (g < 0)  # ... unless clipped now)
-        has_ol = bool(overlap.any())
-        if has_ol:
-            p[overlap] -= tau * g[overlap]
+        has_ol, any_clip = _pk_step(p, g, t, tau, free)
         conj = not has_ol
         factor = 1.0
         if force is not None:
@@ -595,6 +602,143 @@ def _polonsky_keer(conv: _Convolver, w: np.ndarray, cell: float, force: float | 
             fresh = False
 
 
+@dataclass(frozen=True, eq=False)
+class _Problem:
+    """The checked input of :func:`solve_2d`, on its grid."""
+
+    layer: LayerKernel
+    punch: Punch
+    nu: float
+    mu: float
+    vartheta: float
+    H: float | None  # as given (may be None or ignored for the half-space)
+    delta0: float | None
+    force: float | None
+    tol: float
+    maxiter: int
+    x1: np.ndarray = field(repr=False)
+    x2: np.ndarray = field(repr=False)
+    spacing: float
+    Phi: np.ndarray = field(repr=False)
+    conv: _Convolver = field(repr=False)
+
+    @property
+    def n(self) -> int:
+        return self.x1.size
+
+
+def _check_controls(delta0: Any, force: Any, n: Any, tol: Any, maxiter: Any):
+    """Checked ``(delta0, force, n, tol, maxiter)``: exactly one of delta0 and force."""
+    if (delta0 is None) == (force is None):
+        raise ValueError("give exactly one of delta0 (indentation depth) and force (total load P)")
+    if delta0 is not None:
+        delta0 = positive(delta0, "delta0")
+    else:
+        force = positive(force, "force")
+    n = _check_n(n)
+    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not 0 < float(tol) < 1:
+        raise ValueError(f"tol must be a number in (0, 1), got {tol!r}")
+    if isinstance(maxiter, bool) or not isinstance(maxiter, (numbers.Integral, np.integer)) or maxiter < 1:
+        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+    return delta0, force, n, float(tol), int(maxiter)
+
+
+def _grid(punch: Punch, phi: Callable, extent: Any, delta0: float | None, H_eff: float | None, n: int):
+    """Cell centres ``x1, x2``, spacing and ``Phi`` at the centres; the grid must resolve H (Delta <= H/5)."""
+    c1, c2, half_w = _domain(extent, punch, phi, delta0, H_eff)
+    d = 2.0 * half_w / n
+    if H_eff is not None and d > H_eff / _MIN_CELLS_PER_H:
+        raise ValueError(
+            f"grid too coarse to resolve the layer: cell size Delta = {d:.4g} > H/{_MIN_CELLS_PER_H:g} = "
+            f"{H_eff / _MIN_CELLS_PER_H:.4g} (H = {H_eff:.4g}, domain width {2 * half_w:.4g}, n = {n}); "
+            f"use n >= {math.ceil(2 * half_w * _MIN_CELLS_PER_H / H_eff)} or a smaller extent")
+    x1 = c1 - half_w + (np.arange(n) + 0.5) * d
+    x2 = c2 - half_w + (np.arange(n) + 0.5) * d
+    X1, X2 = np.meshgrid(x1, x2, indexing="ij")
+    Phi = phi(X1, X2)
+    if not np.all(np.isfinite(Phi)):
+        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} is not finite on the grid")
+    return x1, x2, d, Phi
+
+
+def _setup(layer: Any, punch: Any, delta0: Any, H: Any, mu: Any, n: Any, extent: Any, tol: Any, maxiter: Any,
+           force: Any, nu: Any, workers: Any) -> _Problem:
+    """Check the input of :func:`solve_2d`, build the grid and the FFT convolution with the coefficients."""
+    nu_val = numeric_layer_nu(layer, nu)
+    mu = positive(mu, "mu")
+    if not layer.has_thickness:  # the half-space: H is optional and ignored
+        H = None if H is None else positive(H, "H")
+        H_eff = None
+    else:
+        if H is None:
+            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
+        H = H_eff = positive(H, "H")
+    delta0, force, n, tol, maxiter = _check_controls(delta0, force, n, tol, maxiter)
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    punch, phi = _numeric_punch(punch)
+    x1, x2, d, Phi = _grid(punch, phi, extent, delta0, H_eff, n)
+    C = influence_coefficients(layer, H_eff, d, n, nu=nu_val, mu=mu)
+    return _Problem(layer, punch, nu_val, mu, mu / (1.0 - nu_val), H, delta0, force, tol, maxiter, x1, x2, d, Phi,
+                    _Convolver(C, workers))
+
+
+def _iterate(prob: _Problem):
+    """Initial pressure and the Polonsky-Keer iteration: ``(p, g, iterations, residual, delta0, converged)``."""
+    cell, n, Phi, conv = prob.spacing**2, prob.n, prob.Phi, prob.conv
+    if prob.force is None:
+        w = prob.delta0 - Phi
+        p0 = np.maximum(w, 0.0)
+        if not p0.any():
+            raise ValueError(f"Phi >= delta0 = {prob.delta0:.6g} at every cell centre: no contact on the grid "
+                             f"(min Phi = {Phi.min():.6g}); refine the grid or increase delta0")
+        Cp0 = conv(p0)
+        p0 *= float((p0 * w).sum() / (p0 * Cp0).sum())  # best multiple of the overlap: a good start
+    else:
+        w = -Phi
+        p0 = np.full((n, n), prob.force / (cell * n * n))
+    p, _, g, iters, res, d0, ok = _polonsky_keer(conv, w, cell, prob.force, p0, prob.tol, prob.maxiter, prob.delta0)
+    return p, g, iters, res, d0, ok
+
+
+def _check_inside(inside: np.ndarray, x1: np.ndarray, x2: np.ndarray, d: float) -> None:
+    """The contact must stay ``_EDGE_CELLS`` cells away from the boundary of the computational square."""
+    n = x1.size
+    ii, jj = np.nonzero(inside)
+    near = min(ii.min(), jj.min(), n - 1 - ii.max(), n - 1 - jj.max())
+    if near < _EDGE_CELLS:
+        raise ValueError(
+            f"the contact reaches the boundary of the computational domain: contact cells span "
+            f"x1 in [{x1[ii.min()]:.6g}, {x1[ii.max()]:.6g}], x2 in [{x2[jj.min()]:.6g}, {x2[jj.max()]:.6g}], "
+            f"the domain is [{x1[0] - d / 2:.6g}, {x1[-1] + d / 2:.6g}] x [{x2[0] - d / 2:.6g}, "
+            f"{x2[-1] + d / 2:.6g}] ({near} free cells to the edge, {_EDGE_CELLS} needed); enlarge extent")
+
+
+def _package(prob: _Problem, p: np.ndarray, g: np.ndarray, iters: int, res: float, d0: float, ok: bool
+             ) -> Contact2D:
+    """The frozen :class:`Contact2D` (contour, force (1.8)); raise or warn on non-convergence or a coarse grid."""
+    x1, x2, d, n = prob.x1, prob.x2, prob.spacing, prob.n
+    cell = d * d
+    P = cell * float(p.sum())
+    inside = p > 0
+    if inside.any():
+        _check_inside(inside, x1, x2, d)
+    contour, area = _contour(p, g, x1, x2, d, 2.0 * prob.vartheta) if inside.any() else ((), 0.0)
+    for arr in (p, g, x1, x2):
+        arr.setflags(write=False)
+    result = Contact2D(prob.layer, prob.punch, prob.nu, prob.mu, prob.vartheta, prob.H, float(d0), P, float(area),
+                       cell * int(inside.sum()), contour, p, g, x1, x2, d, iters, float(res), prob.tol)
+    if not ok:
+        raise ContactConvergenceError(
+            f"Polonsky-Keer iteration did not converge: residual {res:.3e} > tol {prob.tol:.1e} after {iters} "
+            f"iterations (n = {n}); raise maxiter or tol. The last iterate is in .result", result)
+    across = math.sqrt(4.0 * cell * inside.sum() / math.pi) / d
+    if across < _MIN_CELLS_ACROSS:
+        warnings.warn(f"the contact is only ~{across:.1f} cells across (n = {n}, Delta = {d:.4g}): expect "
+                      f"errors of order Delta/diameter ~ {1 / max(across, 1):.0%}; refine n or reduce extent",
+                      CoarseGridWarning, stacklevel=3)
+    return result
+
+
 def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: float | None = None,
              mu: float = 1.0, n: int = 256, extent: Any = None, tol: float = 1e-10, maxiter: int = 5000,
              *, force: float | None = None, nu: float | None = None, workers: int | None = None) -> Contact2D:
@@ -602,32 +746,32 @@ def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: flo
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         ``BondedLayer(nu)`` with numeric nu (2.3), ``FrictionlessLayer()`` or ``HalfSpace()``.
-    punch:
+    punch : Punch or str or sympy.Expr
         A :class:`~thinlayer.punch.Punch` (or polynomial expression in ``x1, x2``) with numbers
         for all parameters; the tip is taken at the origin when ``Phi(0) < delta0``.
-    delta0:
+    delta0 : float, optional
         Indentation depth (> 0).  Exactly one of ``delta0`` and ``force`` must be given.
-    H:
+    H : float, optional
         Layer thickness (> 0; not needed for ``HalfSpace``).  The grid must resolve it:
         ``Delta <= H/5``.
-    mu:
+    mu : float
         Shear modulus.
-    n:
+    n : int
         Cells per side.
-    extent:
+    extent : None, float or tuple of float
         Computational square: None (from the overlap region ``Phi < delta0`` plus a margin), a
         half-width (square centred at the origin), or ``(x1min, x1max, x2min, x2max)``.
-    tol:
+    tol : float
         Tolerance of the contact conditions relative to delta0 (see module docstring).
-    maxiter:
+    maxiter : int
         Maximum number of Polonsky-Keer iterations.
-    force:
+    force : float, optional
         Prescribed total force P (1.8) instead of delta0 (needs ``extent``).
-    nu:
+    nu : float, optional
         Poisson ratio, only for layers that carry none (``HalfSpace``, ``FrictionlessLayer``).
-    workers:
+    workers : int, optional
         Threads for :mod:`scipy.fft` (default: all CPUs).
 
     Returns
@@ -650,82 +794,5 @@ def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: flo
     >>> abs(res.force / (8 / 0.7 / 3) - 1) < 0.01, abs(res.contact_radius - 1) < 0.01
     (True, True)
     """
-    nu_val = _nu_and_layer(layer, nu)
-    mu = _positive(mu, "mu")
-    half = isinstance(layer, HalfSpace)
-    if half:
-        H = None if H is None else _positive(H, "H")
-        H_eff = None
-    else:
-        if H is None:
-            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
-        H = H_eff = _positive(H, "H")
-    if (delta0 is None) == (force is None):
-        raise ValueError("give exactly one of delta0 (indentation depth) and force (total load P)")
-    if delta0 is not None:
-        delta0 = _positive(delta0, "delta0")
-    else:
-        force = _positive(force, "force")
-    n = _check_n(n)
-    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not 0 < float(tol) < 1:
-        raise ValueError(f"tol must be a number in (0, 1), got {tol!r}")
-    tol = float(tol)
-    if isinstance(maxiter, bool) or not isinstance(maxiter, (numbers.Integral, np.integer)) or maxiter < 1:
-        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
-    workers = (os.cpu_count() or 1) if workers is None else int(workers)
-    punch, phi = _numeric_punch(punch)
-    c1, c2, half_w = _domain(extent, punch, phi, delta0, H_eff)
-    d = 2.0 * half_w / n
-    if H_eff is not None and d > H_eff / _MIN_CELLS_PER_H:
-        raise ValueError(
-            f"grid too coarse to resolve the layer: cell size Delta = {d:.4g} > H/{_MIN_CELLS_PER_H:g} = "
-            f"{H_eff / _MIN_CELLS_PER_H:.4g} (H = {H_eff:.4g}, domain width {2 * half_w:.4g}, n = {n}); "
-            f"use n >= {math.ceil(2 * half_w * _MIN_CELLS_PER_H / H_eff)} or a smaller extent")
-    x1 = c1 - half_w + (np.arange(n) + 0.5) * d
-    x2 = c2 - half_w + (np.arange(n) + 0.5) * d
-    X1, X2 = np.meshgrid(x1, x2, indexing="ij")
-    Phi = phi(X1, X2)
-    if not np.all(np.isfinite(Phi)):
-        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} is not finite on the grid")
-    vartheta = mu / (1.0 - nu_val)
-    C = influence_coefficients(layer, H_eff, d, n, nu=nu_val, mu=mu)
-    conv = _Convolver(C, workers)
-    cell = d * d
-    if force is None:
-        w = delta0 - Phi
-        p0 = np.maximum(w, 0.0)
-        if not p0.any():
-            raise ValueError(f"Phi >= delta0 = {delta0:.6g} at every cell centre: no contact on the grid "
-                             f"(min Phi = {Phi.min():.6g}); refine the grid or increase delta0")
-        Cp0 = conv(p0)
-        p0 *= float((p0 * w).sum() / (p0 * Cp0).sum())  # best multiple of the overlap: a good start
-    else:
-        w = -Phi
-        p0 = np.full((n, n), force / (cell * n * n))
-    p, _, g, iters, res, d0, ok = _polonsky_keer(conv, w, cell, force, p0, tol, int(maxiter), delta0)
-    P = cell * float(p.sum())
-    inside = p > 0
-    if inside.any():
-        ii, jj = np.nonzero(inside)
-        near = min(ii.min(), jj.min(), n - 1 - ii.max(), n - 1 - jj.max())
-        if near < _EDGE_CELLS:
-            raise ValueError(
-                f"the contact reaches the boundary of the computational domain: contact cells span "
-                f"x1 in [{x1[ii.min()]:.6g}, {x1[ii.max()]:.6g}], x2 in [{x2[jj.min()]:.6g}, {x2[jj.max()]:.6g}], "
-                f"the domain is [{x1[0] - d / 2:.6g}, {x1[-1] + d / 2:.6g}] x [{x2[0] - d / 2:.6g}, "
-                f"{x2[-1] + d / 2:.6g}] ({near} free cells to the edge, {_EDGE_CELLS} needed); enlarge extent")
-    contour, area = _contour(p, g, x1, x2, d, 2.0 * vartheta) if inside.any() else ((), 0.0)
-    for arr in (p, g, x1, x2):
-        arr.setflags(write=False)
-    result = Contact2D(layer, punch, nu_val, mu, vartheta, H, float(d0), P, float(area), cell * int(inside.sum()),
-                       contour, p, g, x1, x2, d, iters, float(res), tol)
-    if not ok:
-        raise ContactConvergenceError(
-            f"Polonsky-Keer iteration did not converge: residual {res:.3e} > tol {tol:.1e} after {iters} "
-            f"iterations (n = {n}); raise maxiter or tol. The last iterate is in .result", result)
-    across = math.sqrt(4.0 * cell * inside.sum() / math.pi) / d
-    if across < _MIN_CELLS_ACROSS:
-        warnings.warn(f"the contact is only ~{across:.1f} cells across (n = {n}, Delta = {d:.4g}): expect "
-                      f"errors of order Delta/diameter ~ {1 / max(across, 1):.0%}; refine n or reduce extent",
-                      CoarseGridWarning, stacklevel=2)
-    return result
+    prob = _setup(layer, punch, delta0, H, mu, n, extent, tol, maxiter, force, nu, workers)
+    return _package(prob, *_iterate(prob))

@@ -1,1 +1,72 @@
-"""validation"""
+r"""Validation study: the asymptotic results against the direct numerical solvers (issue 4).
+
+For each case -- a punch shape (a sphere, an elliptic paraboloid R1/R2 = 4), a Poisson ratio ``nu``
+and a thickness ratio ``H/a`` -- the asymptotic solution (:func:`thinlayer.solve`: force (1.8) with its
+first correction, contact area with the exact edge shift h^* (3.25), composite pressure) is compared
+with an independent direct solution of (1.5)-(1.8) that uses no thin-layer series, and the observed
+order of each remainder is fitted against the claimed one.
+
+Modules, by role:
+
+* :mod:`~thinlayer.validation.cases`: the two shapes, the input checks and one :class:`ValidationRow`
+  per case (with the plot data :class:`PressureProfile`, :class:`ContourData`);
+* :mod:`~thinlayer.validation.analysis`: :class:`ValidationStudy` -- observed orders (:class:`OrderFit`),
+  the edge-shift check (:class:`EdgeShiftCheck`), tables, LaTeX, JSON and files;
+* :mod:`~thinlayer.validation.runner`: :func:`validation_study`, :func:`validate_sphere`,
+  :func:`validate_elliptic`, with progress lines and a clean stop on Ctrl-C (:class:`StudyEvent`);
+* :mod:`~thinlayer.validation.plots`: the figures (matplotlib, the ``plot`` extra);
+* :mod:`~thinlayer.validation.speed`: :func:`speed_comparison`, the asymptotic force against the direct
+  solvers at equal accuracy;
+* :mod:`~thinlayer.validation.comparison`: :func:`compare_sphere_models`, the compressible, incompressible and
+  two-term sphere models side by side (with the direct solver);
+* :mod:`~thinlayer.validation.cli`: the command ``thinlayer validate`` (:func:`add_cli`, :func:`cli`).
+"""
+from .analysis import EdgeShiftCheck, OrderFit, ValidationStudy
+from .cases import (
+    CLAIMED_ORDERS,
+    H_OVER_A_RANGE,
+    NUS,
+    SHAPES,
+    ContourData,
+    PressureProfile,
+    ValidationRow,
+    check_nu,
+    check_nus,
+    check_ratio,
+    check_ratios,
+    check_shapes,
+    elliptic_grid,
+)
+from .cli import add_cli, cli
+from .comparison import SphereModels, compare_sphere_models
+from .runner import StudyEvent, validate_elliptic, validate_sphere, validation_study
+from .speed import SpeedComparison, speed_comparison
+
+__all__ = [
+    "CLAIMED_ORDERS",
+    "H_OVER_A_RANGE",
+    "NUS",
+    "SHAPES",
+    "ContourData",
+    "EdgeShiftCheck",
+    "OrderFit",
+    "PressureProfile",
+    "SpeedComparison",
+    "SphereModels",
+    "StudyEvent",
+    "ValidationRow",
+    "ValidationStudy",
+    "add_cli",
+    "check_nu",
+    "check_nus",
+    "check_ratio",
+    "check_ratios",
+    "check_shapes",
+    "cli",
+    "compare_sphere_models",
+    "elliptic_grid",
+    "speed_comparison",
+    "validate_elliptic",
+    "validate_sphere",
+    "validation_study",
+]

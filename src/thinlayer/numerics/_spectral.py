@@ -1,0 +1,158 @@
+"""Spectral Galerkin discretisation of the axisymmetric contact problem (:mod:`thinlayer.numerics.axisymmetric`).
+
+With ``x = r/c`` the pressure is expanded in the flat-punch basis
+``psi_n(x) = (1 - x^2)^{-1/2} P_n^{(0,-1/2)}(1 - 2 x^2)``, whose Hankel transforms are
+``beta_n j_{2n}(b)``; the half-space part of the Galerkin matrix is diagonal (Weber-Schafheitlin), the
+layer correction ``L - 1`` (2.4) is integrated by composite Gauss-Legendre quadrature.  Every array is in
+the basis normalised by ``sqrt(d_n)``, ``d_n`` the half-space diagonal.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import special
+
+from ..layers.kernels import LayerKernel
+from ._layer import GAUSS, U_MAX, gauss_panels, panel_count
+
+__all__ = ["Discretisation", "basis_transform", "beta", "correction_displacement", "half_space_diagonal",
+           "pressure_function", "sample_radii"]
+
+
+# --------------------------------------------------------------------------- basis
+def beta(n: np.ndarray) -> np.ndarray:
+    """``beta_n = Gamma(n + 1/2)/(sqrt(pi) n!) = P_n^{(0,-1/2)}(-1) (-1)^n``."""
+    return np.exp(special.gammaln(n + 0.5) - special.gammaln(n + 1.0)) / math.sqrt(math.pi)
+
+
+def basis_transform(n: int, b: np.ndarray) -> np.ndarray:
+    """``int_0^1 psi_n(x) J0(b x) x dx = beta_n j_{2n}(b)`` (unnormalised basis)."""
+    return beta(np.array(float(n))) * special.spherical_jn(2 * n, np.asarray(b, dtype=float))
+
+
+def half_space_diagonal(n: np.ndarray) -> np.ndarray:
+    """``d_n = int_0^oo (beta_n j_2n(t))^2 dt = beta_n^2 pi / (2 (4n + 1))`` (Weber-Schafheitlin)."""
+    return beta(n) ** 2 * math.pi / (2.0 * (4.0 * n + 1.0))
+
+
+def _normalised_transforms(t: np.ndarray, modes: int, scale: np.ndarray) -> np.ndarray:
+    """``g~_n(t_k) = beta_n j_2n(t_k)/sqrt(d_n)``, shape (len(t), modes)."""
+    n = np.arange(modes, dtype=float)
+    return beta(n) / scale * special.spherical_jn(2 * np.arange(modes)[None, :], t[:, None])
+
+
+# --------------------------------------------------------------------------- Galerkin system
+@dataclass(frozen=True)
+class Discretisation:
+    """Fixed modes and t-quadrature, valid for contact radii in [c_lo, c_hi]."""
+
+    layer: LayerKernel
+    H: float
+    modes: int
+    c_lo: float
+    c_hi: float
+    t: np.ndarray = field(repr=False)
+    w: np.ndarray = field(repr=False)
+    G: np.ndarray = field(repr=False)  # normalised transforms g~_n(t_k), shape (nt, modes)
+    scale: np.ndarray = field(repr=False)  # sqrt(d_n)
+    s: np.ndarray = field(repr=False)  # edge-singularity functional in the normalised basis
+    xq: np.ndarray = field(repr=False)  # quadrature abscissae x_k = sin(theta_k) in [0, 1]
+    Pq: np.ndarray = field(repr=False)  # w_k P_m(cos 2 theta_k) x_k / sqrt(d_m), shape (modes, nq)
+
+    @classmethod
+    def build(cls, layer: LayerKernel, H: float, modes: int, c_lo: float, c_hi: float) -> Discretisation:
+        """Quadrature in t on ``[0, U_MAX c_hi/H]`` (panels ``<= min(3, c_lo/(2H))``) and in x for the load."""
+        n = np.arange(modes, dtype=float)
+        scale = np.sqrt(half_space_diagonal(n))
+        if not layer.has_thickness:  # L = 1: the half-space part alone, no correction
+            t = w = np.zeros(0)
+            G = np.zeros((0, modes))
+        else:
+            T = U_MAX * c_hi / H
+            t, w = gauss_panels(T, panel_count(T, min(3.0, 0.5 * c_lo / H)))
+            G = _normalised_transforms(t, modes, scale)
+        s = (-1.0) ** n * beta(n) / scale
+        # F_m = int_0^1 psi_m(x) f(c x) x dx = int_0^{pi/2} P_m(cos 2 th) f(c sin th) sin th d th  (x = sin th):
+        # a smooth integrand, Gauss-Legendre in th (more accurate than Gauss-Jacobi nodes from scipy)
+        nq = 2 * modes + 48
+        xg, wg = special.roots_legendre(nq)
+        th = 0.25 * math.pi * (xg + 1.0)
+        xq = np.sin(th)
+        P = special.eval_jacobi(np.arange(modes)[:, None], 0.0, -0.5, np.cos(2 * th)[None, :])
+        Pq = P * (0.25 * math.pi * wg * xq)[None, :] / scale[:, None]
+        return cls(layer, H, modes, c_lo, c_hi, t, w, G, scale, s, xq, Pq)
+
+    def matrix(self, c: float) -> np.ndarray:
+        """Normalised Galerkin matrix I + C~(c) (half-space part is the identity)."""
+        M = np.eye(self.modes)
+        if self.t.size:
+            lm1 = np.asarray(self.layer.L_numeric(self.t * (self.H / c), "numpy"), dtype=float) - 1.0
+            # einsum (plain C loop) rather than BLAS: small products, immune to thread oversubscription
+            M = M + np.einsum("km,kn->mn", self.G * (self.w * lm1)[:, None], self.G)
+        return M
+
+    def solve(self, c: float, phi: Callable[[np.ndarray], np.ndarray]) -> tuple[float, np.ndarray, np.ndarray]:
+        """Return (delta0(c), x~_1, x~_Phi): with S = 0, x~ = (vartheta/c)(delta0 x~_1 - x~_Phi)."""
+        M = self.matrix(c)
+        F1 = np.zeros(self.modes)
+        F1[0] = 1.0 / self.scale[0]  # int psi_0 x dx = beta_0 j_0(0) = 1
+        FPhi = self.Pq @ phi(c * self.xq)
+        sol = np.linalg.solve(M, np.column_stack([F1, FPhi]))
+        x1, xP = sol[:, 0], sol[:, 1]
+        den = self.s @ x1
+        if den == 0:
+            raise ArithmeticError("degenerate edge condition")
+        return float(self.s @ xP / den), x1, xP
+
+
+# --------------------------------------------------------------------------- the pressure and its displacement
+def pressure_function(coef: np.ndarray, c: float) -> Callable[[np.ndarray], np.ndarray]:
+    """p(r) from the normalised coefficients, free of cancellation at the edge.
+
+    ``p = sqrt(2) (1+y)^{-1/2} Q(y)`` with ``Q = sum_n x~_n P_n^{(0,-1/2)}(y)/sqrt(d_n)`` and ``y = 1 - 2 r^2/c^2``;
+    the edge condition Q(-1) = 0 lets us write ``p = sqrt(2 (1+y)) R(y)`` with the polynomial
+    ``R = Q/(1+y)``, built by Chebyshev interpolation at interior nodes (no division near y = -1).
+    """
+    N = coef.size
+    n = np.arange(N)
+    a = coef / np.sqrt(half_space_diagonal(n.astype(float)))
+
+    def Q(y: np.ndarray) -> np.ndarray:
+        return special.eval_jacobi(n[:, None], 0.0, -0.5, np.asarray(y)[None, :]).T @ a
+
+    Rcheb = np.polynomial.chebyshev.Chebyshev.interpolate(lambda yy: Q(yy) / (1.0 + yy), max(N - 2, 1))
+
+    def p(r: np.ndarray) -> np.ndarray:
+        x = np.abs(np.asarray(r, dtype=float)) / c
+        out = np.zeros_like(x)
+        inside = x < 1.0
+        y = 1.0 - 2.0 * x[inside] ** 2
+        out[inside] = np.sqrt(2.0 * (1.0 + y)) * Rcheb(y)
+        return out
+
+    return p
+
+
+def sample_radii(c: float, npts: int = 201) -> np.ndarray:
+    """Radii on [0, c], clustered at the edge."""
+    return c * np.sin(np.linspace(0.0, 0.5 * math.pi, npts))
+
+
+def correction_displacement(layer: LayerKernel, H: float, coef: np.ndarray, c: float, vartheta: float,
+                            r: np.ndarray) -> np.ndarray:
+    """The layer's correction ``(1/vartheta) int_0^oo pbar(a) (L(aH) - 1) J0(a r) da`` to u3 at radii ``r``.
+
+    ``pbar(t/c) = c^2 sum_n coef_n beta_n j_2n(t)/sqrt(d_n)``, ``da = dt/c``; quadrature in t on
+    ``[0, U_MAX c/H]`` with panels short against both the kernel scale and the J0 period.
+    """
+    N = coef.size
+    n = np.arange(N, dtype=float)
+    scale = np.sqrt(half_space_diagonal(n))
+    T = U_MAX * c / H
+    t, w = gauss_panels(T, panel_count(T, min(1.0, 0.5 * c / H, 0.5 * c / max(float(r.max()), c))), GAUSS)
+    pbar = c**2 * _normalised_transforms(t, N, scale) @ coef
+    lm1 = np.asarray(layer.L_numeric(t * H / c, "numpy"), dtype=float) - 1.0
+    return (special.j0(np.outer(r, t) / c) @ (w * pbar * lm1)) / (c * vartheta)
