@@ -107,7 +107,8 @@ def parse_nu(
     floats : {"mpf", "exact", "Float", "float"}
         What a float becomes: an mpmath float, its exact binary rational, a 17-digit sympy Float
         (0.5 becomes exactly 1/2) or a Python float.
-    lower, upper : number
+    lower, upper : Any
+        number
         The open lower and the upper end of the admissible range.
     upper_closed : bool
         Whether ``nu = upper`` is admissible.

@@ -33,14 +33,14 @@ class Punch(RichDisplay):
 
     Parameters
     ----------
-    expr:
+    expr : sympy.Expr
         Phi as a sympy expression (or string), polynomial in ``x1, x2``.
-    x1, x2:
+    x1, x2 : sympy.Symbol
         The coordinate symbols used in ``expr`` (default: the canonical ``thinlayer.symbols.x1, x2``).
-    scaling:
+    scaling : tuple
         Optional mapping ``{parameter: expression in starred parameters and Lambda}`` defining
         the scaled form (1.2).  Default: none.
-    name:
+    name : str
         A label for reports.
 
     Examples

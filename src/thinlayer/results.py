@@ -69,11 +69,11 @@ def checked_lambdify(
 
     Parameters
     ----------
-    args:
+    args : Sequence[sympy.Symbol] | sympy.Symbol
         The arguments of the numeric function, in call order.
-    exprs:
+    exprs : sympy.Expr | Iterable[sympy.Expr]
         One expression or a sequence of them (the function then returns a tuple).
-    backend:
+    backend : str
         ``"numpy"`` (vectorised), ``"mpmath"`` (arbitrary precision, uses ``mpmath.mp.dps``),
         ``"math"`` or ``"sympy"``.
 

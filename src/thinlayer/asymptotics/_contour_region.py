@@ -304,14 +304,9 @@ def _expand(box, frac, outer):
     return (max(b[0], outer[0]), min(b[1], outer[1]), max(b[2], outer[2]), min(b[3], outer[3]))
 
 
-def region_curve(P: Poly2, delta0: float, expr):
-    """The polygon (M, 2) of the single closed level line, after all structural checks."""
-    outer = _outer_box(P, delta0, expr)
-    G = 97
-    xs, ys, X, Y, D = _grid(P, outer, G, G)
-    crit = _critical_points(P, X, Y, D, outer)
-    F = D[0]
-    # the global minimum of Phi (grid and critical points)
+def _lowest_point(P: Poly2, F: np.ndarray, X: np.ndarray, Y: np.ndarray, crit: list, delta0: float,
+                  expr) -> tuple[float, float, float]:
+    """The global minimum of Phi (grid and critical points); no contact when it is not below delta0."""
     k = int(np.argmin(F))
     best = (float(F.flat[k]), float(X.flat[k]), float(Y.flat[k]))
     for cx, cy in crit:
@@ -325,9 +320,12 @@ def region_curve(P: Poly2, delta0: float, expr):
             f"min Phi = {short(best[0])} at (x1, x2) = ({short(best[1])}, {short(best[2])}); "
             "delta0 must be larger than min Phi for the set {delta0 - Phi > 0} to be non-empty"
         )
-    # zoom onto the region
+    return best
+
+
+def _zoom_boxes(P: Poly2, F, X, Y, crit, delta0: float, cell: tuple, G: int) -> tuple[list, list]:
+    """Boxes around the grid points below delta0 and around each local minimum below it (with its radius)."""
     neg = F < delta0
-    cell = ((outer[1] - outer[0]) / (G - 1), (outer[3] - outer[2]) / (G - 1))
     boxes = []
     if np.any(neg):
         boxes.append((X[neg].min() - 1.5 * cell[0], X[neg].max() + 1.5 * cell[0],
@@ -341,16 +339,22 @@ def region_curve(P: Poly2, delta0: float, expr):
             r = min(max(r, 1e-12 * max(cell)), max(cell) * G)
             mins.append((cx, cy, r))
             boxes.append((cx - r, cx + r, cy - r, cy + r))
-    bb = (min(b[0] for b in boxes), max(b[1] for b in boxes), min(b[2] for b in boxes), max(b[3] for b in boxes))
-    def fit(b):
-        for _ in range(40):
-            if _edge_clear(P, delta0, b) or b == outer:
-                break
-            b = _expand(b, 0.25, outer)
-        return b
+    return boxes, mins
 
-    box = fit(_expand(bb, 0.1, outer))
+
+def _fit(P: Poly2, delta0: float, b: tuple, outer: tuple) -> tuple:
+    """Grow a box until the level set stays clear of its edges (or it is the outer box)."""
+    for _ in range(40):
+        if _edge_clear(P, delta0, b) or b == outer:
+            break
+        b = _expand(b, 0.25, outer)
+    return b
+
+
+def _trace(P: Poly2, delta0: float, expr, box: tuple, outer: tuple, crit: list) -> tuple[list, list]:
+    """The closed level lines on a fine grid, zooming in while they fill less than a fifth of the box."""
     Gf = 129
+    curves: list = []
     for _ in range(12):
         xs, ys, X, Y, D = _grid(P, box, Gf, Gf)
         crit = crit + [c for c in _critical_points(P, X, Y, D, box)
@@ -360,12 +364,16 @@ def region_curve(P: Poly2, delta0: float, expr):
             pts = np.vstack(curves)
             cb = (pts[:, 0].min(), pts[:, 0].max(), pts[:, 1].min(), pts[:, 1].max())
             if (cb[1] - cb[0]) < 0.2 * (box[1] - box[0]) or (cb[3] - cb[2]) < 0.2 * (box[3] - box[2]):
-                nb = fit(_expand(cb, 0.15, outer))
+                nb = _fit(P, delta0, _expand(cb, 0.15, outer), outer)
                 if nb != box:
                     box = nb
                     continue
         break
-    # a critical point on the level set: Gamma_0 is not smooth there
+    return curves, crit
+
+
+def _check_smooth(P: Poly2, crit: list, delta0: float, expr) -> None:
+    """A critical point on the level set: Gamma_0 is not smooth there."""
     for cx, cy in crit:
         v = float(P.value(cx, cy))
         if abs(v - delta0) <= 1e-8 * max(delta0, abs(v)):
@@ -374,20 +382,25 @@ def region_curve(P: Poly2, delta0: float, expr):
                 f"the critical point (x1, x2) = ({short(cx)}, {short(cy)}) where grad Phi = 0; "
                 "choose a delta0 different from the critical values of Phi"
             )
-    # minima below delta0 that no curve encloses: zoom around each (unresolved small components)
+
+
+def _small_components(P: Poly2, curves: list, mins: list, delta0: float, expr, outer: tuple) -> list:
+    """Minima below delta0 that no curve encloses: zoom around each (unresolved small components)."""
+    curves = list(curves)
     for cx, cy, r in mins:
         if any(_inside(c, cx, cy)[0] for c in curves):
             continue
-        lb = _expand((cx - r, cx + r, cy - r, cy + r), 0.5, outer)
-        for _ in range(40):
-            if _edge_clear(P, delta0, lb) or lb == outer:
-                break
-            lb = _expand(lb, 0.25, outer)
+        lb = _fit(P, delta0, _expand((cx - r, cx + r, cy - r, cy + r), 0.5, outer), outer)
         lxs, lys, _, _, LD = _grid(P, lb, 97, 97)
         for c in _closed_lines(lxs, lys, LD[0], delta0, expr, delta0):
             if _inside(c, cx, cy)[0]:
                 curves.append(c)
                 break
+    return curves
+
+
+def _check_one_region(P: Poly2, curves: list, crit: list, delta0: float, expr) -> np.ndarray:
+    """The one closed curve of a simply connected region; holes and extra components are errors."""
     if not curves:
         raise RuntimeError(f"could not resolve the level set Phi = {short(delta0)} of Phi = {expr} on a grid")
     if len(curves) > 1:
@@ -419,5 +432,23 @@ def region_curve(P: Poly2, delta0: float, expr):
                 f"one component: Phi = {short(v)} < delta0 at (x1, x2) = ({short(cx)}, {short(cy)}) outside the "
                 "main one; the boundary-layer analysis needs one simply connected region"
             )
-    best_min = best
-    return curve, crit, best_min
+    return curve
+
+
+def region_curve(P: Poly2, delta0: float, expr):
+    """The polygon (M, 2) of the single closed level line, after all structural checks (3.3).
+
+    Returns the curve, the critical points of Phi found on the way and the lowest point ``(Phi, x1, x2)``.
+    """
+    outer = _outer_box(P, delta0, expr)
+    G = 97
+    _, _, X, Y, D = _grid(P, outer, G, G)
+    crit = _critical_points(P, X, Y, D, outer)
+    best = _lowest_point(P, D[0], X, Y, crit, delta0, expr)
+    cell = ((outer[1] - outer[0]) / (G - 1), (outer[3] - outer[2]) / (G - 1))
+    boxes, mins = _zoom_boxes(P, D[0], X, Y, crit, delta0, cell, G)
+    bb = (min(b[0] for b in boxes), max(b[1] for b in boxes), min(b[2] for b in boxes), max(b[3] for b in boxes))
+    curves, crit = _trace(P, delta0, expr, _fit(P, delta0, _expand(bb, 0.1, outer), outer), outer, crit)
+    _check_smooth(P, crit, delta0, expr)
+    curves = _small_components(P, curves, mins, delta0, expr, outer)
+    return _check_one_region(P, curves, crit, delta0, expr), crit, best

@@ -186,11 +186,11 @@ def boundary_layer_kernel(layer: LayerKernel, t: Any, method: str = "bessel2") -
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         A layer with numeric nu (e.g. ``BondedLayer(0.3)`` or ``BondedLayer("3/10")``).
-    t:
+    t : Any
         Real, ``t != 0`` (logarithmic singularity at 0); N is even.
-    method:
+    method : str
         ``"bessel2"`` (subtract ``K_0(t) + t K_1(t)/2``, remainder ``O(s^-5)``) or ``"bessel1"``
         (subtract ``K_0(t)``, remainder ``O(s^-3)``): two independent quadrature routes.
 
@@ -283,9 +283,9 @@ def alexandrov_fit(A: Any, m1: Any, dps: int = 30) -> AlexandrovParameters:
 
     Parameters
     ----------
-    A, m1:
+    A, m1 : Any
         ``L(s)/s = A (1 + m_1 s^2 + ...)``: sympy expressions, exact numbers or mpmath floats.
-    dps:
+    dps : int
         precision carried for mpmath inputs.
 
     Raises
@@ -364,7 +364,7 @@ def alexandrov_parameters(layer: LayerKernel) -> AlexandrovParameters:
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         Any layer with a thin-layer expansion (2.20), e.g. ``BondedLayer()`` (symbolic nu: B, C
         are sympy expressions of nu), ``BondedLayer("3/10")`` (exact) or ``BondedLayer(0.3)``.
 
@@ -424,11 +424,11 @@ def alexandrov_kernel(layer: Any, t: Any, method: str = "laplace") -> mpmath.mpf
 
     Parameters
     ----------
-    layer:
+    layer : Any
         A numeric layer, or :class:`AlexandrovParameters` / :class:`AlexandrovSolution`.
-    t:
+    t : Any
         Real, ``t != 0``; the kernel is even with a ``-pi log|t|`` singularity at 0.
-    method:
+    method : str
         ``"laplace"`` (default): ``pi [K_0(B t) + (C - B^2) PV int_B^oo e^{-yt} dy /((y^2-C)
         sqrt(y^2-B^2))]`` (contour turned onto the imaginary axis, see module docstring);
         ``"fourier"``: ``pi [K_0(t) + quadosc(remainder)]``.
@@ -474,9 +474,9 @@ def alexandrov_kernel_numpy(layer: Any, t: Any, nodes: int = 80) -> np.ndarray:
 
     Parameters
     ----------
-    layer:
+    layer : Any
         numeric layer, :class:`AlexandrovParameters` or :class:`AlexandrovSolution`.
-    t:
+    t : Any
         array of reals, all ``!= 0``.
     """
     from scipy.special import k0
@@ -627,7 +627,7 @@ def alexandrov_solution(layer: Any) -> AlexandrovSolution:
 
     Parameters
     ----------
-    layer:
+    layer : Any
         A layer (symbolic or numeric nu) or :class:`AlexandrovParameters`.
 
     Returns

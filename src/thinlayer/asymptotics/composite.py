@@ -53,15 +53,15 @@ class CompositePressure(RichDisplay):
 
     Attributes
     ----------
-    inner:
+    inner : InnerPressure
         The :class:`~thinlayer.InnerPressure` used (``inner.order`` terms).
-    boundary_layer:
+    boundary_layer : str
         ``"exact"`` or ``"alexandrov"``.
-    h:
+    h : float
         The edge shift used (3.25): the pressure vanishes for ``v = n/H <= h``.
-    amplitude:
+    amplitude : float
         ``vartheta/A``: the boundary layer is ``amplitude * g * Qhat(v)``.
-    band:
+    band : float
         ``Qhat(v) - v`` is taken as 0 beyond ``v = band`` (below double precision there).
     """
 
@@ -210,16 +210,16 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         A :class:`~thinlayer.BondedLayer` with a numeric Poisson ratio, or a
         :class:`~thinlayer.FrictionlessLayer` (then give ``nu`` for ``vartheta = mu/(1 - nu)``).
-    punch:
+    punch : Punch
         A :class:`~thinlayer.Punch` with numeric coefficients.
-    delta0, H, mu:
+    delta0, H, mu : float
         Indentation, thickness, shear modulus (numbers > 0; checked by :func:`thinlayer.solve`).
-    terms:
+    terms : int
         Number of inner terms ``p_0 .. p_{terms-1}`` (2.26).
-    boundary_layer:
+    boundary_layer : str
         ``"exact"`` (Wiener--Hopf, kernel (2.3); its table is built once per nu, ~2 s) or
         ``"alexandrov"`` (closed form (3.24)).
     """

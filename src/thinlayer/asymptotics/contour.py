@@ -363,14 +363,14 @@ class ContourAccuracy:
 
     Attributes
     ----------
-    level_distance:
+    level_distance : float
         max |Phi(f(s)) - delta0| / |grad Phi|, the distance of the interpolant from Gamma_0,
         relative to the perimeter.
-    speed_error:
+    speed_error : float
         max | |f'(s)| - 1 | (arc-length parametrisation).
-    spectral_tail:
+    spectral_tail : float
         largest Fourier coefficient in the upper half of the band, relative to the largest one.
-    turning_number:
+    turning_number : float
         (1/2 pi) oint kappa ds; 1 for a simple closed CCW curve (closure of the tangent).
     """
 
@@ -391,15 +391,15 @@ class ContactContour(RichDisplay):
 
     Attributes
     ----------
-    Phi, delta0:
+    Phi, delta0
         The punch (sympy, in ``thinlayer.symbols.x1, x2``) and the indentation.
-    perimeter, area, centroid:
+    perimeter, area, centroid
         Length of Gamma_0, area and centroid of omega_0.
-    nodes:
+    nodes : numpy.ndarray
         ``(N, 2)`` points of Gamma_0 at ``s_j = j perimeter / N``.
-    min_point, min_value:
+    min_point, min_value
         Where Phi is smallest and its value (the first point of contact).
-    accuracy:
+    accuracy : ContourAccuracy
         :class:`ContourAccuracy`.
     """
 
@@ -606,16 +606,16 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
 
     Parameters
     ----------
-    Phi:
+    Phi
         The punch shape, a sympy polynomial in ``thinlayer.symbols.x1, x2`` with numeric
         coefficients (or a :class:`thinlayer.Punch` with numeric parameters, or a string).
-    delta0:
+    delta0
         The indentation depth, a number > 0.
-    n:
+    n : int | None
         Number of equally spaced arc-length nodes of the trigonometric interpolant (even,
         >= 16); then no accuracy is enforced (read ``.accuracy``).  Default: adaptive, doubling
         until the Fourier tail is below ``tol`` and the self-checks pass to 1e-9.
-    tol:
+    tol : float
         Target relative size of the Fourier tail (adaptive mode).
 
     Returns
@@ -752,11 +752,11 @@ def ellipse_contour(R1=None, R2=None, delta0=None) -> EllipseContour:
 
     Parameters
     ----------
-    R1, R2:
+    R1, R2
         Principal radii of curvature (numbers > 0 or symbols; default the symbols ``R_1, R_2``
         of :meth:`thinlayer.Punch.elliptic_paraboloid`).  The paper takes ``R1 >= R2``; numeric
         ``R1 < R2`` gives ``e^2 = 1 - R1/R2`` (major axis along x2).
-    delta0:
+    delta0
         Indentation (default the symbol ``thinlayer.symbols.delta0``).
 
     Examples

@@ -198,20 +198,20 @@ class ForceLaw(RichDisplay):
 
     Attributes
     ----------
-    layer, punch:
+    layer, punch
         The layer kernel and the punch (symbolic or numeric parameters).
-    kind:
+    kind : str
         ``"quadratic"`` (closed form, the elliptic paraboloid (1.1)), ``"radial-monomial"``
         (closed form, ``Phi = c r^{2k}``) or ``"contour"`` (numeric integrals over omega_0).
-    P0, P1:
+    P0, P1 : sympy.Expr | None
         Leading force and first correction (sympy), or ``None`` for ``kind == "contour"``.
-    area0, perimeter:
+    area0, perimeter : sympy.Expr | None
         ``|omega_0|`` and ``|Gamma_0|`` (sympy) or ``None``.
-    coefficient:
+    coefficient : sympy.Expr
         ``P1 = coefficient * J`` with ``coefficient = (vartheta H/A)(M_1 + D)``, ``D = m_1/2``.
-    V, J:
+    V, J : sympy.Expr | None
         ``iint_{omega_0} (delta0 - Phi) dx`` and ``oint_{Gamma_0} |grad Phi| ds`` (closed forms) or None.
-    phi_min:
+    phi_min : sympy.Expr | None
         The lowest value of Phi (closed forms) or None: contact needs ``delta0 > phi_min``.
     """
 
@@ -333,15 +333,15 @@ class ForceLaw(RichDisplay):
 
         Parameters
         ----------
-        delta0, H, mu:
+        delta0, H, mu : Any
             Indentation, thickness, shear modulus (numbers > 0).
-        edge_shift:
+        edge_shift : Any
             ``h^*`` for the area law (e.g. :func:`thinlayer.edge_shift_exact`).
-        parameters:
+        parameters : dict | None
             Values of the punch parameters (``{symbol or name: number}``) if it has any.
-        contour:
+        contour
             A precomputed :class:`thinlayer.ContactContour` for ``kind == "contour"``.
-        nu:
+        nu : Any
             Poisson ratio for ``vartheta = mu/(1 - nu)`` when the kernel does not fix it
             (:class:`~thinlayer.FrictionlessLayer`).
         """

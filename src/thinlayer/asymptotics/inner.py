@@ -43,15 +43,15 @@ class InnerPressure(RichDisplay):
 
     Attributes
     ----------
-    terms:
+    terms : tuple
         Dimensional terms ``p_k(x1, x2) = Lambda^{-2k} p_k^*`` written in x, delta_0, H, mu, nu and
         the punch parameters; ``pressure`` is their sum.
-    scaled_terms:
+    scaled_terms : tuple
         ``p_k^*(xi1, xi2)`` of (2.27)-(2.28)/(4.1) in the scaled variables (1.2), (2.8):
         H_*, delta_0^*, vartheta, the starred punch parameters.
-    order:
+    order : int
         Number of terms kept (p_0 .. p_{order-1}).
-    method:
+    method : str
         ``"closed"`` (4.1) or ``"recursion"`` (2.28).
     """
 
@@ -100,12 +100,12 @@ class InnerPressure(RichDisplay):
 
         Parameters
         ----------
-        args:
+        args
             Argument symbols in call order; default :attr:`arguments` (or :attr:`scaled_arguments`).
             A free symbol of the pressure that is missing raises ``MissingArgumentError`` naming it.
-        backend:
+        backend : str
             ``"numpy"`` (vectorised) or ``"mpmath"``.
-        scaled:
+        scaled : bool
             Lambdify the scaled ``p^*(xi)`` instead of the dimensional ``p(x)``.
         """
         expr = self.scaled_pressure if scaled else self.pressure
@@ -176,15 +176,15 @@ def inner_pressure(layer: LayerKernel, punch: Punch, order: int | None = None,
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         A layer with a small-s expansion (BondedLayer, FrictionlessLayer, GenericLayer).
-    punch:
+    punch : Punch
         Any polynomial :class:`~thinlayer.punch.Punch`.
-    order:
+    order : int | None
         Number of terms p_0..p_{order-1} to keep (an integer >= 1).  Default: all the
         terms that can be non-zero, ``punch.degree // 2 + 1``; beyond them the series
         terminates (every further p_k is identically zero).
-    method:
+    method : str
         ``"closed"`` -- the closed form (4.1) with the M_k of (4.2); ``"recursion"`` -- (2.28).
 
     Examples

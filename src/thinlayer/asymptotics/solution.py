@@ -87,17 +87,17 @@ class ContactSolution:
 
     Attributes
     ----------
-    layer, punch:
+    layer, punch
         The layer and the punch (numeric coefficients).
-    delta0, H, mu, nu:
+    delta0, H, mu, nu : float
         Indentation, thickness, shear modulus and Poisson ratio.
-    law:
+    law : ForceLaw
         The symbolic :class:`~thinlayer.asymptotics.force_law.ForceLaw` and ``values`` its numbers here.
-    edge_shift, edge_shift_alexandrov:
+    edge_shift, edge_shift_alexandrov : float
         h^* (3.25) from the exact kernel and from Alexandrov's approximation.
-    terms:
+    terms : int
         Number of inner terms in the composite pressure.
-    boundary_layer:
+    boundary_layer : str
         ``"exact"`` or ``"alexandrov"``: which boundary layer :attr:`pressure` uses.
     """
 
@@ -241,28 +241,28 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         ``BondedLayer(nu)`` with a numeric Poisson ratio in (-1, 1/2), or ``FrictionlessLayer()``
         (a layer on a frictionless base; give ``nu``).
-    punch:
+    punch : Any
         A :class:`~thinlayer.Punch` (or a polynomial in ``x_1, x_2``) with numeric coefficients,
         or with ``parameters`` giving them.
-    delta0:
+    delta0 : Any
         Indentation depth (> 0, above the punch's lowest point).  Give either ``delta0`` or
         ``force``.
-    H, mu:
+    H, mu : Any
         Layer thickness and shear modulus (> 0).
-    force:
+    force : Any
         The inverse problem: the total force P (1.8); ``delta0`` is then found from the force
         law with its first correction.
-    order:
+    order : int
         Corrections in the force and area laws: 0 (leading terms) or 1 (first correction in H,
         the default); higher orders are not derived.
-    terms:
+    terms : int
         Inner terms ``p_0 ... p_{terms-1}`` (2.26) in the composite pressure.
-    boundary_layer:
+    boundary_layer : str
         ``"exact"`` (default) or ``"alexandrov"`` boundary layer in the composite pressure.
-    nu:
+    nu : Any
         Poisson ratio for ``vartheta = mu/(1 - nu)`` when the kernel does not fix it
         (``FrictionlessLayer``; its ``m_1 = 0``, so the force has no correction of relative order
         ``(H/a)^2`` and the remainder is ``O((H/a)^3)``).

@@ -345,14 +345,14 @@ def edge_shift(nu: Any, kernel: str = "exact", normaliser: str = "alexandrov", d
 
     Parameters
     ----------
-    nu:
+    nu : Any
         Poisson ratio in (-1, 1/2) (float, rational, string such as ``"3/10"``) or a numeric
         :class:`~thinlayer.BondedLayer`.
-    kernel:
+    kernel : str
         ``"exact"`` (``F = L(s)/s`` with (2.3)) or ``"alexandrov"`` (``F~`` of (3.19)).
-    normaliser:
+    normaliser : str
         ``"sqrt"``, ``"alexandrov"`` or ``"tanh"``: the exactly factorised F0 (results agree).
-    dps:
+    dps : int
         mpmath working precision (decimal digits); the result is good to about ``dps - 3``
         digits (checked against ``dps=40``), for every nu tried in ``[-1 + 1e-10, 1/2 - 1e-12]``.
 
@@ -543,13 +543,13 @@ class WienerHopfSolution(RichDisplay):
 
     Attributes
     ----------
-    nu, A, m1:
+    nu, A, m1
         Poisson ratio (exact rational), ``A`` (2.4) and ``m_1`` (2.20).
-    kernel, normaliser:
+    kernel, normaliser : str
         ``"exact"``/``"alexandrov"`` and the F0 used in the factorisation.
-    h:
+    h : mpmath.mpf
         Edge shift (3.18) at ``dps`` digits; ``h_alexandrov`` is (3.25) for comparison.
-    sigma, tau_max:
+    sigma, tau_max : float
         ``qhat - tau - h = O(e^{-sigma tau})``; the table covers ``0 <= tau <= tau_max``.
     """
 
@@ -584,12 +584,12 @@ class WienerHopfSolution(RichDisplay):
 
         Parameters
         ----------
-        tau:
+        tau : Any
             distance from the edge, ``tau >= 0``.
-        dps:
+        dps : int
             working precision; the result has about ``dps - 3`` correct digits (``method="panel"``:
             at most ~20, the panel rule's accuracy).
-        method:
+        method : str
             ``"panel"`` (``Phi`` from the Gauss--Legendre panel rule in mpmath, ~0.5 s; for
             ``tau > tau_max`` returns ``tau + h``, exact to ``e^{-36}``) or ``"quad"`` (adaptive
             :func:`mpmath.quad` per Laplace abscissa: independent of the panel rule, ~10 s).
@@ -713,13 +713,13 @@ def wiener_hopf_solution(nu: Any, kernel: str = "exact", normaliser: str = "alex
 
     Parameters
     ----------
-    nu:
+    nu : Any
         Poisson ratio in (-1, 1/2) or a numeric :class:`~thinlayer.BondedLayer`.
-    kernel, normaliser:
+    kernel, normaliser : str
         see :func:`edge_shift`.
-    dps:
+    dps : int
         precision of ``h`` and of :meth:`WienerHopfSolution.q`.
-    n:
+    n : int | None
         number of Chebyshev nodes of the numpy table; ``None`` (default) doubles it from 64
         until the trailing coefficients are below ``2e-11 (1 + |h|)`` (the table is built once
         per argument set and cached: ~3 s for 64 nodes).

@@ -223,15 +223,22 @@ def _to_expr(x: Any, layer: LayerKernel) -> sp.Expr:
     return as_expr(x)
 
 
+def _symbolic_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
+    """A layer known by its coefficients: ``A``, ``m_n`` plain symbols, ``M_k`` polynomials in them by (4.2)."""
+    m = [sp.Integer(1)] + [layer.m_symbol(n) for n in range(1, order + 1)]
+    M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
+    return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
+
+
 @lru_cache(maxsize=256)
 def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     """A, m_n (2.20) and M_k by the recurrence (4.2), for n, k <= ``order``.
 
     Parameters
     ----------
-    layer:
+    layer : LayerKernel
         Any :class:`~thinlayer.layers.kernels.LayerKernel` with a small-s expansion.
-    order:
+    order : int
         Highest index n of m_n and M_n (a non-negative integer).
 
     Examples
@@ -243,9 +250,7 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     """
     order = _check_order(order, "order")
     if layer.symbolic_coefficients:
-        m = [sp.Integer(1)] + [layer.m_symbol(n) for n in range(1, order + 1)]
-        M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
-        return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
+        return _symbolic_coefficients(layer, order)
     dom = _domain(layer)
     if dom.kind == "mpmath":
         with mpmath.workdps(dom.dps + 10):
@@ -311,9 +316,7 @@ def reciprocal_by_inversion(layer: LayerKernel, order: int) -> tuple:
     """
     order = _check_order(order, "order")
     if layer.symbolic_coefficients:
-        m = [sp.Integer(1)] + [layer.m_symbol(n) for n in range(1, order + 1)]
-        M = reciprocal_recurrence(m, order, sp.Integer(1), sp.Integer(0))
-        return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
+        return _symbolic_coefficients(layer, order)
     dom = _domain(layer)
     ctx = mpmath.workdps(dom.dps + 10) if dom.kind == "mpmath" else _nullcontext()
     with ctx:
@@ -345,9 +348,9 @@ class IncompressibleCoefficients:
 
     Attributes
     ----------
-    order:
+    order : int
         Highest n.
-    c:
+    c : tuple
         ``(c_0, ..., c_order)`` as sympy Rationals; ``c_0 = A = 0``, ``c_1 = 2/3``.
     """
 

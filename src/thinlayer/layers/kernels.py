@@ -175,13 +175,13 @@ class BondedLayer(LayerKernel):
 
     Parameters
     ----------
-    nu:
+    nu : Any
         Poisson ratio.  ``None`` (default) keeps the symbol nu; an exact number (int,
         Fraction, sympy Rational or a string such as ``"3/10"``) gives exact rational
         coefficients; a float gives mpmath numbers at ``dps`` digits.  Must lie in (-1, 1/2).
-    parameter:
+    parameter : str
         ``"nu"`` or ``"kappa"``: the variable of symbolic coefficients.
-    dps:
+    dps : int
         mpmath precision (decimal digits) for a float nu.
 
     Examples

@@ -92,6 +92,7 @@ class AxisymmetricContact(RichDisplay):
     layer : LayerKernel
         Layer model (kernel (2.3)).
     nu, mu, vartheta, H : float
+        float
         Poisson ratio, shear modulus, ``vartheta = mu/(1-nu)`` (2.1), thickness.
     delta0 : float
         Indentation depth (1.5).
@@ -100,10 +101,12 @@ class AxisymmetricContact(RichDisplay):
     force : float
         Total force P = 2 pi int_0^c p r dr (1.8).
     r, pressure : numpy.ndarray
+        numpy.ndarray
         Sample radii on [0, c] (clustered at the edge) and p(r) there (read-only arrays).
     modes : int
         Number of Galerkin modes.
     radius_error, force_error, delta0_error : float
+        float
         Convergence estimates: |change| against a run with ~0.7x the modes (absolute for
         radius and delta0, relative for force); zero for the prescribed quantity.
     coefficients : tuple of float

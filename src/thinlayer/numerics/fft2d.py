@@ -157,7 +157,8 @@ class Contact2D:
 
     Attributes
     ----------
-    layer, punch, nu, mu, vartheta, H : LayerKernel, Punch, float, float, float, float or None
+    layer, punch, nu, mu, vartheta, H
+        LayerKernel, Punch, float, float, float, float or None
         Layer model (kernel L, (2.3)), punch (1.1), Poisson ratio, shear modulus,
         ``vartheta = mu/(1 - nu)`` (2.1), thickness (None for the half-space).
     delta0 : float
@@ -175,10 +176,12 @@ class Contact2D:
     gap : numpy.ndarray
         N x N array of ``u3 - delta0 + Phi`` at the cell centres (>= 0; 0 in contact).
     x1, x2 : numpy.ndarray
+        numpy.ndarray
         Cell-centre coordinates (length N each).
     spacing : float
         Cell size Delta.
-    iterations, residual, tol : int, float, float
+    iterations, residual, tol
+        int, float, float
         Polonsky-Keer iterations, final residual (contact conditions, relative to delta0), tolerance.
     """
 
@@ -298,7 +301,8 @@ def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, 
         Cell size Delta.
     n : int
         Number of offsets per direction.
-    nu, mu : float
+    nu, mu
+        float
         Poisson ratio (only for layers that carry none) and shear modulus: ``vartheta = mu/(1 - nu)``.
 
     Returns

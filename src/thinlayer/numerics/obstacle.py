@@ -38,19 +38,19 @@ class GridContact:
 
     Attributes
     ----------
-    nu, delta0, H, mu:
+    nu, delta0, H, mu : float
         Parameters.  ``k2`` is ``c_0/(c_1 H^2)`` (zero at nu = 1/2).
-    x1, x2:
+    x1, x2 : numpy.ndarray
         Grid coordinates (1-D, read-only); ``pressure[i, j]`` is ``p(x1[i], x2[j])``.
-    pressure, contact:
+    pressure, contact : numpy.ndarray
         Pressure and contact set ``p > 0`` (read-only arrays).
-    force:
+    force : float
         ``P = sum p h1 h2`` (1.8).
-    area:
+    area : float
         Number of contact nodes times ``h1 h2`` (first-order accurate).
-    iterations:
+    iterations : int
         Active-set iterations on the finest grid.
-    volume_residual:
+    volume_residual : float
         ``int_omega f / int_omega |f|`` -- zero for the exact solution at nu = 1/2 (I.5).
     """
 
@@ -273,7 +273,8 @@ def solve_obstacle_grid(layer: LayerKernel, punch: Any, delta0: float | None = N
     punch : Punch or callable
         A :class:`~thinlayer.punch.Punch` (numeric, or with ``parameters``) or a callable
         ``Phi(x1, x2)`` (numpy-vectorised).
-    delta0, H, mu : float
+    delta0, H, mu
+        float
         Indentation, thickness, shear modulus.
     n : int
         Nodes per side (odd, >= 21).

@@ -115,17 +115,17 @@ class ValidationStudy:
 
     Attributes
     ----------
-    rows:
+    rows : tuple[ValidationRow, ...]
         The :class:`ValidationRow` s, in the order computed.
-    profiles, contours:
+    profiles, contours
         Data for the plots (:class:`PressureProfile`, :class:`ContourData`).
-    skipped:
+    skipped : tuple[tuple[str, float, float, str], ...]
         ``(shape, nu, H/a, reason)`` of cases not run (e.g. the 2D grid would exceed ``max_n``).
-    interrupted:
+    interrupted : bool
         True if a KeyboardInterrupt stopped the study; ``pending`` lists the cases not done.
-    settings:
+    settings : Any
         The parameters of the run (read-only mapping).
-    seconds:
+    seconds : float
         Wall time of the study.
     """
 

@@ -127,34 +127,34 @@ class ValidationRow:
 
     Attributes
     ----------
-    shape, nu, H_over_a:
+    shape, nu, H_over_a
         The case: ``"sphere"`` or ``"elliptic"``, Poisson ratio, thickness ratio ``H/a``.
-    H, delta0, half_width:
+    H, delta0, half_width : float
         Thickness, indentation and ``a = 2|omega_0|/|Gamma_0|``.
-    force_numeric, force_asymptotic, force_leading:
+    force_numeric, force_asymptotic, force_leading : float
         ``P`` numerical, ``P_0 + P_1`` (1.8) and ``P_0``.
-    force_numeric_error:
+    force_numeric_error : float
         Estimated relative error of ``force_numeric``.
-    area_numeric, area_asymptotic, area_leading, area_alexandrov:
+    area_numeric, area_asymptotic, area_leading, area_alexandrov : float
         Contact area: numerical, ``|omega_0| - h^* H |Gamma_0|`` (3.25), ``|omega_0|``, and with
         Alexandrov's h^*.
-    area_numeric_error:
+    area_numeric_error : float
         Estimated relative error of ``area_numeric``.
-    semi_axes_numeric, semi_axes_asymptotic, semi_axes_leading:
+    semi_axes_numeric, semi_axes_asymptotic, semi_axes_leading : tuple[float, float]
         Contact semi-axes (x1, x2): numerical, ``a_i - h^* H`` and ``a_i`` (the radius twice for the sphere).
-    edge_shift_numeric, edge_shift_numeric_error:
+    edge_shift_numeric, edge_shift_numeric_error : float
         ``(a_i - s_i)/H`` from the numerics (mean over the two axes) and its estimated error.
-    edge_shift_exact, edge_shift_alexandrov:
+    edge_shift_exact, edge_shift_alexandrov : float
         h^* (3.25): exact (Wiener--Hopf) and Alexandrov's.
-    pressure_error:
+    pressure_error : float
         ``max |p_c - p_num| / max p_num`` (see the module docstring for the region).
-    pressure_band:
+    pressure_band : float
         Width of the band inside the numerical contact edge left out of ``pressure_error`` (0 for the sphere).
-    pressure_numeric_error:
+    pressure_numeric_error : float
         Estimated error of the numerical pressure in the same norm.
-    solver:
+    solver : str
         The numerical method and its resolution.
-    seconds_numeric, seconds_asymptotic:
+    seconds_numeric, seconds_asymptotic : float
         Wall time of the numerical solution(s) and of :func:`thinlayer.solve` with the pressure evaluation.
     """
 
@@ -188,27 +188,33 @@ class ValidationRow:
     seconds_asymptotic: float
 
     # ---- relative errors of the asymptotic results -----------------------------------------
+    def _relative(self, value: float, reference: float) -> float:
+        return value / reference - 1.0
+
     @property
     def force_error(self) -> float:
         """``(P_0 + P_1)/P_num - 1``: claimed O((H/a)^3)."""
-        return self.force_asymptotic / self.force_numeric - 1.0
+        return self._relative(self.force_asymptotic, self.force_numeric)
 
     @property
     def force_leading_error(self) -> float:
-        return self.force_leading / self.force_numeric - 1.0
+        """``P_0/P_num - 1``."""
+        return self._relative(self.force_leading, self.force_numeric)
 
     @property
     def area_error(self) -> float:
         """``(|omega_0| - h^* H |Gamma_0|)/|omega_num| - 1``: claimed O((H/a)^2)."""
-        return self.area_asymptotic / self.area_numeric - 1.0
+        return self._relative(self.area_asymptotic, self.area_numeric)
 
     @property
     def area_leading_error(self) -> float:
-        return self.area_leading / self.area_numeric - 1.0
+        """``|omega_0|/|omega_num| - 1``."""
+        return self._relative(self.area_leading, self.area_numeric)
 
     @property
     def area_alexandrov_error(self) -> float:
-        return self.area_alexandrov / self.area_numeric - 1.0
+        """The area with Alexandrov's h* (3.25), relative to the numerical one."""
+        return self._relative(self.area_alexandrov, self.area_numeric)
 
     def errors(self) -> dict[str, float]:
         """``{quantity: relative error}``: the claimed quantities, the leading terms and Alexandrov's area."""

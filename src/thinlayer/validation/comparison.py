@@ -41,16 +41,16 @@ class SphereModels:
 
     Attributes
     ----------
-    compressible:
+    compressible : tuple | None
         ``(P, c)`` from :func:`thinlayer.solve` (force with first correction (2.31), area with (3.25));
         ``None`` at nu = 1/2 (``A = 0``).
-    incompressible:
+    incompressible : tuple
         ``(P, c)`` of (I.8) with nu = 1/2 constants, ``c = 2 sqrt(R delta0) - h(1/2) H`` (I.12).
-    two_term:
+    two_term : tuple
         ``(P, c)`` of (I.11), ``c`` corrected by (I.12).
-    direct:
+    direct : tuple | None
         ``(P, c)`` of :func:`thinlayer.numerics.solve_axisymmetric`, or ``None``.
-    regime:
+    regime : Regime
         :func:`regime` at ``H/a`` with ``a`` the two-term radius.
     """
 
@@ -102,6 +102,7 @@ def compare_sphere_models(layer: LayerKernel, R: float, delta0: float, H: float,
         ``BondedLayer(nu)`` with a numeric ``1/4 < nu < 1/2``, or ``IncompressibleLayer()``.  A bare
         Poisson ratio still works, with a DeprecationWarning.
     R, delta0, H, mu : float
+        float
         Sphere radius, indentation, thickness, shear modulus.
     direct : bool
         Also run :func:`thinlayer.numerics.solve_axisymmetric` with the layer.

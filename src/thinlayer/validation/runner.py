@@ -166,7 +166,8 @@ def validate_elliptic(nu: float, H_over_a_values: Iterable[float] = QUICK_ELLIPT
 
     Parameters
     ----------
-    nu, H_over_a_values : float, sequence of float
+    nu, H_over_a_values
+        float, sequence of float
         As for :func:`validate_sphere`.
     cells_per_H : float
         Cells of the fine grid per layer thickness (>= 6); the error estimate's grid has 5.
@@ -215,9 +216,11 @@ def validation_study(nus: Iterable[float] | None = None, ratios: Iterable[float]
         The full study: the elliptic case for every nu and ratio as well (2D grids up to
         ``max_n = 2304``; several minutes).  Otherwise, unless given, the elliptic case runs at
         nu = 0.3 and H/a = 0.2, 0.1 only.
-    elliptic_nus, elliptic_ratios : sequence of float, optional
+    elliptic_nus, elliptic_ratios : Iterable[float] | None
+        sequence of float, optional
         Override the elliptic cases.
-    cells_per_H, max_n, workers : float, int, int
+    cells_per_H, max_n, workers
+        float, int, int
         2D grid: cells per thickness (>= 6), largest grid (default 1024, ``full`` 2304), FFT threads.
     progress : bool
         Progress lines on stderr (a tqdm bar on a terminal when tqdm is installed).

@@ -68,16 +68,16 @@ class IncompressibleEllipse:
 
     Attributes
     ----------
-    R1, R2:
+    R1, R2 : sympy.Expr
         Punch radii (symbols or numbers).
-    aspect_equation:
+    aspect_equation : sympy.Expr
         ``3 t^2 + (1 - r) t - 3 r`` (I.6) in ``t = a^2/b^2`` and ``r = R1/R2`` (the symbols
         ``t_sym``, ``r_sym`` of this module).
-    t:
+    t : sympy.Expr
         Its positive root in terms of R1, R2.
-    a2, b2, C, force:
+    a2, b2, C, force
         ``a^2``, ``b^2``, the amplitude C (I.7) and ``P`` (I.8), in delta0, H, mu, R1, R2.
-    a2_t, b2_t, C_t, force_t:
+    a2_t, b2_t, C_t, force_t : sympy.Expr
         The same in terms of ``t`` (the compact forms (I.7), (I.8)).
     """
 
@@ -227,7 +227,8 @@ def incompressible_ellipse(R1: Any = None, R2: Any = None) -> IncompressibleElli
 
     Parameters
     ----------
-    R1, R2 : number or Symbol, optional
+    R1, R2 : Any
+        number or Symbol, optional
         Radii of curvature (positive numbers or symbols; default symbols ``R_1, R_2``).  Equal
         values give the sphere.
 
@@ -270,15 +271,15 @@ class IncompressibleRadial:
 
     Attributes
     ----------
-    punch:
+    punch : Punch
         The punch (Phi depends on ``x1^2 + x2^2`` only).
-    profile:
+    profile : sympy.Expr
         ``Phi(r)``.
-    radius_equation:
+    radius_equation : sympy.Expr
         ``G(c) = int_0^c (delta0 - Phi(r)) r dr`` -- the contact radius is its positive root.
-    pressure_of_c:
+    pressure_of_c : sympy.Expr
         ``p(r)`` on ``0 <= r <= c`` in terms of ``c`` (a polynomial in r for a polynomial punch).
-    force_of_c:
+    force_of_c : sympy.Expr
         ``P = 2 pi int_0^c p r dr`` in terms of ``c``.
     """
 

@@ -273,8 +273,10 @@ class ObstacleProblem:
     nu : sympy object
         Poisson's ratio (1/2, an exact or float value in (1/4, 1/2), or the Symbol nu).
     c0, c1, vartheta : sympy.Expr
+        sympy.Expr
         ``c_0 = A``, ``c_1 = A m_1`` (``2/3`` at nu = 1/2) and ``vartheta = mu/(1 - nu)``.
     source, k2 : sympy.Expr
+        sympy.Expr
         ``f(x1, x2)`` and ``k^2`` (zero at nu = 1/2).
     """
 

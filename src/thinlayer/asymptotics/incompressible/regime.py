@@ -26,19 +26,19 @@ class Regime:
 
     Attributes
     ----------
-    nu, H_over_a:
+    nu, H_over_a : float
         Poisson ratio and thickness over contact half-width.
-    m1:
+    m1 : float
         ``m_1(nu)`` (2.20), ``~ 1/(3 (1 - 2 nu))`` near 1/2 (``inf`` at nu = 1/2).
-    lambda2:
+    lambda2 : float
         ``(a/H)^2/m_1``, the ratio of the two terms of (I.10).
-    compressible_correction:
+    compressible_correction : float
         ``4 m_1 (H/a)^2 = 4/lambda^2``: size of the first correction of the compressible force law
         (the paraboloid's ``2 m_1 H^2/(R delta0)``); the expansion needs it small.
-    incompressible_correction:
+    incompressible_correction : float
         ``(3/16) lambda^2``: the relative force change of the sphere caused by ``c_0 = A``, neglected by
         the incompressible model (from the series of (I.11) at ``x = 0``).
-    model:
+    model : str
         ``"compressible"``, ``"incompressible"`` or ``"two-term"``: the simplest model whose neglected
         term is below ``tol``.
     """

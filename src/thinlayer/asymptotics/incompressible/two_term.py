@@ -115,11 +115,11 @@ class TwoTermEdgeLayer:
 
     Attributes
     ----------
-    q:
+    q : sympy.Expr
         ``v + l e^{-(v + l)/l}``, ``l = sqrt(m_1)``.
-    edge:
+    edge : sympy.Expr
         ``v_0 = -sqrt(m_1)`` (the model's contact extends beyond the leading contour).
-    force_defect:
+    force_defect : sympy.Expr
         ``D = int (q - max(v, 0)) dv = m_1/2`` -- the same as the Wiener--Hopf boundary layer's
         (:func:`thinlayer.asymptotics.force_law.boundary_layer_force_defect`).
     """
@@ -238,15 +238,15 @@ class TwoTermSphere:
 
     Attributes
     ----------
-    layer:
+    layer : LayerKernel
         ``IncompressibleLayer()`` or ``BondedLayer(nu)``.
-    nu, c0, c1, vartheta:
+    nu, c0, c1, vartheta
         Poisson ratio and the model's coefficients (see :class:`ObstacleProblem`).
-    k2:
+    k2 : sympy.Expr
         ``k^2 = c_0/(c_1 H^2)``; the expressions below keep the symbol ``k`` (``k_sym``), zero at nu = 1/2.
-    pressure_of_c:
+    pressure_of_c : sympy.Expr
         ``p(r)`` for ``0 <= r <= c`` in terms of ``c`` (Bessel functions of ``k r``; a polynomial at nu = 1/2).
-    delta0_of_c, force_of_c:
+    delta0_of_c, force_of_c : sympy.Expr
         ``delta0(c)`` and ``P(c)``, derived with sympy from the general regular radial solution and (I.4).
     """
 

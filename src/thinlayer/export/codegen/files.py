@@ -41,7 +41,8 @@ def header_lines(spec: Spec, language: str, fname: str, arg_ids: Sequence[str], 
         One of :data:`~thinlayer.export.codegen.names.LANGUAGES`.
     fname : str
         The function name.
-    arg_ids, out_ids : sequence of str
+    arg_ids, out_ids : Sequence[str]
+        sequence of str
         Identifiers of the arguments and outputs in ``language``.
     several : bool
         Whether there are several outputs (C and Fortran return them in the array ``out``).
@@ -178,7 +179,8 @@ def python_module(fname: str, syms: Sequence[sp.Symbol], arg_ids: Sequence[str],
         The function name (also the module's file name).
     syms : sequence of sympy.Symbol
         The arguments in call order, named by their identifiers.
-    arg_ids, out_ids : sequence of str
+    arg_ids, out_ids : Sequence[str]
+        sequence of str
         The argument and output identifiers, in order.
     exprs : sequence of sympy.Expr
         The outputs in terms of ``syms``.
