@@ -98,4 +98,5 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_MOVED))
+    """The current names only: the deprecated aliases are not advertised."""
+    return sorted(globals())
