@@ -1,6 +1,7 @@
 """Test configuration: long validation runs are marked ``slow`` and run only with THINLAYER_SLOW=1."""
 import os
 
+import mpmath
 import pytest
 
 
@@ -11,3 +12,11 @@ def pytest_collection_modifyitems(config, items):
     for item in items:
         if "slow" in item.keywords:
             item.add_marker(skip)
+
+
+@pytest.fixture(autouse=True)
+def _mpmath_precision_restored():
+    """A test that sets mpmath's global precision must not change what later tests compute."""
+    dps = mpmath.mp.dps
+    yield
+    mpmath.mp.dps = dps
