@@ -15,7 +15,8 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-__all__ = ["check_choice", "check_int", "check_list", "check_order", "parse_nu", "positive"]
+__all__ = ["WorkLimitError", "check_bounded", "check_choice", "check_int", "check_list", "check_order", "parse_nu",
+           "positive"]
 
 HALF = sp.Rational(1, 2)
 
@@ -31,6 +32,35 @@ def check_order(n: Any, name: str) -> int:
     if n < 0:
         raise ValueError(f"{name} must be a non-negative integer, got {n}")
     return int(n)
+
+
+class WorkLimitError(ValueError):
+    """A request whose work or memory would exceed a documented limit; raised before any work starts."""
+
+
+def check_bounded(value: Any, name: str, limit: float, reason: str) -> Any:
+    """``value`` if ``value <= limit``, else a one-line :class:`WorkLimitError` naming the input, the limit and why.
+
+    Parameters
+    ----------
+    value : int or float
+        The requested size (an order, a degree, a number of grid points, an estimate of bytes).
+    name : str
+        The input to change, as the user wrote it.
+    limit : int or float
+        The largest accepted value.
+    reason : str
+        Why the limit is there (with the measured cost of the largest accepted case).
+
+    Examples
+    --------
+    >>> check_bounded(3, "order", 30, "symbolic coefficients")
+    3
+    """
+    if not value <= limit:
+        raise WorkLimitError(f"{name} = {value:g} exceeds the limit {limit:g}: {reason}"
+                             if isinstance(value, float) else f"{name} = {value} exceeds the limit {limit}: {reason}")
+    return value
 
 
 def check_int(value: Any, name: str, lo: int) -> int:

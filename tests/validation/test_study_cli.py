@@ -33,3 +33,37 @@ def test_cli_bad_input():
         args = ap.parse_args(argv)
         with pytest.raises(ValueError, match=msg):
             args.func(args)
+
+
+def test_cli_refuses_existing_outputs_before_the_study(tmp_path):
+    from thinlayer.validation.output import OutputExistsError
+
+    (tmp_path / "validation.tex").write_text("my edited table\n")
+    args = _parser().parse_args(["validate", "--shapes", "sphere", "--nu", "0.3", "--out", str(tmp_path), "--quiet"])
+    with pytest.raises(OutputExistsError, match="validation.tex exists; pass --force"):
+        args.func(args)
+    assert (tmp_path / "validation.tex").read_text() == "my edited table\n"
+    assert "--force" in _parser()._subparsers._group_actions[0].choices["validate"].format_help()
+
+
+def test_cli_plots_written_atomically_and_kept_without_force(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    from thinlayer.validation.output import OutputExistsError
+
+    argv = ["validate", "--shapes", "sphere", "--nu", "0.3", "--ratios", "0.05", "--out", str(tmp_path),
+            "--plots", "--quiet"]
+    args = _parser().parse_args(argv)
+    assert args.func(args) in (0, 1)  # one H/a: no observed order to fit, the files are what is checked
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"validation_errors.png", "validation_errors.pdf", "validation.json"} <= names
+    assert not [n for n in names if n.endswith(".tmp") or n.endswith(".lock")]
+    png = tmp_path / "validation_errors.png"
+    png.write_bytes(b"my figure")
+    for suffix in (".txt", ".tex", ".json"):
+        (tmp_path / f"validation{suffix}").unlink()
+    args = _parser().parse_args(argv)
+    with pytest.raises(OutputExistsError, match="validation_errors.png exists"):
+        args.func(args)
+    assert png.read_bytes() == b"my figure" and not (tmp_path / "validation.json").exists()
+    args = _parser().parse_args([*argv, "--force"])
+    assert args.func(args) in (0, 1) and png.read_bytes()[:4] == b"\x89PNG"

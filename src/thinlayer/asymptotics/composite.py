@@ -34,6 +34,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
@@ -216,7 +217,7 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
     punch : Punch
         A :class:`~thinlayer.Punch` with numeric coefficients.
     delta0, H, mu : float
-        Indentation, thickness, shear modulus (numbers > 0; checked by :func:`thinlayer.solve`).
+        Indentation, thickness, shear modulus (finite numbers > 0; a clear ValueError otherwise).
     terms : int
         Number of inner terms ``p_0 .. p_{terms-1}`` (2.26).
     boundary_layer : str
@@ -228,6 +229,7 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
 
     if boundary_layer not in BOUNDARY_LAYERS:
         raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
+    delta0, H, mu = (positive(v, name) for v, name in ((delta0, "delta0"), (H, "H"), (mu, "mu")))
     inner = inner_pressure(layer, punch, order=terms)
     vals = {S.delta0: delta0, S.H: H, S.mu: mu}
     if nu is not None:

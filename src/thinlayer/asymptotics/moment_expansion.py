@@ -29,6 +29,7 @@ import sympy as sp
 from .. import symbols as S
 from .._checks import check_order as _check_order
 from ..display import RichDisplay, fmt
+from ..layers.coefficients import check_coefficient_order
 from ..layers.kernels import LayerKernel
 from ..layers.moments import kernel_moment
 from ..results import checked_lambdify
@@ -90,6 +91,11 @@ class MomentExpansion(RichDisplay):
         p = self.layer.parameter
         return checked_lambdify([p] if p is not None else [], list(self.weights()), backend)
 
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """The weights ``w_n`` (2.22) as outputs, with the layer's parameter (if any) as the argument."""
+        p = self.layer.parameter
+        return ((p,) if p is not None else ()), {f"w_{n}": w for n, w in enumerate(self.weights())}
+
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         out = [(f"MomentExpansion of {self.layer}: k(Lambda xi) ~ sum_n w_n Lambda^(-2n-2) Delta^n delta(xi), "
@@ -100,5 +106,9 @@ class MomentExpansion(RichDisplay):
 
 @lru_cache(maxsize=64)
 def moment_expansion(layer: LayerKernel, order: int) -> MomentExpansion:
-    """The moment asymptotic expansion (2.14)/(2.22) of ``k(Lambda xi)`` through n = ``order``."""
-    return MomentExpansion(layer, _check_order(order, "order"))
+    """The moment asymptotic expansion (2.14)/(2.22) of ``k(Lambda xi)`` through n = ``order``.
+
+    ``order`` is bounded by the layer's coefficient order limit
+    (:data:`thinlayer.layers.coefficients.ORDER_LIMITS`; 30 for a symbolic nu, 2.9 s), checked here.
+    """
+    return MomentExpansion(layer, check_coefficient_order(layer, _check_order(order, "order")))

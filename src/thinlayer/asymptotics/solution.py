@@ -11,16 +11,31 @@ and Poisson ratio ``nu`` indented by ``delta0`` (or pressed by a force ``P``):
 
 Orders of accuracy, in the contact half-width ``a = 2|omega_0|/|Gamma_0|`` (the radius for a
 circle): force ``O((H/a)^3)`` relative, contact area ``O((H/a)^2)``, composite pressure ``O(H/a)``
-uniformly (inner terms alone: ``O((H/a)^{2K})`` away from the edge).
+uniformly (inner terms alone: ``O((H/a)^{2K})`` away from the edge).  The constants of these orders
+grow like ``m_1 ~ 1/(3 (1 - 2 nu))`` as nu -> 1/2, so every solution carries an error estimate
+(:attr:`ContactSolution.error_estimate`, from
+:func:`thinlayer.asymptotics.force_law.error_estimate`, whose docstring derives its form from the
+structure of the expansion: powers of ``kappa^2 = |P1/P0| + (1 + h^*^2)(H/a)^2``, checked against the
+direct solver).
+
+Validity: :func:`solve` refuses, with a one-line :class:`ValidityError` naming the quantity, its
+estimate, the tolerance and the model that would hold, when an estimate exceeds ``tol`` (default 5 %)
+or a result would be unphysical (``P <= 0``, area ``<= 0``, a non-finite force, area or pressure).  The
+force is computed per unit ``mu`` and scaled at the end, so it overflows only when the true force
+exceeds the double range (then the error says so).
 """
 from __future__ import annotations
 
+import math
+import numbers
+import sys
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cached_property, lru_cache
 from typing import Any, ClassVar
 
 import mpmath
+import numpy as np
 import sympy as sp
 
 from .._checks import parse_nu
@@ -28,9 +43,35 @@ from .._checks import positive as _positive
 from ..layers.kernels import LayerKernel
 from ..punch import Punch, PunchError
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
-from .force_law import ORDERS, ForceLaw, ForceValues, force_law
+from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, force_law
 
-__all__ = ["ContactSolution", "solve", "MAX_FORCE_ORDER"]
+__all__ = ["ContactSolution", "ValidityError", "solve", "MAX_FORCE_ORDER", "DEFAULT_TOL"]
+
+#: default tolerance of :func:`solve` on the relative error estimates
+DEFAULT_TOL = 0.05
+
+
+class ValidityError(ValueError):
+    """An asymptotic result outside the model's validity (or unphysical); the message is one line.
+
+    Attributes
+    ----------
+    quantity : str
+        ``"force"``, ``"contact_area"`` or ``"pressure"``.
+    estimate : float
+        The relative error estimate of that quantity (``inf`` when not available).
+    tol : float
+        The tolerance it was compared with.
+    model : str
+        The model or solver that would hold there.
+    value : float
+        The asymptotic value that was refused (``nan`` when there is none).
+    """
+
+    def __init__(self, message: str, quantity: str = "", estimate: float = math.inf, tol: float = math.nan,
+                 model: str = "", value: float = math.nan):
+        super().__init__(message)
+        self.quantity, self.estimate, self.tol, self.model, self.value = quantity, estimate, tol, model, value
 
 #: the force and area laws are derived to their first correction in H
 MAX_FORCE_ORDER = 1
@@ -99,6 +140,11 @@ class ContactSolution:
         Number of inner terms in the composite pressure.
     boundary_layer : str
         ``"exact"`` or ``"alexandrov"``: which boundary layer :attr:`pressure` uses.
+    error_estimate : dict
+        ``{"force": E_P, "contact_area": E_A}``: relative error estimates of :attr:`force` and
+        :attr:`contact_area` (:func:`thinlayer.asymptotics.force_law.error_estimate`).
+    tol : float
+        The tolerance the estimates were accepted with.
     """
 
     #: the paper's equation this result reproduces
@@ -117,6 +163,8 @@ class ContactSolution:
     terms: int = 2
     boundary_layer: str = "exact"
     _contour: Any = field(default=None, repr=False)
+    error_estimate: dict = field(default_factory=dict)
+    tol: float = DEFAULT_TOL
 
     # ---- the numbers -------------------------------------------------------------------------
     @property
@@ -185,8 +233,17 @@ class ContactSolution:
                                   self.boundary_layer, nu=self.nu)
 
     def pressure(self, x1: Any, x2: Any):
-        """Composite contact pressure ``p_c(x1, x2)`` (vectorised numpy)."""
-        return self.composite(x1, x2)
+        """Composite contact pressure ``p_c(x1, x2)`` (vectorised numpy); :class:`ValidityError` if not finite."""
+        with np.errstate(over="ignore", invalid="ignore"):
+            p = self.composite(x1, x2)
+        bad = ~np.isfinite(np.asarray(p, dtype=float))
+        if np.any(bad):
+            raise ValidityError(
+                f"solve(): the composite pressure is not finite at {int(bad.sum())} of {bad.size} points "
+                f"(mu = {self.mu:.3g}, H/a = {self.H_over_a:.3g}: beyond the double range); "
+                f"express mu in a larger unit of stress (smaller numbers) or use {_reference_model(self.punch)}",
+                "pressure")
+        return p
 
     def lambdify(self):
         """The vectorised pressure function ``(x1, x2) -> p_c``."""
@@ -204,9 +261,9 @@ class ContactSolution:
             rf"\Phi = {sp.latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
             rf"\quad H = {self.H:.6g},\quad \mu = {self.mu:.6g},\quad H/a = {self.H_over_a:.4g}",
             rf"P = {v.P0:.8g} {'-' if v.P1 < 0 else '+'} {abs(v.P1):.8g} = {v.force:.8g}"
-            rf"\ \left(\pm {v.P0 * self.H_over_a**3:.2g}\right) \tag{{1.8}}",
-            rf"|\omega| = {v.area0:.8g} - {self.edge_shift:.8g} \cdot {self.H:.6g} \cdot {v.perimeter:.8g}"
-            rf" = {v.area:.8g}\ \left(\pm {v.area0 * self.H_over_a**2:.2g}\right) \tag{{3.25}}",
+            rf"\ \left(\pm {self._abs_estimate('force'):.2g}\right) \tag{{1.8}}",
+            rf"|\omega| = {v.area0:.8g} - {v.edge_shift:.8g} \cdot {self.H:.6g} \cdot {v.perimeter:.8g}"
+            rf" = {v.area:.8g}\ \left(\pm {self._abs_estimate('contact_area'):.2g}\right) \tag{{3.25}}",
             rf"h^* = {self.edge_shift:.10g}\ (\text{{exact}}),\quad \tilde h^* = {self.edge_shift_alexandrov:.10g}"
             r"\ (\text{Alexandrov}) \tag{3.25}",
         ]
@@ -223,10 +280,18 @@ class ContactSolution:
             f"nu={self.nu:.6g}{', frictionless base' if self.layer.base == 'frictionless' else ''}; "
             f"H/a={self.H_over_a:.3g})\n"
             f"  force        P = {v.force:.8g}  (leading {v.P0:.8g}, correction {v.P1:+.6g}; "
-            f"remainder ~{v.P0 * self.H_over_a**3:.1g})\n"
-            f"  contact area   = {v.area:.8g}  (leading {v.area0:.8g}; remainder ~{v.area0 * self.H_over_a**2:.1g})\n"
+            f"error estimate {self._pct('force')})\n"
+            f"  contact area   = {v.area:.8g}  (leading {v.area0:.8g}; error estimate {self._pct('contact_area')})\n"
             f"  edge shift h*  = {self.edge_shift:.10g} exact, {self.edge_shift_alexandrov:.10g} Alexandrov"
         )
+
+    def _abs_estimate(self, key: str) -> float:
+        value = self.force if key == "force" else self.contact_area
+        return self.error_estimate.get(key, math.nan) * value
+
+    def _pct(self, key: str) -> str:
+        e = self.error_estimate.get(key, math.nan)
+        return f"{100 * e:.2g} % = +-{self._abs_estimate(key):.2g}"
 
     def _repr_latex_(self) -> str:
         from ..display import display_math
@@ -236,7 +301,7 @@ class ContactSolution:
 
 def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,
           force: Any = None, parameters: dict | None = None, order: int = 1, terms: int = 2,
-          boundary_layer: str = "exact", nu: Any = None) -> ContactSolution:
+          boundary_layer: str = "exact", nu: Any = None, tol: Any = DEFAULT_TOL) -> ContactSolution:
     r"""Contact solution of a thin bonded layer under a rigid polynomial punch.
 
     Parameters
@@ -266,6 +331,21 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         Poisson ratio for ``vartheta = mu/(1 - nu)`` when the kernel does not fix it
         (``FrictionlessLayer``; its ``m_1 = 0``, so the force has no correction of relative order
         ``(H/a)^2`` and the remainder is ``O((H/a)^3)``).
+    tol : Any
+        Largest accepted relative error estimate of the force and of the contact area (default 0.05;
+        ``math.inf`` accepts any estimate but still refuses unphysical results).
+
+    Returns
+    -------
+    ContactSolution
+        With ``error_estimate = {"force": ..., "contact_area": ...}`` (relative).
+
+    Raises
+    ------
+    ValidityError
+        (a ``ValueError``) when an error estimate exceeds ``tol`` or a result would be unphysical
+        (``P <= 0``, area ``<= 0``, non-finite or beyond the double range); the one-line message names
+        the quantity, the estimate, ``tol`` and the model that would hold.
 
     Examples
     --------
@@ -275,6 +355,12 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     (0.122071, 0.145193)
     >>> round(sol.force / sol.force_leading - 1, 6)      # -2 m1 H^2/(R delta0), m1 = 1/14
     -0.001429
+    >>> sol.error_estimate["force"] < 2e-3      # 2 kappa^3 (1 + kappa), kappa^2 = |P1/P0| + (1 + h*^2)(H/a)^2
+    True
+    >>> solve(BondedLayer(0.49), Punch.paraboloid(10), delta0=0.1, H=0.5)   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    thinlayer.asymptotics.solution.ValidityError: solve(): the force error estimate ... exceeds tol = 5 % ...
     """
     layer, nu_value = _check_layer(layer, nu)
     if boundary_layer not in BOUNDARY_LAYERS:
@@ -292,12 +378,22 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         raise TypeError("solve() needs the layer thickness H")
     HH = _positive(H, "H")
     mm = _positive(mu, "mu")
+    tol_v = _check_tol(tol)
     pn = _numeric_punch(punch, parameters)
     law = force_law(layer, pn)
     if (delta0 is None) == (force is None):
         raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     if force is not None:
-        d0 = law.indentation(force, HH, mm, nu=nu_value, order=order)
+        Pt = _positive(force, "force")
+        per_mu = Pt / mm  # the law is linear in mu: solve it per unit mu
+        if not (math.isfinite(per_mu) and per_mu > 0):
+            raise ValidityError(f"solve(): force/mu = {Pt:.3g}/{mm:.3g} is beyond the double range; "
+                                "express force and mu in other units", "force")
+        try:
+            d0 = law.indentation(per_mu, HH, 1.0, nu=nu_value, order=order)
+        except (OverflowError, ZeroDivisionError) as exc:
+            raise ValidityError(f"solve(): the indentation for force = {Pt:.3g} is beyond the double range "
+                                f"({exc}); express the lengths in other units", "force") from None
     else:
         d0 = _positive(delta0, "delta0")
     contour = None
@@ -308,10 +404,115 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     else:
         _check_contact(law, d0)
     h_ex, h_al = _edge_shifts(layer.edge_shift_key)
-    vals = law.evaluate(d0, HH, mm, edge_shift=h_ex, contour=contour, nu=nu_value)
-    if order == 0:
-        vals = ForceValues(vals.delta0, vals.H, vals.P0, 0.0, vals.area0, vals.perimeter, 0.0, vals.V, vals.J)
-    return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour)
+    try:  # per unit mu (P is linear in mu): no overflow where the true force is finite
+        vals = law.evaluate(d0, HH, 1.0, edge_shift=h_ex, contour=contour, nu=nu_value)
+        if not (vals.area0 > 0 and vals.perimeter > 0 and math.isfinite(vals.half_width)):
+            raise ZeroDivisionError(f"|omega_0| = {vals.area0:.3g}, |Gamma_0| = {vals.perimeter:.3g}")
+        est = error_estimate(vals, order=order)
+    except (OverflowError, ZeroDivisionError) as exc:
+        raise ValidityError(f"solve(): the contact geometry is beyond the double range at delta0 = {d0:.3g}, "
+                            f"H = {HH:.3g} ({exc}); express the lengths in other units", "force") from None
+    _check_overflow(vals, mm)
+    vals = _scaled(vals, mm, order)
+    _check_validity(layer, pn, nu_value, vals, est, tol_v, mm)
+    return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour,
+                           est, tol_v)
+
+
+def _check_tol(tol: Any) -> float:
+    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not float(tol) > 0:
+        raise ValueError(f"tol must be a positive number (the largest accepted relative error estimate, "
+                         f"e.g. 0.05; math.inf accepts any), got {tol!r}")
+    return float(tol)
+
+
+def _scaled(vals: ForceValues, mu: float, order: int) -> ForceValues:
+    """The values per unit mu times mu (the leading terms alone for ``order == 0``)."""
+    P0 = vals.P0 * mu
+    P1 = vals.P1 * mu if order else 0.0
+    return ForceValues(vals.delta0, vals.H, P0, P1, vals.area0, vals.perimeter,
+                       vals.edge_shift if order else 0.0, vals.V, vals.J)
+
+
+def _is_axisymmetric(punch: Punch) -> bool:
+    from .. import symbols as S
+
+    e = punch.expr
+    return sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0
+
+
+def _reference_model(punch: Punch) -> str:
+    if _is_axisymmetric(punch):
+        return "the direct numerical solver thinlayer.numerics.solve_axisymmetric"
+    return "the direct numerical solver thinlayer.numerics.solve_2d"
+
+
+def _validity_model(layer: LayerKernel, punch: Punch, vals: ForceValues) -> str:
+    """The model that would hold: the direct solver, and the two-term model where m_1 (nu -> 1/2) dominates."""
+    model = _reference_model(punch)
+    x = vals.H_over_a
+    e1 = abs(vals.P1 / vals.P0) if vals.P0 else 0.0
+    m1 = float(layer.m(1)) if layer.base == "bonded" else 0.0
+    if m1 > 0 and e1 > (1.0 + vals.edge_shift**2) * x * x:
+        lam2 = 1.0 / (m1 * x * x) if x > 0 else math.inf
+        where = ("thinlayer.asymptotics.incompressible.two_term_sphere" if _is_axisymmetric(punch)
+                 and sp.Poly(punch.expr, *sorted(punch.expr.free_symbols, key=str)).total_degree() == 2
+                 else "thinlayer.asymptotics.incompressible (regime(), solve_obstacle_grid)")
+        model += (f", or for nu near 1/2 the two-term/incompressible model {where} "
+                  f"(lambda^2 = (a/H)^2/m1 = {lam2:.3g})")
+    return model
+
+
+def _check_overflow(unit: ForceValues, mu: float) -> None:
+    """The force per unit mu is finite and positive, but times mu beyond the double range."""
+    P = unit.P0 + unit.P1
+    if math.isfinite(P) and P > 0 and 0 < P * mu < sys.float_info.min:
+        raise ValidityError(f"solve(): the force P = {P * mu:.3g} underflows double precision (below "
+                            f"{sys.float_info.min:.3g}) at mu = {mu:.3g}; express mu (and P) in a smaller unit "
+                            "of stress", "force", math.nan, math.nan, "other units")
+    if math.isfinite(unit.P0) and unit.P0 > 0 and P > 0 and not math.isfinite(unit.P0 * mu):
+        mag = math.log10(P) + math.log10(mu)
+        raise ValidityError(f"solve(): the force P = 1e{mag:.2f} overflows double precision (max 1.8e308) at "
+                            f"mu = {mu:.3g}; express mu (and P) in a larger unit of stress", "force",
+                            math.nan, math.nan, "other units")
+
+
+def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValues, est: dict, tol: float,
+                    mu: float) -> None:
+    """Raise :class:`ValidityError` for a non-finite or unphysical result or an estimate above ``tol``."""
+    x = vals.H_over_a
+    where = f"nu = {nu:.4g}, H/a = {x:.3g}"
+    for name, q in (("force", vals.force), ("contact_area", vals.area), ("perimeter", vals.perimeter)):
+        if not math.isfinite(q):
+            raise ValidityError(f"solve(): the {name.replace('_', ' ')} is not finite ({q}) at {where}; "
+                                f"use {_reference_model(punch)} or other units",
+                                name, est.get(name, math.inf), tol, _reference_model(punch))
+    model = _validity_model(layer, punch, vals)
+    for key in ("force", "contact_area"):
+        e = est[key]
+        if not e <= tol:
+            value = vals.force if key == "force" else vals.area
+            sign = f"; the asymptotic value {value:.4g} is unphysical" if value <= 0 else ""
+            raise ValidityError(
+                f"solve(): the {key.replace('_', ' ')} error estimate {_percent(e)} exceeds tol = {_percent(tol)} "
+                f"({where}, |P1/P0| = {abs(vals.P1 / vals.P0) if vals.P0 else math.inf:.3g}: outside the "
+                f"thin-layer expansion{sign}); use {model}", key, e, tol, model, value)
+    if vals.force <= 0 and vals.P0 > 0 and mu > 0:
+        raise ValidityError(f"solve(): the asymptotic force P = {vals.force:.4g} <= 0 is unphysical ({where}; "
+                            f"estimate {_percent(est['force'])}); use {model}", "force", est["force"], tol, model,
+                            vals.force)
+    if vals.force <= 0:
+        raise ValidityError(f"solve(): the force P = {vals.force:.4g} underflows or is not positive at mu = "
+                            f"{mu:.3g}; express mu (and P) in a smaller unit of stress", "force",
+                            est["force"], tol, "other units")
+    if vals.area <= 0:
+        raise ValidityError(f"solve(): the asymptotic contact area {vals.area:.4g} <= 0 is unphysical ({where}; "
+                            f"estimate {_percent(est['contact_area'])}); use {model}", "contact_area",
+                            est["contact_area"], tol, model, vals.area)
+
+
+def _percent(e: float) -> str:
+    return "inf" if math.isinf(e) else f"{100 * e:.3g} %"
 
 
 def _check_contact(law: ForceLaw, d0: float) -> None:

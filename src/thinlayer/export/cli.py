@@ -2,12 +2,19 @@
 
 Every subcommand prints readable text by default, ``--json`` for machine-readable output (keys
 documented in each subcommand's ``--help``) and, where a formula is the answer, ``--latex``.
-Exit codes: 0 success, 2 bad input (a one-line reason on stderr), 1 any other failure.
+Exit codes: 0 success, 2 bad input (a one-line reason on stderr), 1 any other failure (one line too),
+130 interrupted by Ctrl-C, 143 terminated by SIGTERM (temporary folders are removed on both), 141
+when the reader of the output went away (``thinlayer errata --json | head``: no message).  No
+traceback is ever printed, and a result that is not finite (or a force or area that is not positive)
+is an error, never a JSON number such as ``Infinity``.
 """
 from __future__ import annotations
 
 import argparse
 import json
+import math
+import os
+import signal
 import sys
 from pathlib import Path
 from typing import Any
@@ -17,10 +24,58 @@ import sympy as sp
 from ..parse import as_expr
 
 EXIT_OK, EXIT_FAILURE, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_INTERRUPTED, EXIT_BROKEN_PIPE, EXIT_TERMINATED = 130, 141, 143
 
 
 class BadInput(ValueError):
     """Raised for invalid command-line values (exit code 2)."""
+
+
+class Terminated(BaseException):
+    """SIGTERM arrived: unwinds like Ctrl-C so that ``finally`` blocks remove temporary folders."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line on stderr (exit code 2), without the usage block."""
+
+    def error(self, message: str):
+        self.exit(EXIT_BAD_INPUT, f"{self.prog}: {message.splitlines()[0]} (see {self.prog} --help)\n")
+
+
+def _finite(text: str) -> float:
+    """An argparse type: a finite float."""
+    try:
+        val = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not math.isfinite(val):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
+    return val
+
+
+def _order(text: str) -> int:
+    """An argparse type: an integer."""
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+
+
+def _nonfinite(obj: Any, path: str = "") -> str | None:
+    """The key path of the first non-finite number in a JSON-like object, or None."""
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return path or "value"
+    if isinstance(obj, dict):
+        items: Any = obj.items()
+    elif isinstance(obj, (list, tuple)):
+        items = enumerate(obj)
+    else:
+        return None
+    for k, v in items:
+        bad = _nonfinite(v, f"{path}.{k}" if path else str(k))
+        if bad:
+            return bad
+    return None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -39,7 +94,7 @@ def _layer(nu: str, model: str = "bonded"):
         raise BadInput(f"--nu {nu!r}: use 'symbolic', an exact fraction such as 3/10, or a number") from exc
     try:
         return BondedLayer(val)
-    except (ValueError, TypeError) as exc:
+    except (ValueError, TypeError, ArithmeticError) as exc:
         raise BadInput(f"--nu {nu}: {exc}") from exc
 
 
@@ -64,9 +119,12 @@ def _params(items: list[str] | None) -> dict[str, float]:
             raise BadInput(f"--param {it!r}: write NAME=VALUE, e.g. --param R_1=4")
         k, v = it.split("=", 1)
         try:
-            out[k.strip()] = float(v)
+            val = float(v)
         except ValueError as exc:
             raise BadInput(f"--param {it!r}: {v!r} is not a number") from exc
+        if not math.isfinite(val):
+            raise BadInput(f"--param {it!r}: {v!r} is not a finite number")
+        out[k.strip()] = val
     return out
 
 
@@ -85,7 +143,11 @@ def _expr_json(e: Any) -> dict:
 
 def _print(obj: Any, as_json: bool) -> None:
     if as_json:
-        print(json.dumps(obj, indent=2))
+        bad = _nonfinite(obj)
+        if bad:
+            raise BadInput(f"the result {bad} is not a finite number: the inputs are outside the range this "
+                           "model can answer")
+        print(json.dumps(obj, indent=2, allow_nan=False))
     else:
         print(obj)
 
@@ -176,7 +238,8 @@ def _cmd_solve(args) -> int:
     if (args.delta0 is None) == (args.force is None):
         raise BadInput("give exactly one of --delta0 (indentation) and --force (total force P)")
     sol = solve(layer, punch, delta0=args.delta0, force=args.force, H=args.H, mu=args.mu,
-                parameters=_params(args.param), boundary_layer=args.boundary_layer)
+                parameters=_params(args.param), boundary_layer=args.boundary_layer, tol=args.tol)
+    _check_solution(sol)
     if args.latex:
         print(sol.latex())
         return EXIT_OK
@@ -186,13 +249,39 @@ def _cmd_solve(args) -> int:
            "force": v.force, "force_leading": v.P0, "force_correction": v.P1,
            "contact_area": v.area, "contact_area_leading": v.area0, "perimeter": v.perimeter,
            "edge_shift_exact": sol.edge_shift, "edge_shift_alexandrov": sol.edge_shift_alexandrov,
-           "H_over_a": sol.H_over_a,
+           "H_over_a": sol.H_over_a, "error_estimate": dict(sol.error_estimate), "tol": args.tol,
            "remainder": {k: {"statement": t, "relative_size": e} for k, (t, e) in acc.items()}}
     if args.json:
         _print(out, True)
     else:
         print(sol)
     return EXIT_OK
+
+
+def _tolerance(text: str) -> float:
+    """``--tol``: a relative tolerance in (0, 1]."""
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--tol must be a number in (0, 1], got {text!r}") from None
+    if not (0 < v <= 1):
+        raise argparse.ArgumentTypeError(f"--tol must be a number in (0, 1], got {text!r}")
+    return v
+
+
+def _check_solution(sol: Any) -> None:
+    """A force, contact area, perimeter and indentation that are finite and positive, or :class:`BadInput`."""
+    v = sol.values
+    for name, val in (("force", v.force), ("leading force", v.P0), ("contact area", v.area),
+                      ("leading contact area", v.area0), ("perimeter", v.perimeter), ("delta0", sol.delta0),
+                      ("H/a", sol.H_over_a)):
+        try:
+            x = float(val)
+        except (TypeError, ValueError, OverflowError):
+            x = math.nan
+        if not (math.isfinite(x) and x > 0):
+            raise BadInput(f"the {name} came out as {val}: not a finite positive number, so these inputs are "
+                           "outside the range of the asymptotic model (check --H, --delta0, --mu and --param)")
 
 
 def _cmd_errata(args) -> int:
@@ -256,14 +345,16 @@ def _cmd_codegen(args) -> int:
             for c in codes:
                 print(c.source)
         return EXIT_OK
+    from ..validation.output import output_lock, refuse_existing
+
+    out_dir = Path(args.out)
+    targets = [out_dir / fname for c in codes for fname in c.files]
+    refuse_existing(targets, args.force)  # every file checked before any is written
     written = []
-    for c in codes:  # check every file before writing any
-        for fname in c.files:
-            target = Path(args.out) / fname
-            if target.exists() and not args.force:
-                raise FileExistsError(f"{target} exists; pass --force to overwrite it")
-    for c in codes:
-        written += [str(p) for p in c.write(args.out, force=args.force)]
+    with output_lock(out_dir, codes[0].function_name):
+        refuse_existing(targets, args.force)
+        for c in codes:
+            written += [str(p) for p in c.write(out_dir, force=True)]
     if args.json:
         _print({"files": written}, True)
     else:
@@ -282,8 +373,12 @@ def _add_report(sub: Any, fmt: type) -> None:
                        epilog="example:\n  thinlayer report derivations/sphere.toml --out build --pdf")
     r.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml")
     r.add_argument("--out", default="build", help="output folder, created if missing (default: build)")
-    r.add_argument("--pdf", action="store_true", help="also compile the report (latexmk or pdflatex)")
-    r.add_argument("--force", action="store_true", help="overwrite a .tex file that thinlayer did not write")
+    r.add_argument("--pdf", action="store_true",
+                   help="also compile the report (pdflatex; shell escape off, reading and writing only in its "
+                        "temporary folder)")
+    r.add_argument("--force", action="store_true",
+                   help="overwrite existing files: a .tex that was not written by thinlayer or was edited since, "
+                        "a PDF, a log, figures (default: refuse, before anything is written)")
     _add_output_args(r, latex=False)
     r.set_defaults(func=_cmd_report)
 
@@ -298,7 +393,7 @@ def _add_coefficients(sub: Any, fmt: type) -> None:
                               "  thinlayer coefficients --order 2 --latex     # symbolic nu")
     c.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction like 3/10, or a number")
     c.add_argument("--model", choices=("bonded", "frictionless"), default="bonded", help="base of the layer")
-    c.add_argument("--order", type=int, default=3, help="number of coefficients m_1..m_order (default 3)")
+    c.add_argument("--order", type=_order, default=3, help="number of coefficients m_1..m_order (default 3)")
     _add_output_args(c)
     c.set_defaults(func=_cmd_coefficients)
 
@@ -312,7 +407,7 @@ def _add_inner(sub: Any, fmt: type) -> None:
                               "  thinlayer inner --punch 'x_1**2/2 + x_2**4' --nu 3/10 --json")
     i.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction, or a number")
     i.add_argument("--model", choices=("bonded", "frictionless"), default="bonded", help="base of the layer")
-    i.add_argument("--order", type=int, default=None, help="number of terms (default: degree//2 + 1)")
+    i.add_argument("--order", type=_order, default=None, help="number of terms (default: degree//2 + 1)")
     _add_punch_args(i)
     _add_output_args(i)
     i.set_defaults(func=_cmd_inner)
@@ -323,16 +418,20 @@ def _add_solve(sub: Any, fmt: type) -> None:
                        description="Force, contact area and edge shift for numeric parameters (thinlayer.solve).\n"
                                    "JSON keys: nu, H, mu, delta0, force, force_leading, force_correction, "
                                    "contact_area,\ncontact_area_leading, perimeter, edge_shift_exact, "
-                                   "edge_shift_alexandrov, H_over_a,\nremainder ({force, contact_area, "
+                                   "edge_shift_alexandrov, H_over_a,\n"
+                                   "error_estimate ({force, contact_area}, relative), tol, remainder ({force, contact_area, "
                                    "pressure_interior, pressure_composite: {statement, relative_size}}).",
                        epilog="examples:\n  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 "
-                              "--H 0.5 --json\n  thinlayer solve --nu 0.3 --punch 'x_1**2/8 + x_2**2/2' "
+                              "--H 0.1 --json\n  thinlayer solve --nu 0.3 --punch 'x_1**2/8 + x_2**2/2' "
                               "--force 100 --H 0.05")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2): a number or an exact fraction")
-    s.add_argument("--H", type=float, required=True, help="layer thickness (> 0)")
-    s.add_argument("--mu", type=float, default=1.0, help="shear modulus (> 0, default 1)")
-    s.add_argument("--delta0", type=float, help="indentation (> 0)")
-    s.add_argument("--force", type=float, help="total force P instead of --delta0 (inverse problem)")
+    s.add_argument("--H", type=_finite, required=True, help="layer thickness (> 0)")
+    s.add_argument("--mu", type=_finite, default=1.0, help="shear modulus (> 0, default 1)")
+    s.add_argument("--delta0", type=_finite, help="indentation (> 0)")
+    s.add_argument("--force", type=_finite, help="total force P instead of --delta0 (inverse problem)")
+    s.add_argument("--tol", type=_tolerance, default=0.05,
+                   help="largest relative error estimate accepted (default 0.05); beyond it the answer is refused "
+                        "with the model that would hold")
     s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
                    help="boundary layer of the composite pressure (default exact)")
     _add_punch_args(s)
@@ -367,10 +466,10 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("--force", action="store_true", help="overwrite existing files in --out")
     g.add_argument("--name", help="function name (default from the result)")
     g.add_argument("--nu", default=None, help="Poisson ratio: 'symbolic' (default), a fraction or a number")
-    g.add_argument("--order", type=int, default=None, help="inner terms / number of coefficients")
-    g.add_argument("--delta0", type=float, help="indentation (composite)")
-    g.add_argument("--H", type=float, help="layer thickness (composite)")
-    g.add_argument("--mu", type=float, default=1.0, help="shear modulus (composite, default 1)")
+    g.add_argument("--order", type=_order, default=None, help="inner terms / number of coefficients")
+    g.add_argument("--delta0", type=_finite, help="indentation (composite)")
+    g.add_argument("--H", type=_finite, help="layer thickness (composite)")
+    g.add_argument("--mu", type=_finite, default=1.0, help="shear modulus (composite, default 1)")
     _add_punch_args(g)
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
@@ -388,7 +487,7 @@ def build_parser() -> argparse.ArgumentParser:
     from ..validation import add_cli as add_validate
 
     fmt = argparse.RawDescriptionHelpFormatter
-    ap = argparse.ArgumentParser(
+    ap = _Parser(
         prog="thinlayer", formatter_class=fmt,
         description="Symbolic asymptotics of a rigid punch pressed into a thin elastic layer.",
         epilog="examples:\n"
@@ -396,12 +495,27 @@ def build_parser() -> argparse.ArgumentParser:
                "  thinlayer coefficients --nu 3/10 --order 4 --json\n"
                "  thinlayer solve --nu 0.3 --kind elliptic_paraboloid --param R_1=4 --param R_2=1 "
                "--delta0 0.5 --H 0.05\n\n"
-               "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure")
+               "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure,\n"
+               "130 Ctrl-C, 143 SIGTERM, 141 output pipe closed")
     sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
     for add in (_add_report, _add_coefficients, _add_inner, _add_solve, _add_errata, _add_codegen):
         add(sub, fmt)
     add_validate(sub, fmt)
     return ap
+
+
+def _one_line(exc: BaseException) -> str:
+    text = str(exc).strip()
+    if isinstance(exc, OSError) and exc.strerror:
+        text = f"{exc.strerror}: {exc.filename}" if exc.filename else exc.strerror
+    if isinstance(exc, KeyError):
+        text = f"missing {text}"
+    line = text.splitlines()[0] if text else type(exc).__name__
+    return line if len(line) <= 500 else line[:480] + " ..."
+
+
+def _on_sigterm(signum, frame):  # pragma: no cover - exercised in a subprocess
+    raise Terminated()
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -415,23 +529,66 @@ def main(argv: list[str] | None = None) -> int:
     Returns
     -------
     int
-        0 success, 2 bad input (a one-line reason on stderr), 1 any other failure.
+        0 success, 2 bad input, 1 any other failure (each a one-line reason on stderr), 130 Ctrl-C,
+        143 SIGTERM, 141 closed output pipe.
     """
     ap = build_parser()
-    args = ap.parse_args(argv)
-    from ..punch import PunchError
-    from .derivation import DerivationFileError
-
     try:
-        return args.func(args)
-    except (BadInput, DerivationFileError, PunchError, FileExistsError, ValueError, TypeError,
-            NotImplementedError) as exc:
-        msg = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
-        print(f"thinlayer: {msg}", file=sys.stderr)
+        args = ap.parse_args(argv)
+    except SystemExit as exc:  # --help (0) or a one-line argparse error (2)
+        return exc.code if isinstance(exc.code, int) else EXIT_BAD_INPUT
+    old = None
+    if hasattr(signal, "SIGTERM"):
+        try:
+            old = signal.signal(signal.SIGTERM, _on_sigterm)
+        except ValueError:  # not the main thread: leave the handler alone
+            old = None
+    try:
+        code = args.func(args)
+        sys.stdout.flush()
+        return code
+    except BrokenPipeError:
+        _silence_stdout()
+        return EXIT_BROKEN_PIPE
+    except KeyboardInterrupt:
+        _err("interrupted (Ctrl-C); temporary files removed, nothing half-written")
+        return EXIT_INTERRUPTED
+    except Terminated:
+        _err("terminated (SIGTERM); temporary files removed, nothing half-written")
+        return EXIT_TERMINATED
+    except RecursionError as exc:
+        _err(f"the input nests too deeply ({_one_line(exc)})")
         return EXIT_BAD_INPUT
-    except RuntimeError as exc:
-        print(f"thinlayer: {exc}", file=sys.stderr)
+    except (ValueError, TypeError, ArithmeticError, NotImplementedError, KeyError, OSError) as exc:
+        _err(_one_line(exc))
+        return EXIT_BAD_INPUT
+    except MemoryError:
+        _err("out of memory: choose a smaller order, degree or grid")
         return EXIT_FAILURE
+    except Exception as exc:  # noqa: BLE001 - the last line of defence: one line, never a traceback
+        _err(f"{_one_line(exc)}" if isinstance(exc, RuntimeError) else
+             f"internal error ({type(exc).__name__}: {_one_line(exc)}); please report it")
+        return EXIT_FAILURE
+    finally:
+        if old is not None:
+            signal.signal(signal.SIGTERM, old)
+
+
+def _err(msg: str) -> None:
+    try:
+        print(f"thinlayer: {msg}", file=sys.stderr, flush=True)
+    except (BrokenPipeError, OSError):  # pragma: no cover - stderr gone too
+        pass
+
+
+def _silence_stdout() -> None:
+    """After a closed pipe: point stdout at /dev/null so that the flush at exit raises nothing."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError, AttributeError):  # pragma: no cover - stdout is no real file (tests)
+        pass
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -6,6 +6,7 @@ carries out the stages of the paper and collects their LaTeX into one document.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -23,7 +24,7 @@ from ..layers.coefficients import kernel_coefficients
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..layers.moments import kernel_moment
 from ..punch import Punch
-from .report import SEPARATOR
+from .report import SEPARATOR, ReportTextError, check_symbol_names, check_title
 
 
 class DerivationFileError(ValueError):
@@ -45,20 +46,79 @@ class Derivation:
     validation: dict | None = None
 
 
-_TOP_KEYS = {"derivation", "layer", "coefficients", "punch", "inner", "edge_shift", "contact", "validation"}
-_VALIDATION_KEYS = {"nu", "H_over_a", "shapes"}
+#: the schema: table -> {key: (python types, what is valid)}; any other key is an error
+SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
+    "derivation": {"name": ((str,), "a file-name-safe string (letters, digits, '-', '_')"),
+                   "title": ((str,), "a string")},
+    "layer": {"model": ((str,), "'bonded' or 'frictionless'"),
+              "nu": ((str, int, float), "'symbolic', an exact string like '3/10' or a number")},
+    "coefficients": {"order": ((int,), "an integer from 1 to 30")},
+    "punch": {"kind": ((str,), "a catalogue name"), "expr": ((str,), "a polynomial in x_1, x_2 as a string")},
+    "inner": {"order": ((int,), "a positive integer (number of terms)")},
+    "edge_shift": {"nu": ((list,), "a list of numbers in (-1, 1/2)")},
+    "contact": {"delta0": ((int, float), "a number > 0"), "force": ((int, float), "a number > 0"),
+                "H": ((int, float), "a number > 0"), "mu": ((int, float), "a number > 0"),
+                "nu": ((int, float), "a number in (-1, 1/2)"),
+                "parameters": ((dict,), "a table of numbers, e.g. {R_1 = 4, R_2 = 1}")},
+    "validation": {"nu": ((list,), "a list of Poisson ratios"), "H_over_a": ((list,), "a list of H/a values"),
+                   "shapes": ((list,), "a list of shape names")},
+}
+_TOP_KEYS = set(SCHEMA)
+_REQUIRED = ("derivation", "layer", "punch")
+#: the range of a dimensional number of [contact] (beyond it squares and cubes leave double precision)
+NUMBER_RANGE = (1e-30, 1e30)
+
+
+def _type_name(kinds: tuple[type, ...]) -> str:
+    names = {str: "a string", int: "an integer", float: "a number", list: "a list", dict: "a table"}
+    return " or ".join(dict.fromkeys(names[k] for k in kinds))
+
+
+def check_schema(data: dict) -> None:
+    """Every table and key of a derivation file known, every value of the right type.
+
+    Parameters
+    ----------
+    data : dict
+        The parsed TOML.
+
+    Raises
+    ------
+    DerivationFileError
+        naming the table, the key and the valid keys (or the expected type).
+    """
+    unknown = sorted(set(data) - _TOP_KEYS)
+    if unknown:
+        raise DerivationFileError(f"unknown table(s) {unknown}; valid tables are {sorted(_TOP_KEYS)}")
+    for t in _REQUIRED:
+        if t not in data:
+            raise DerivationFileError(f"the table [{t}] is required")
+    for table, keys in SCHEMA.items():
+        if table not in data:
+            continue
+        tab = data[table]
+        if not isinstance(tab, dict):
+            raise DerivationFileError(f"[{table}] must be a table with keys {sorted(keys)}, got {tab!r}")
+        bad = sorted(set(tab) - set(keys))
+        if bad:
+            raise DerivationFileError(f"[{table}] unknown key(s) {bad}; valid keys are {sorted(keys)}")
+        for key, (kinds, what) in keys.items():
+            if key in tab:
+                val = tab[key]
+                if isinstance(val, bool) or not isinstance(val, kinds):
+                    raise DerivationFileError(f"[{table}] {key} = {_short(val)} is invalid: expected {what} "
+                                              f"({_type_name(kinds)})")
+
+
+def _short(val: Any) -> str:
+    text = repr(val)
+    return text if len(text) <= 60 else text[:50] + " ..."
 
 
 def _validation_table(vt: Any) -> dict | None:
     """Validate ``[validation]``: a small study against the direct numerics for the report."""
     if vt is None:
         return None
-    if not isinstance(vt, dict):
-        raise DerivationFileError("[validation] must be a table with keys " + ", ".join(sorted(_VALIDATION_KEYS)))
-    unknown = set(vt) - _VALIDATION_KEYS
-    if unknown:
-        raise DerivationFileError(f"[validation] unknown key(s) {sorted(unknown)}; valid keys are "
-                                  f"{sorted(_VALIDATION_KEYS)}")
     from ..validation import check_nus, check_ratios, check_shapes
 
     checks = (("nu", lambda v: list(check_nus(v, "nu")), [0.3]),
@@ -68,35 +128,35 @@ def _validation_table(vt: Any) -> dict | None:
     for key, check, default in checks:
         try:
             out[key] = check(vt.get(key, default))
-        except (TypeError, ValueError) as exc:
-            raise DerivationFileError(f"[validation] {key} = {vt.get(key)!r}: {exc}") from exc
+        except (TypeError, ValueError, ArithmeticError) as exc:
+            raise DerivationFileError(f"[validation] {key} = {_short(vt.get(key))}: {exc}") from exc
     return out
 
 
-_CONTACT_KEYS = {"delta0", "H", "mu", "nu", "parameters", "force"}
+def _positive_number(table: dict, key: str, where: str) -> float:
+    """A finite number in :data:`NUMBER_RANGE` (a TOML value already of type int or float)."""
+    val = table[key]
+    lo, hi = NUMBER_RANGE
+    if not (isinstance(val, (int, float)) and lo <= abs(float(val)) <= hi and val > 0):
+        raise DerivationFileError(f"[{where}] {key} = {val!r} is invalid: expected a number > 0 from {lo:g} to {hi:g}")
+    return float(val)
 
 
-def _contact_table(ct: Any, layer: LayerKernel, punch: Punch) -> dict | None:
+def _contact_table(ct: Any, layer: LayerKernel, punch: Punch, layer_nu: Any) -> dict | None:
     """Validate ``[contact]``: numeric parameters for :func:`thinlayer.solve`."""
     if ct is None:
         return None
-    if not isinstance(ct, dict):
-        raise DerivationFileError("[contact] must be a table with keys " + ", ".join(sorted(_CONTACT_KEYS)))
-    unknown = set(ct) - _CONTACT_KEYS
-    if unknown:
-        raise DerivationFileError(f"[contact] unknown key(s) {sorted(unknown)}; valid keys are {sorted(_CONTACT_KEYS)}")
     if ("delta0" in ct) == ("force" in ct):
         raise DerivationFileError("[contact] needs exactly one of 'delta0' (indentation) or 'force' (inverse problem)")
-    out = {}
-    for key in ("delta0", "force", "H", "mu"):
-        if key in ct or key == "H":
-            val = _need(ct, key, "contact", (int, float), "a number > 0")
-            if not val > 0:
-                raise DerivationFileError(f"[contact] {key} = {val!r} is invalid: expected a number > 0")
-            out[key] = float(val)
+    if "H" not in ct:
+        raise DerivationFileError("[contact] is missing the key 'H' (a number > 0)")
+    out = {key: _positive_number(ct, key, "contact") for key in ("delta0", "force", "H", "mu") if key in ct}
     nu = ct.get("nu")
+    if nu is not None and layer_nu is not None:
+        raise DerivationFileError(f"[contact] nu = {nu!r} contradicts [layer] nu = {layer_nu!r}: give nu in one "
+                                  "place ([layer] for the whole derivation, or [contact] with [layer] nu = 'symbolic')")
     if layer.base == "frictionless":
-        if not isinstance(nu, (int, float)) or isinstance(nu, bool) or not -1 < nu < 0.5:
+        if not isinstance(nu, (int, float)) or not -1 < nu < 0.5:
             raise DerivationFileError(f"[contact] nu = {nu!r}: the frictionless base needs a number in (-1, 1/2) "
                                       "for vartheta = mu/(1 - nu)")
         out["nu"] = float(nu)
@@ -106,12 +166,14 @@ def _contact_table(ct: Any, layer: LayerKernel, punch: Punch) -> dict | None:
     if nu is not None and _compressible_bonded(layer):
         try:
             out["layer"] = BondedLayer(nu)
-        except (ValueError, TypeError) as exc:
+        except (ValueError, TypeError, ArithmeticError) as exc:
             raise DerivationFileError(f"[contact] nu = {nu!r}: {exc}") from exc
     pars = ct.get("parameters", {})
-    if not isinstance(pars, dict) or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
-                                             for v in pars.values()):
-        raise DerivationFileError(f"[contact] parameters = {pars!r}: a table of numbers, e.g. {{R_1 = 4, R_2 = 1}}")
+    for k in pars:
+        if isinstance(pars[k], bool) or not isinstance(pars[k], (int, float)):
+            raise DerivationFileError(f"[contact] parameters.{k} = {_short(pars[k])} is invalid: expected a "
+                                      "number; parameters is a table of numbers, e.g. {R_1 = 4, R_2 = 1}")
+        _positive_number(pars, k, "contact.parameters")
     names = {q.name for q in punch.parameters}
     bad = set(pars) - names
     if bad:
@@ -144,50 +206,68 @@ def _layer_table(lay: dict) -> LayerKernel:
     if model not in ("bonded", "frictionless"):
         raise DerivationFileError(f"[layer] model = {model!r}: valid models are 'bonded' and 'frictionless'")
     if model == "frictionless":
+        if "nu" in lay:
+            raise DerivationFileError(f"[layer] nu = {lay['nu']!r} contradicts model = 'frictionless' (its kernel does "
+                                      "not depend on nu): remove it; [contact] nu sets vartheta = mu/(1 - nu)")
         return FrictionlessLayer()
     nu = lay.get("nu", "symbolic")
     if nu == "symbolic":
         return BondedLayer()
-    if isinstance(nu, (int, float, str)) and not isinstance(nu, bool):
-        try:
-            return BondedLayer(nu)
-        except (ValueError, TypeError) as exc:
-            raise DerivationFileError(f"[layer] nu = {nu!r}: {exc}") from exc
-    raise DerivationFileError(f"[layer] nu = {nu!r}: use 'symbolic', an exact string like '3/10' or a number")
+    try:
+        return BondedLayer(nu)
+    except (ValueError, TypeError, ArithmeticError) as exc:
+        raise DerivationFileError(f"[layer] nu = {_short(nu)}: {exc}") from exc
+
+
+_KINDS = {"elliptic_paraboloid": Punch.elliptic_paraboloid, "paraboloid": Punch.paraboloid,
+          "fourth_degree": Punch.fourth_degree}
 
 
 def _punch_table(pu: dict) -> Punch:
-    """The punch of ``[punch]``: a catalogue ``kind`` or a polynomial ``expr``."""
+    """The punch of ``[punch]``: a catalogue ``kind`` or a polynomial ``expr``; its symbol names checked."""
     if ("kind" in pu) == ("expr" in pu):
         raise DerivationFileError("[punch] needs exactly one of 'kind' (a catalogue punch) or 'expr' (a polynomial)")
+    if "kind" in pu:
+        if pu["kind"] not in _KINDS:
+            raise DerivationFileError(f"[punch] kind = {_short(pu['kind'])}: valid kinds are {sorted(_KINDS)}")
+        punch = _KINDS[pu["kind"]]()
+    else:
+        try:
+            punch = Punch(pu["expr"])
+        except (ValueError, TypeError, ArithmeticError, RecursionError) as exc:
+            raise DerivationFileError(f"[punch]: {exc}") from exc
     try:
-        if "kind" in pu:
-            kinds = {"elliptic_paraboloid": Punch.elliptic_paraboloid, "paraboloid": Punch.paraboloid,
-                     "fourth_degree": Punch.fourth_degree}
-            if pu["kind"] not in kinds:
-                raise DerivationFileError(f"[punch] kind = {pu['kind']!r}: valid kinds are {sorted(kinds)}")
-            return kinds[pu["kind"]]()
-        return Punch(_need(pu, "expr", "punch", (str,), "a polynomial in x_1, x_2 as a string"))
-    except ValueError as exc:
-        if isinstance(exc, DerivationFileError):
-            raise
-        raise DerivationFileError(f"[punch]: {exc}") from exc
+        check_symbol_names((q.name for q in punch.expr.free_symbols), "[punch]")
+    except ReportTextError as exc:
+        raise DerivationFileError(str(exc)) from exc
+    return punch
 
 
 def _read_tables(path: Path) -> dict:
-    """The TOML tables of a derivation file, with the required ones present and no unknown one."""
-    if not path.is_file():
-        raise DerivationFileError(f"derivation file {path} does not exist")
+    """The TOML of a derivation file: a missing file, a folder, binary or non-UTF-8 content is one clear error."""
+    if path.is_dir():
+        raise DerivationFileError("is a folder, not a derivation file (give a .toml file, e.g. "
+                                  "derivations/sphere.toml)")
+    if not path.exists():
+        raise DerivationFileError("does not exist")
     try:
-        data = tomllib.loads(path.read_text())
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise DerivationFileError(f"cannot be read: {exc.strerror or exc}") from exc
+    if len(raw) > 1_000_000:
+        raise DerivationFileError(f"is {len(raw)} bytes long; a derivation file is at most 1 MB")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise DerivationFileError(f"is not a UTF-8 text file (byte {exc.start}); a derivation file is TOML "
+                                  "text") from exc
+    if "\x00" in text:
+        raise DerivationFileError("is a binary file (it holds NUL bytes); a derivation file is TOML text")
+    try:
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise DerivationFileError(f"{path} is not valid TOML: {exc}") from exc
-    unknown = set(data) - _TOP_KEYS
-    if unknown:
-        raise DerivationFileError(f"{path}: unknown table(s) {sorted(unknown)}; valid tables are {sorted(_TOP_KEYS)}")
-    for t in ("derivation", "layer", "punch"):
-        if not isinstance(data.get(t), dict):
-            raise DerivationFileError(f"{path}: the table [{t}] is required")
+        raise DerivationFileError(f"is not valid TOML: {str(exc).splitlines()[0]}") from exc
+    check_schema(data)
     return data
 
 
@@ -198,7 +278,8 @@ def load_derivation(path: str | Path) -> Derivation:
     ----------
     path : str or Path
         A TOML file with the tables ``[derivation]``, ``[layer]``, ``[punch]`` and optionally
-        ``[coefficients]``, ``[inner]``, ``[edge_shift]``, ``[contact]``, ``[validation]``.
+        ``[coefficients]``, ``[inner]``, ``[edge_shift]``, ``[contact]``, ``[validation]``;
+        the keys of each are those of :data:`SCHEMA`.
 
     Returns
     -------
@@ -208,34 +289,46 @@ def load_derivation(path: str | Path) -> Derivation:
     Raises
     ------
     DerivationFileError
-        naming the key and what is valid.
+        one line starting with the file's name, naming the table, the key and what is valid
+        (unknown keys, wrong types, values out of range, contradictions between tables).
     """
     path = Path(path)
+    try:
+        return _load(path)
+    except DerivationFileError as exc:
+        raise DerivationFileError(f"{path}: {exc}") from exc
+
+
+def _load(path: Path) -> Derivation:
     data = _read_tables(path)
     d = data["derivation"]
     name = _need(d, "name", "derivation", (str,), "a file-name-safe string")
-    if not name.replace("_", "").replace("-", "").isalnum():
-        raise DerivationFileError(f"[derivation] name = {name!r}: use letters, digits, '-' and '_' only")
+    if not re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_-]{0,99}", name):
+        raise DerivationFileError(f"[derivation] name = {_short(name)}: use ASCII letters, digits, '-' and '_' "
+                                  "only, starting with a letter or digit (at most 100 characters)")
     title = d.get("title", name)
+    try:
+        check_title(title, "[derivation] title")
+    except ReportTextError as exc:
+        raise DerivationFileError(str(exc)) from exc
     layer = _layer_table(data["layer"])
-    co = data.get("coefficients", {})
-    corder = co.get("order", 3)
-    if not isinstance(corder, int) or isinstance(corder, bool) or not 1 <= corder <= 30:
+    corder = data.get("coefficients", {}).get("order", 3)
+    if not 1 <= corder <= 30:
         raise DerivationFileError(f"[coefficients] order = {corder!r}: an integer from 1 to 30")
     punch = _punch_table(data["punch"])
-    inner = data.get("inner", {})
-    iorder = inner.get("order")
-    if iorder is not None and (not isinstance(iorder, int) or isinstance(iorder, bool) or iorder < 1):
-        raise DerivationFileError(f"[inner] order = {iorder!r}: a positive integer (number of terms)")
+    iorder = data.get("inner", {}).get("order")
+    if iorder is not None and not 1 <= iorder <= 30:
+        raise DerivationFileError(f"[inner] order = {iorder!r}: a positive integer (number of terms) up to 30")
     es = data.get("edge_shift", {}).get("nu", [])
-    if not isinstance(es, list) or not all(isinstance(v, (int, float)) and -1 < v < 0.5 for v in es):
-        raise DerivationFileError(f"[edge_shift] nu = {es!r}: a list of numbers in (-1, 1/2)")
-    contact = _contact_table(data.get("contact"), layer, punch)
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and -1 < v < 0.5 for v in es) or len(es) > 50:
+        raise DerivationFileError(f"[edge_shift] nu = {_short(es)}: a list of at most 50 numbers in (-1, 1/2)")
+    layer_nu = data["layer"].get("nu")
+    contact = _contact_table(data.get("contact"), layer, punch, None if layer_nu == "symbolic" else layer_nu)
     validation = _validation_table(data.get("validation"))
     return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation)
 
 
-def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
+def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: bool = False) -> str:
     """The whole LaTeX document of a derivation, in the paper's order (see :mod:`thinlayer.export.report`).
 
     With ``figure_dir`` (a folder next to the .tex file) the validation plots are written there and
@@ -247,6 +340,8 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
         A derivation, e.g. from :func:`load_derivation`.
     figure_dir : str or Path, optional
         Where to write the validation plots (next to the .tex file).
+    force : bool
+        Whether existing plot files may be replaced.
 
     Returns
     -------
@@ -257,6 +352,7 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
     """
     from .report import Document, errata_section
 
+    check_symbol_names((q.name for q in der.punch.expr.free_symbols), "punch")
     doc = Document(der.title)
     _kernel_sections(doc, der)
     _inner_sections(doc, der)
@@ -266,7 +362,7 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None) -> str:
     if der.contact is not None:
         _contact_section(doc, der)
     if der.validation is not None:
-        _validation_section(doc, der.validation, figure_dir)
+        _validation_section(doc, der.validation, figure_dir, force)
     errata_section(doc)
     return doc.latex()
 
@@ -354,7 +450,7 @@ def _contact_section(doc: Any, der: Derivation) -> None:
     doc.section("Contact solution for numeric parameters").math(sol.latex())
 
 
-def _validation_section(doc: Any, v: dict, figure_dir: str | Path | None) -> None:
+def _validation_section(doc: Any, v: dict, figure_dir: str | Path | None, force: bool = False) -> None:
     """The validation table against the direct numerics (and its plots with ``figure_dir``)."""
     from ..validation import validation_study
 
@@ -365,28 +461,31 @@ def _validation_section(doc: Any, v: dict, figure_dir: str | Path | None) -> Non
         "shift from the numerical contact radius. Plots: run thinlayer validate with the option plots.")
     doc.text("{\\footnotesize\n" + study.latex() + "\n}")
     if figure_dir is not None:
-        figs = _validation_figures(study, Path(figure_dir))
+        figs = _validation_figures(study, Path(figure_dir), force)
         for fig in figs:
             doc.text(rf"\begin{{center}}\includegraphics[width=0.8\linewidth]{{{Path(figure_dir).name}/{fig}}}"
                      r"\end{center}")
 
 
-def _validation_figures(study, folder: Path) -> list[str]:
+def _validation_figures(study, folder: Path, force: bool = False) -> list[str]:
     """The study's plots as PDF files in ``folder``; [] (tables only) when matplotlib is missing."""
     try:
-        paths = study.plots(folder, formats=("pdf",))
+        paths = study.plots(folder, formats=("pdf",), force=force)
     except ImportError:
         return []
     return [p.name for p in paths if p.suffix == ".pdf"]
 
 
-def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force: bool = False) -> Path:
-    """Write ``<out_dir>/<name>.tex`` (and the PDF with ``pdf=True``).
+def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force: bool = False,
+                 temp_root: str | Path | None = None) -> Path:
+    """Write ``<out_dir>/<name>.tex`` (and the PDF and its log with ``pdf=True``) without losing any file.
 
-    An existing file is replaced only when thinlayer wrote it (its first line is the
-    generated mark) or when ``force`` is given.  The text is generated completely before anything
-    is written, the file is replaced atomically and the PDF compiled in a temporary folder, so a
-    failed run leaves no half-written report.
+    Every file the run would write is checked before anything is written: the .tex is replaced
+    only when thinlayer wrote it and nobody edited it since (the hash in its first line) or with
+    ``force``; an existing PDF, log or validation figure only with ``force``.  The text is
+    generated completely first, each file is replaced atomically, the PDF is compiled in a
+    temporary folder, and the whole run holds a lock on ``<out_dir>/<name>`` so that a concurrent
+    run of the same name stops with an error instead of mixing files.
 
     Parameters
     ----------
@@ -395,26 +494,42 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force:
     out_dir : str or Path
         The output folder (created if missing).
     pdf : bool
-        Whether to compile the PDF too (needs latexmk or pdflatex).
+        Whether to compile the PDF too (needs pdflatex).
     force : bool
-        Whether to overwrite a .tex file that thinlayer did not write.
+        Whether to overwrite existing files.
+    temp_root : str or Path, optional
+        Where the PDF's temporary folder is created (default: the system's).
 
     Returns
     -------
     Path
         The .tex file.
     """
-    from .report import check_writable, compile_pdf, write_tex
+    from ..validation.output import output_lock, refuse_existing
+    from .report import check_writable, compile_pdf, latex_engine, pdf_outputs, write_tex
 
-    tex = Path(out_dir) / f"{der.name}.tex"
-    check_writable(tex, force)
+    out = Path(out_dir)
+    tex = out / f"{der.name}.tex"
+    figures = out / f"{der.name}-figures" if der.validation is not None else None
+
+    def check() -> None:
+        check_writable(tex, force)
+        if pdf:
+            refuse_existing(pdf_outputs(tex), force)
+        if figures is not None:
+            from ..validation.plots import figure_files
+
+            refuse_existing(figure_files(figures, "validation", ("pdf",)), force)
+
+    if out.exists() and not out.is_dir():
+        raise NotADirectoryError(f"--out {out} is a file, not a folder")
+    check()
     if pdf:
-        from .report import latex_engine
-
         latex_engine()  # fail before writing anything when no engine is installed
-    figures = Path(out_dir) / f"{der.name}-figures" if der.validation is not None else None
-    text = report_latex(der, figures)
-    write_tex(text, tex, force)
-    if pdf:
-        compile_pdf(tex)
+    with output_lock(out, der.name):
+        check()  # again, now that no concurrent run can write these files
+        text = report_latex(der, figures, force=force)
+        write_tex(text, tex, force)
+        if pdf:
+            compile_pdf(tex, temp_root)
     return tex

@@ -26,6 +26,7 @@ from sympy import QQ
 from sympy.polys.rings import ring
 
 from .. import symbols as S
+from .._checks import check_bounded
 from .._checks import check_order as _check_order
 from .._series import (
     bonded_series_parts,
@@ -230,6 +231,50 @@ def _symbolic_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients
     return KernelCoefficients(layer, order, layer.A_symbol, tuple(m), tuple(sp.expand(x) for x in M))
 
 
+#: Largest order accepted per kind of coefficient arithmetic, with the measured time of that order
+#: (kernel_coefficients(layer, n), cold cache, on the 2-core build machine).  Checked before any work.
+ORDER_LIMITS: dict[str, tuple[int, str]] = {
+    "poly": (30, "symbolic nu (or kappa) coefficients cost 2.9 s at order 30, 15 s at 40 and 31 s at 50 "
+                 "(growing like order^5); give a number for nu (BondedLayer('3/10') or 0.3) for higher orders"),
+    "rational": (200, "exact rational coefficients cost 1.2 s at order 200 and 4.7 s at 300"),
+    "mpmath": (500, "float (mpmath) coefficients cost 2.1 s at order 500 and 5.8 s at 1000"),
+    "generic": (12, "the M_k of a GenericLayer are polynomials in m_1..m_k whose size grows like the partitions "
+                    "of k: 1.3 s at order 12, 10.5 s at 16, 198 s at 20"),
+    "incompressible": (200, "exact incompressible coefficients cost 0.36 s at order 200 and 1.7 s at 300"),
+}
+
+
+def _domain_kind(layer: LayerKernel) -> str:
+    if layer.symbolic_coefficients:
+        return "generic"
+    if layer.parameter is not None:
+        return "poly"
+    return "mpmath" if isinstance(getattr(layer, "nu", None), mpmath.mpf) else "rational"
+
+
+def order_limit(layer: LayerKernel) -> tuple[int, str]:
+    """The largest coefficient order :func:`kernel_coefficients` accepts for ``layer`` and why.
+
+    Returns
+    -------
+    tuple of (int, str)
+        The limit and the reason (with the measured time at the limit), see :data:`ORDER_LIMITS`.
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer
+    >>> order_limit(BondedLayer())[0], order_limit(BondedLayer("3/10"))[0], order_limit(BondedLayer(0.3))[0]
+    (30, 200, 500)
+    """
+    return ORDER_LIMITS[_domain_kind(layer)]
+
+
+def check_coefficient_order(layer: LayerKernel, order: int, name: str = "order") -> int:
+    """``order`` checked against :func:`order_limit` (a :class:`~thinlayer._checks.WorkLimitError` above it)."""
+    limit, reason = order_limit(layer)
+    return check_bounded(order, name, limit, reason)
+
+
 @lru_cache(maxsize=256)
 def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     """A, m_n (2.20) and M_k by the recurrence (4.2), for n, k <= ``order``.
@@ -239,7 +284,14 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     layer : LayerKernel
         Any :class:`~thinlayer.layers.kernels.LayerKernel` with a small-s expansion.
     order : int
-        Highest index n of m_n and M_n (a non-negative integer).
+        Highest index n of m_n and M_n (a non-negative integer).  Bounded before any work starts
+        (:data:`ORDER_LIMITS`): 30 for a symbolic nu (2.9 s measured), 200 for an exact nu (1.2 s),
+        500 for a float nu (2.1 s), 12 for a GenericLayer (1.3 s).
+
+    Raises
+    ------
+    thinlayer._checks.WorkLimitError
+        (a ValueError) above the limit, naming it and the measured cost.
 
     Examples
     --------
@@ -248,7 +300,7 @@ def kernel_coefficients(layer: LayerKernel, order: int) -> KernelCoefficients:
     >>> c.m[1]
     -nu*(1 - 4*nu)/(3*(1 - 2*nu)*(1 - nu))
     """
-    order = _check_order(order, "order")
+    order = check_coefficient_order(layer, _check_order(order, "order"))
     if layer.symbolic_coefficients:
         return _symbolic_coefficients(layer, order)
     dom = _domain(layer)
@@ -312,9 +364,10 @@ def _coefficients_poly(num, den, order, dom: _PolyDomain):
 def reciprocal_by_inversion(layer: LayerKernel, order: int) -> tuple:
     """M_0..M_order from the direct inversion ``s/L(s) = D(s^2)/N(s^2)`` (independent of (4.2)).
 
-    Used to cross-check the recurrence (4.2).  Returns sympy objects (or mpmath numbers).
+    Used to cross-check the recurrence (4.2).  Returns sympy objects (or mpmath numbers).  The order is
+    bounded as in :func:`kernel_coefficients`.
     """
-    order = _check_order(order, "order")
+    order = check_coefficient_order(layer, _check_order(order, "order"))
     if layer.symbolic_coefficients:
         return _symbolic_coefficients(layer, order)
     dom = _domain(layer)
@@ -378,13 +431,15 @@ def incompressible_coefficients(order: int) -> IncompressibleCoefficients:
 
     Power-series division of the closed-form Taylor coefficients of the numerator and denominator
     of (2.3) at ``kappa = 1`` over QQ (as :func:`thinlayer.kernel_coefficients` does for ``nu < 1/2``).
+    ``order <= 200`` (0.36 s measured; 1.7 s at 300), checked before any work.
 
     Examples
     --------
     >>> incompressible_coefficients(3).c
     (0, 2/3, -6/5, 46/21)
     """
-    order = _check_order(order, "order")
+    limit, reason = ORDER_LIMITS["incompressible"]
+    order = check_bounded(_check_order(order, "order"), "order", limit, reason)
     num, den = bonded_series_parts(QQ(1), order, QQ)
     q = quotient_field(num, den, order)
     return IncompressibleCoefficients(order, tuple(sp.Rational(int(x.numerator), int(x.denominator)) for x in q))

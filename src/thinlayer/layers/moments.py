@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import sympy as sp
 
 from .._checks import check_order as _check_order_public
+from .coefficients import check_coefficient_order
 
 if TYPE_CHECKING:
     from .kernels import LayerKernel
@@ -25,6 +26,9 @@ def kernel_moment(layer: LayerKernel, a1: int, a2: int):
     Zero when a1 or a2 is odd (2.19); otherwise the derived (2.21)::
 
         mu_{2k, 2n-2k} = (-1)^n pi^2 A m_n C(n, k) (2k)! (2n-2k)!
+
+    ``(a1 + a2)/2`` is bounded by the coefficient order limit of the layer
+    (:data:`thinlayer.layers.coefficients.ORDER_LIMITS`, e.g. 30 for a symbolic nu: 2.9 s).
 
     Examples
     --------
@@ -39,6 +43,7 @@ def kernel_moment(layer: LayerKernel, a1: int, a2: int):
     if a1 % 2 or a2 % 2:
         return sp.Integer(0)
     n, k = (a1 + a2) // 2, a1 // 2
+    check_coefficient_order(layer, n, "(a1 + a2)/2, the coefficient order of the moment")
     c = layer.coefficients(n)
     return (
         (-1) ** n * sp.pi**2 * c.A_expr * c.m_expr(n)

@@ -14,6 +14,11 @@ so it tends to ``A`` without a 0/0 as u -> 0.
 
 Frictionless base: ``L(u) = (cosh 2u - 1)/(sinh 2u + 2u) = (1 - E)^2/(1 - E^2 + 4uE)`` with
 ``1 - E = -expm1(-2u)``: again free of cancellation.
+
+Extremes: every u >= 0 is admissible, including ``1e300`` and ``inf`` (L = 1, L/u = 0 there).  The
+products ``u E`` and ``u^2 E`` are taken as 0 once ``E = e^{-2u}`` underflows (u > 372, where they are
+below 1e-318), so ``u^2`` never overflows (it would above 1.3e154) and ``inf * 0`` never occurs.  A nan or
+a negative u is refused by both backends with the same ValueError (:func:`check_u`).
 """
 from __future__ import annotations
 
@@ -26,6 +31,40 @@ import numpy as np
 _S_TERMS = 14
 _S_COEFFS = np.array([1.0 / math.factorial(2 * k + 3) for k in range(_S_TERMS)][::-1])
 _SERIES_CUT = 2.0
+
+
+def _u_message(bad) -> str:
+    return f"u must be a real number >= 0 (inf allowed), got u = {float(bad)!r}"
+
+
+def check_u(u):
+    """``u`` as a float array (numpy backend): every entry >= 0 (inf allowed); nan or u < 0 is a ValueError.
+
+    The message is the same as :func:`check_u_mpmath`'s for the same bad value.
+    """
+    u = np.asarray(u, dtype=float)
+    bad = np.isnan(u) | (u < 0)
+    if np.any(bad):
+        raise ValueError(_u_message(u[bad].flat[0]))
+    return u
+
+
+def check_u_mpmath(u) -> mpmath.mpf:
+    """``u`` as an mpmath number (mpmath backend): >= 0 (inf allowed); nan or u < 0 is a ValueError."""
+    if isinstance(u, np.ndarray):
+        if u.ndim != 0:
+            raise ValueError(f"the mpmath backend takes one number u, got an array of shape {u.shape}")
+        u = u.item()
+    u = mpmath.mpf(u)
+    if mpmath.isnan(u) or u < 0:
+        raise ValueError(_u_message(u))
+    return u
+
+
+def _times_E(a: np.ndarray, E: np.ndarray) -> np.ndarray:
+    """``a * E`` with the product 0 where E underflowed (a may be huge or inf there)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        return np.where(E > 0, a * E, 0.0)
 
 
 def _sinh_minus_x_over_x3(x: np.ndarray) -> np.ndarray:
@@ -42,19 +81,23 @@ def _scaled_sinh_minus_x(x: np.ndarray) -> np.ndarray:
     out[small] = xs**3 * _sinh_minus_x_over_x3(xs) * np.exp(-xs)
     xl = x[~small]
     E = np.exp(-xl)
-    out[~small] = -0.5 * np.expm1(-2 * xl) - xl * E
+    out[~small] = -0.5 * np.expm1(-2 * xl) - _times_E(xl, E)
     return out
 
 
 def bonded_numpy(u, kappa: float, over_u: bool = False):
-    """L(u) (or L(u)/u) of the bonded layer (2.3), vectorised over u >= 0."""
-    u = np.asarray(u, dtype=float)
+    """L(u) (or L(u)/u) of the bonded layer (2.3), vectorised over u >= 0 (inf included: L = 1, L/u = 0)."""
+    u = check_u(u)
+    with np.errstate(over="ignore", under="ignore"):  # e^{-2u} -> 0 and -2u -> -inf are intended
+        return _bonded_numpy(u, kappa, over_u)
+
+
+def _bonded_numpy(u: np.ndarray, kappa: float, over_u: bool):
     scalar = u.ndim == 0
     u = np.atleast_1d(u)
-    if np.any(u < 0) or not np.all(np.isfinite(u)):
-        raise ValueError("u must be finite and >= 0")
     E = np.exp(-2 * u)
-    den = kappa * (1 + E * E) + (1 + kappa**2 + 4 * u * u) * E
+    uE = _times_E(u, E)
+    den = kappa * (1 + E * E) + (1 + kappa**2) * E + 4 * _times_E(np.where(E > 0, u, 0.0) ** 2, E)
     if over_u:
         # S(2u)/u = 8 u^2 * S(x)/x^3 for small x; for large u divide the scaled form by u
         x = 2 * u
@@ -64,26 +107,32 @@ def bonded_numpy(u, kappa: float, over_u: bool = False):
         su[~small] = _scaled_sinh_minus_x(x[~small]) / u[~small]
         num = 2 * kappa * su + 4 * (kappa - 1) * E
     else:
-        num = 2 * kappa * _scaled_sinh_minus_x(2 * u) + 4 * u * (kappa - 1) * E
+        num = 2 * kappa * _scaled_sinh_minus_x(2 * u) + 4 * (kappa - 1) * uE
     out = num / den
     return out[0] if scalar else out
 
 
 def frictionless_numpy(u, over_u: bool = False):
-    """L(u) (or L(u)/u) of a layer on a frictionless base, vectorised over u >= 0."""
-    u = np.asarray(u, dtype=float)
-    if np.any(u < 0) or not np.all(np.isfinite(u)):
-        raise ValueError("u must be finite and >= 0")
+    """L(u) (or L(u)/u) of a layer on a frictionless base, vectorised over u >= 0 (inf included)."""
+    u = check_u(u)
+    with np.errstate(over="ignore", under="ignore"):
+        return _frictionless_numpy(u, over_u)
+
+
+def _frictionless_numpy(u: np.ndarray, over_u: bool):
     E = np.exp(-2 * u)
     a = -np.expm1(-2 * u)
-    den = -np.expm1(-4 * u) + 4 * u * E
-    if over_u:
-        # L/u = a^2/(u den) = (a/u)^2/(den/u); a/u -> 2 and den/u -> 8 at u = 0, so L/u -> 1/2
-        with np.errstate(invalid="ignore", divide="ignore"):
-            au = np.where(u > 0, a / np.where(u > 0, u, 1.0), 2.0)
-            denu = np.where(u > 0, den / np.where(u > 0, u, 1.0), 8.0)
-        return au * au / denu
-    return np.where(u > 0, a * a / np.where(u > 0, den, 1.0), 0.0)
+    den = -np.expm1(-4 * u) + 4 * _times_E(u, E)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        # below u = 1: L/u = (a/u)^2/(den/u), with a/u -> 2 and den/u -> 8 at u = 0 (L/u -> 1/2; no
+        # underflow of a^2 for tiny u); above: L = a^2/den directly (-> 1, and L/u -> 0, at u = inf)
+        us = np.where((u > 0) & (u < 1), u, 1.0)
+        ratio = np.where(u == 0, 0.5, (a / us) ** 2 / (den / us))
+        big = u >= 1
+        L_big = a * a / np.where(big, den, 1.0)
+        if over_u:
+            return np.where(big, L_big / np.where(big, u, 1.0), ratio)
+        return np.where(big, L_big, u * ratio)
 
 
 def _extra_digits(u) -> int:
@@ -99,12 +148,12 @@ def bonded_mpmath(u, kappa, over_u: bool = False):
     Uses the scaled form of the module docstring; the small-u cancellation in
     ``sinh x - x`` is absorbed by temporarily raising the working precision.
     """
-    u = mpmath.mpf(u)
-    if u < 0:
-        raise ValueError("u must be >= 0")
+    u = check_u_mpmath(u)
     kappa = mpmath.mpf(kappa)
     if u == 0:
         return 4 * (kappa - 1) / (kappa + 1) ** 2 if over_u else mpmath.mpf(0)
+    if mpmath.isinf(u):
+        return mpmath.mpf(0) if over_u else mpmath.mpf(1)
     with mpmath.extradps(_extra_digits(u)):
         x = 2 * u
         E = mpmath.exp(-x)
@@ -119,11 +168,11 @@ def bonded_mpmath(u, kappa, over_u: bool = False):
 
 def frictionless_mpmath(u, over_u: bool = False):
     """L(u) (or L(u)/u) of the layer on a frictionless base, in mpmath."""
-    u = mpmath.mpf(u)
-    if u < 0:
-        raise ValueError("u must be >= 0")
+    u = check_u_mpmath(u)
     if u == 0:
         return mpmath.mpf(1) / 2 if over_u else mpmath.mpf(0)
+    if mpmath.isinf(u):
+        return mpmath.mpf(0) if over_u else mpmath.mpf(1)
     with mpmath.extradps(_extra_digits(u)):
         E = mpmath.exp(-2 * u)
         a = -mpmath.expm1(-2 * u)

@@ -66,11 +66,11 @@ import sympy as sp
 from scipy import integrate, optimize, special
 
 from .. import symbols as S
-from .._checks import positive
+from .._checks import check_bounded, positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
-from ._layer import numeric_layer_nu
+from ._layer import GAUSS, U_MAX, numeric_layer_nu, panel_count
 from ._spectral import Discretisation, correction_displacement, pressure_function, sample_radii
 
 __all__ = ["AxisymmetricContact", "AxisymmetricPunchContact", "contact_for_radius", "radial_profile",
@@ -271,6 +271,32 @@ def _check_modes(n: Any) -> int | None:
     return int(n)
 
 
+#: Largest work estimate ``(t-quadrature points) x modes^2`` of one Galerkin matrix (see :func:`_check_work`).
+#: Measured (paraboloid, nu = 0.3, default modes, with the error estimate): c/H = 100 (9.9e7) takes 3.2 s,
+#: c/H = 128 (1.9e8) 3.4 s, c/H = 300 (1.0e9) 21.6 s, c/H = 1000 (8.1e9) 212 s; the limit admits c/H <= ~130
+#: with the default modes (about 9 MB for the transforms array).
+MAX_WORK = 2.0e8
+
+
+def _check_work(layer: Any, H: float, c_lo: float, c_hi: float, modes: int, what: str) -> None:
+    """Refuse, before any matrix is built, a discretisation whose work estimate exceeds :data:`MAX_WORK`.
+
+    The t-quadrature of :class:`~thinlayer.numerics._spectral.Discretisation` has ``GAUSS`` points on each of
+    ``panel_count(U_MAX c_hi/H, min(3, c_lo/(2H)))`` panels; each Galerkin matrix costs that times modes^2
+    (and its transforms array that times modes x 8 bytes: 9 MB at the limit).
+    """
+    if not layer.has_thickness:  # the half-space: no quadrature, at most 600 modes
+        return
+    nt = GAUSS * panel_count(U_MAX * c_hi / H, min(3.0, 0.5 * c_lo / H))
+    work = float(nt) * modes * modes
+    check_bounded(work, f"the work estimate ({nt} quadrature points x {modes}^2 modes)", MAX_WORK,
+                  f"the contact radius ~{c_hi:.3g} is {c_hi / H:.3g} layer thicknesses (H = {H:.3g}) {what}; the "
+                  f"direct solver is limited to about c/H <= 130 with the default modes (3.4 s measured at c/H = 128): "
+                  f"increase H, "
+                  f"decrease the contact size (delta0 or radius) or the modes n, or use the asymptotic "
+                  f"thinlayer.solve, which is accurate for such thin layers")
+
+
 def _default_modes(c_over_H: float) -> int:
     return int(min(_MAX_MODES, math.ceil(8.0 * math.sqrt(max(c_over_H, 0.0))) + 12))
 
@@ -340,6 +366,7 @@ def contact_for_radius(layer: LayerKernel, punch: Any, radius: float, H: float |
     c = positive(radius, "radius")
     H, mu, nu_val = _material(layer, H, mu, nu)
     N = _check_modes(n) or _default_modes(c / H)
+    _check_work(layer, H, c, c, N, "(the prescribed radius)")
     runs = []
     for modes in ([N, max(4, round(0.7 * N))] if error_estimate else [N]):
         disc = Discretisation.build(layer, H, modes, c, c)
@@ -432,6 +459,13 @@ def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float |
         Frozen result with ``radius`` (= ``contact_radius``), ``force`` (1.8), ``r``, ``pressure``,
         ``contact_area``, error estimates, and the ``punch`` when one was given.
 
+    Raises
+    ------
+    thinlayer._checks.WorkLimitError
+        Before any matrix is built, when the work estimate (quadrature points x modes^2, from the rigid
+        overlap radius) exceeds :data:`MAX_WORK` = 2e8: about c/H <= 130 with the default modes (3.4 s measured
+        at c/H = 128); c/H = 300 took 22 s and c/H = 1000 212 s before the limit, H = 1e-6 tried to allocate 166 GiB.
+
     Examples
     --------
     Hertz's solution for the half-space (L = 1): c^2 = R delta0, P = 8 vartheta c^3 / (3 R).
@@ -450,6 +484,8 @@ def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float |
     N_given = _check_modes(n)
     c_int = _intersection_radius(phi, delta0, H)
     N = N_given or _default_modes(c_int / H)
+    _check_work(layer, H, 0.3 * c_int, c_int + 6.0 * min(H, c_int), N,
+                f"(estimated from the rigid overlap Phi(c) = delta0 = {delta0:.3g})")
     c, disc, d0c, x1, xP = _radius_for_depth(layer, phi, delta0, H, N, c_int)
     if N_given is None and _default_modes(c / H) > N:  # first estimate of c was too small
         N = _default_modes(c / H)

@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 
 from .cases import ORDER_TOLERANCE, ORDERS, ContourData, PressureProfile, ValidationRow, jsonable
-from .plots import plot_study
+from .plots import figure_files, plot_study
 
 __all__ = ["EdgeShiftCheck", "OrderFit", "ValidationStudy"]
 
@@ -282,24 +282,37 @@ class ValidationStudy:
     def to_json(self) -> str:
         return json.dumps(self.to_dict(), indent=2)
 
-    def write(self, directory: str | Path, *, plots: bool = False, stem: str = "validation") -> list[Path]:
-        """Write ``<stem>.txt``, ``.tex`` and ``.json`` (and with ``plots`` the figures) into ``directory``."""
+    def write(self, directory: str | Path, *, plots: bool = False, stem: str = "validation", force: bool = False
+              ) -> list[Path]:
+        """Write ``<stem>.txt``, ``.tex`` and ``.json`` (and with ``plots`` the figures) into ``directory``.
+
+        Every target is checked before anything is written: an existing file is replaced only with
+        ``force`` (:class:`~thinlayer.validation.output.OutputExistsError` otherwise); each file is
+        written atomically, under a lock on ``<directory>/<stem>`` against a concurrent run.
+        """
+        from .output import atomic_write, output_lock, refuse_existing
+
         d = Path(directory)
-        d.mkdir(parents=True, exist_ok=True)
-        files = []
-        for suffix, text in ((".txt", self.table() + "\n"), (".tex", self.latex()), (".json", self.to_json() + "\n")):
-            p = d / f"{stem}{suffix}"
-            p.write_text(text, encoding="utf-8")
-            files.append(p)
+        texts = ((".txt", self.table() + "\n"), (".tex", self.latex()), (".json", self.to_json() + "\n"))
+        targets = [d / f"{stem}{suffix}" for suffix, _ in texts]
         if plots:
-            files += self.plots(d, stem=stem)
+            targets += figure_files(d, stem, ("png", "pdf"))
+        refuse_existing(targets, force)
+        files = []
+        with output_lock(d, stem):
+            refuse_existing(targets, force)  # again, now that no other run can write them
+            for p, (_, text) in zip(targets, texts):
+                files.append(atomic_write(p, text))
+            if plots:
+                files += self.plots(d, stem=stem, force=True)
         return files
 
-    def plots(self, directory: str | Path, *, stem: str = "validation", formats: Sequence[str] = ("png", "pdf")
-              ) -> list[Path]:
+    def plots(self, directory: str | Path, *, stem: str = "validation", formats: Sequence[str] = ("png", "pdf"),
+              force: bool = False) -> list[Path]:
         """Figures: error vs H/a (log-log), pressure profiles, contact contours; each as PNG and PDF.
 
-        Needs matplotlib (``pip install 'thinlayer[plot]'``); no pyplot state is touched.
+        Needs matplotlib (``pip install 'thinlayer[plot]'``); no pyplot state is touched.  Existing
+        figure files are replaced only with ``force``; each is written atomically.
         """
-        return plot_study(self, Path(directory), stem, tuple(formats))
+        return plot_study(self, Path(directory), stem, tuple(formats), force=force)
 

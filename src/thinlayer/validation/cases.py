@@ -441,7 +441,7 @@ def sphere_case(nu: float, eps: float) -> tuple[ValidationRow, list[PressureProf
     a0 = math.sqrt(2.0 * SPHERE_R * DELTA0)
     H = eps * a0
     t0 = time.perf_counter()
-    sol = solve(layer, punch, delta0=DELTA0, H=H)
+    sol = solve(layer, punch, delta0=DELTA0, H=H, tol=math.inf)  # the study measures the error itself
     _same_ratio(sol.H_over_a, eps)
     t1 = time.perf_counter()
     res = solve_axisymmetric(layer, punch, DELTA0, H)
@@ -598,7 +598,7 @@ def elliptic_case(nu: float, eps: float, cells_per_H: float, workers: int | None
     H = eps * a
     n, nc, W = elliptic_grid(eps, cells_per_H)
     t0 = time.perf_counter()
-    sol = solve(layer, punch, delta0=DELTA0, H=H)
+    sol = solve(layer, punch, delta0=DELTA0, H=H, tol=math.inf)  # the study measures the error itself
     _same_ratio(sol.H_over_a, eps)
     t1 = time.perf_counter()
     fine = solve_2d(layer, punch, delta0=DELTA0, H=H, n=n, extent=W, workers=workers)

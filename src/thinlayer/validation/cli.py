@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import sys
 from fractions import Fraction
+from pathlib import Path
 from typing import Any
 
 from .cases import SHAPES
@@ -49,6 +50,8 @@ def add_cli(subparsers: Any, formatter_class: Any = None) -> Any:
     p.add_argument("--full", action="store_true",
                    help="the full study: nine H/a values, the elliptic case for every nu (2D grids up to 2304^2)")
     p.add_argument("--out", metavar="DIR", help="write validation.txt/.tex/.json (and plots) into DIR")
+    p.add_argument("--force", action="store_true",
+                   help="replace existing validation.txt/.tex/.json and figures in --out (default: refuse)")
     p.add_argument("--plots", action="store_true", help="also write PNG and PDF figures into --out (needs matplotlib)")
     p.add_argument("--json", action="store_true", help="print JSON instead of the text table")
     p.add_argument("--nu", metavar="LIST", help="comma-separated Poisson ratios (default 0,0.2,0.3,0.4,0.45)")
@@ -92,6 +95,14 @@ def cli(args: Any) -> int:
     """
     if args.plots and not args.out:
         raise ValueError("--plots needs --out DIR (the folder for the PNG and PDF files)")
+    if args.out:  # refuse before the study runs, not after minutes of work
+        from .output import refuse_existing
+        from .plots import figure_files
+
+        d = Path(args.out)
+        targets = [d / f"validation{x}" for x in (".txt", ".tex", ".json")]
+        refuse_existing(targets + (figure_files(d, "validation", ("png", "pdf")) if args.plots else []),
+                        getattr(args, "force", False))
     shapes = tuple(s.strip() for s in args.shapes.split(",") if s.strip())
     study = validation_study(nus=_floats(args.nu, "nu"), ratios=_floats(args.ratios, "ratios"), shapes=shapes,
                              full=args.full, max_n=args.max_n, progress=not args.quiet)
@@ -100,7 +111,7 @@ def cli(args: Any) -> int:
         if not study.rows:
             print("thinlayer: no case finished: nothing written", file=sys.stderr)
         else:
-            files = study.write(args.out, plots=args.plots)
+            files = study.write(args.out, plots=args.plots, force=getattr(args, "force", False))
             print("wrote " + ", ".join(str(f) for f in files), file=sys.stderr)
     if study.interrupted:
         return EXIT_INTERRUPTED

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .._checks import positive
+from ..asymptotics.force_law import force_law
 from ..asymptotics.incompressible import (
     IncompressibleLayer,
     Regime,
@@ -24,7 +25,8 @@ from ..asymptotics.incompressible import (
     two_term_sphere,
 )
 from ..asymptotics.incompressible.operator import model_layer
-from ..asymptotics.solution import solve
+from ..asymptotics.solution import ValidityError, solve
+from ..asymptotics.wiener_hopf import edge_shift_exact
 from ..layers.kernels import LayerKernel
 from ..numerics import solve_axisymmetric
 from ..punch import Punch
@@ -92,6 +94,20 @@ class SphereModels:
 
 
 
+def _compressible(layer: LayerKernel, punch: Punch, d0: float, H: float, mu: float) -> tuple[float, float]:
+    """Force and contact radius of the compressible law (1.8), (3.25), also where it fails.
+
+    The comparison exists to show where each model fails, so the tolerance check of :func:`solve` is off
+    (``tol=inf``); where even that refuses (an unphysical value such as P <= 0), the raw law is evaluated.
+    """
+    try:
+        sol = solve(layer, punch, d0, H, mu, tol=math.inf)
+        return float(sol.force), math.sqrt(float(sol.contact_area) / math.pi)
+    except ValidityError:
+        vals = force_law(layer, punch).evaluate(d0, H, mu, edge_shift=float(edge_shift_exact(layer, dps=15)))
+        return float(vals.force), math.sqrt(max(float(vals.area), 0.0) / math.pi)
+
+
 def compare_sphere_models(layer: LayerKernel, R: float, delta0: float, H: float, mu: float = 1.0,
                           direct: bool = False) -> SphereModels:
     """Sphere in the compressible, incompressible and two-term models, optionally against the direct solver.
@@ -121,8 +137,7 @@ def compare_sphere_models(layer: LayerKernel, R: float, delta0: float, H: float,
     incompressible = (inc_v.force, inc_v.a - h_half * HH)
     comp = None
     if layer.has_compressible_expansion:
-        sol = solve(layer, Punch.paraboloid(RR), d0, HH, mm)
-        comp = (float(sol.force), math.sqrt(float(sol.contact_area) / math.pi))
+        comp = _compressible(layer, Punch.paraboloid(RR), d0, HH, mm)
     dres = None
     if direct:
         res = solve_axisymmetric(layer, lambda r: r * r / (2 * RR), d0, HH, mm)

@@ -18,7 +18,10 @@ from .cases import CLAIMED_ORDERS, SHAPES
 if TYPE_CHECKING:  # pragma: no cover
     from .analysis import ValidationStudy
 
-__all__ = ["plot_study"]
+__all__ = ["figure_files", "plot_study"]
+
+#: the figures, by the end of their file names (the edge-shift figure only when the study has spheres)
+FIGURES = ("errors", "pressure", "contours", "edge_shift")
 
 _MARKER = {"sphere": "o", "elliptic": "s"}
 
@@ -36,12 +39,35 @@ def _figure(*args, **kw):
 
 
 def _save(fig, directory: Path, name: str, formats: tuple[str, ...]) -> list[Path]:
+    import io
+
+    from .output import atomic_write
+
     out = []
     for fmt in formats:
-        p = directory / f"{name}.{fmt}"
-        fig.savefig(p, format=fmt, dpi=130, bbox_inches="tight")
-        out.append(p)
+        buf = io.BytesIO()
+        fig.savefig(buf, format=fmt, dpi=130, bbox_inches="tight")
+        out.append(atomic_write(directory / f"{name}.{fmt}", buf.getvalue()))
     return out
+
+
+def figure_files(directory: Path, stem: str, formats: Sequence[str]) -> list[Path]:
+    """Every file :func:`plot_study` may write into ``directory`` (checked before any is written).
+
+    Parameters
+    ----------
+    directory : Path
+        The folder.
+    stem : str
+        The start of the file names.
+    formats : sequence of str
+        The file formats.
+
+    Returns
+    -------
+    list of Path
+    """
+    return [Path(directory) / f"{stem}_{f}.{fmt}" for f in FIGURES for fmt in formats]
 
 
 def _log_axes(ax, ticks: Sequence[float]) -> None:
@@ -55,7 +81,8 @@ def _log_axes(ax, ticks: Sequence[float]) -> None:
     ax.xaxis.set_minor_formatter(NullFormatter())
 
 
-def plot_study(study: ValidationStudy, directory: Path, stem: str, formats: tuple[str, ...]) -> list[Path]:
+def plot_study(study: ValidationStudy, directory: Path, stem: str, formats: tuple[str, ...], force: bool = False
+               ) -> list[Path]:
     """Write the figures of ``study`` into ``directory`` as ``<stem>_errors.<fmt>`` etc.; return the files.
 
     Parameters
@@ -68,6 +95,8 @@ def plot_study(study: ValidationStudy, directory: Path, stem: str, formats: tupl
         The start of the file names.
     formats : tuple of str
         Among ``"png"``, ``"pdf"``, ``"svg"``.
+    force : bool
+        Whether existing figure files may be replaced (checked before any is written).
 
     Returns
     -------
@@ -77,6 +106,8 @@ def plot_study(study: ValidationStudy, directory: Path, stem: str, formats: tupl
     ------
     ImportError
         matplotlib is not installed (raised before any file is touched).
+    OutputExistsError
+        a figure file exists and ``force`` is not given (nothing is written then).
     """
     bad = [f for f in formats if f not in ("png", "pdf", "svg")]
     if bad or not formats:
@@ -84,6 +115,9 @@ def plot_study(study: ValidationStudy, directory: Path, stem: str, formats: tupl
     if not study.rows:
         raise ValueError("the study has no rows to plot")
     _figure()  # raises the ImportError naming the extra before any file is touched
+    from .output import refuse_existing
+
+    refuse_existing(figure_files(directory, stem, formats), force)
     directory.mkdir(parents=True, exist_ok=True)
     from matplotlib import colormaps
 

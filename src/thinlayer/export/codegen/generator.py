@@ -56,7 +56,8 @@ class GeneratedCode:
         """Write every file into ``directory`` (created if missing) and return their paths.
 
         Existing files are not overwritten unless ``force=True``: a :class:`FileExistsError`
-        naming the first such file is raised before anything is written.
+        naming the first such file is raised before anything is written.  Each file is written
+        atomically (temporary file, fsync, rename) with the mode the umask gives.
 
         Parameters
         ----------
@@ -70,16 +71,13 @@ class GeneratedCode:
         list of Path
             The files written, main source file first.
         """
+        from ...validation.output import atomic_write, refuse_existing
+
         d = Path(directory)
         paths = [d / fn for fn in self.files]
-        if not force:
-            for p in paths:
-                if p.exists():
-                    raise FileExistsError(f"{p} exists; pass force=True to overwrite it")
+        refuse_existing(paths, force, "pass force=True to overwrite it")
         d.mkdir(parents=True, exist_ok=True)
-        for p, text in zip(paths, self.files.values()):
-            p.write_text(text, encoding="utf-8")
-        return paths
+        return [atomic_write(p, text) for p, text in zip(paths, self.files.values())]
 
 
 def generate(result: Any, language: str, name: str | None = None, args: Sequence[sp.Symbol] | None = None
