@@ -419,7 +419,8 @@ def _add_solve(sub: Any, fmt: type) -> None:
                                    "JSON keys: nu, H, mu, delta0, force, force_leading, force_correction, "
                                    "contact_area,\ncontact_area_leading, perimeter, edge_shift_exact, "
                                    "edge_shift_alexandrov, H_over_a,\n"
-                                   "error_estimate ({force, contact_area}, relative), tol, remainder ({force, contact_area, "
+                                   "error_estimate ({force, contact_area}, relative), tol, "
+                                   "remainder ({force, contact_area, "
                                    "pressure_interior, pressure_composite: {statement, relative_size}}).",
                        epilog="examples:\n  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 "
                               "--H 0.1 --json\n  thinlayer solve --nu 0.3 --punch 'x_1**2/8 + x_2**2/2' "
