@@ -211,6 +211,10 @@ class Punch(RichDisplay):
         args = (S.x1, S.x2, *self.parameters) if args is None else args
         return checked_lambdify(args, self.expr, backend)
 
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``Phi(x1, x2, *parameters)`` (1.1) as the one output."""
+        return (S.x1, S.x2, *self.parameters), {"Phi": self.expr}
+
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         pars = ", ".join(q.name for q in self.parameters) or "none"

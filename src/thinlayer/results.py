@@ -11,7 +11,7 @@ expression with a free symbol that is not among the named arguments.
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Protocol, runtime_checkable
 
@@ -41,6 +41,10 @@ class SymbolicResult(Result, Protocol):
 
     def lambdify(self, *args: Any, **kwargs: Any) -> Callable:
         """The formulas as a numeric function (:func:`checked_lambdify`)."""
+        ...
+
+    def codegen_expressions(self) -> tuple[Sequence[sp.Symbol], Mapping[str, sp.Expr]]:
+        """The argument symbols in call order and ``{output name: expression}``, for generated code."""
         ...
 
 

@@ -204,6 +204,29 @@ class KernelCoefficients(RichDisplay):
         exprs += [self.M_expr(k) for k in range(1, self.order + 1)]
         return checked_lambdify([p], exprs, backend)
 
+    @property
+    def codegen_name(self) -> str:
+        """The default name of generated functions."""
+        return "kernel_coefficients"
+
+    @property
+    def codegen_source(self) -> str:
+        """What the header of generated code quotes."""
+        return f"KernelCoefficients, paper eq. (2.20) and (4.2), {self.layer!r}, order {self.order}"
+
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``A, m_1..m_N, M_1..M_N`` (2.20), (4.2) as functions of the layer's parameter (symbolic layers)."""
+        p = self.layer.parameter
+        if self.layer.symbolic_coefficients:
+            raise ValueError("the coefficients of a GenericLayer are the symbols A, m_n themselves; pass the "
+                             "expressions you need (e.g. M_expr(k)) with args=[m_1, ...]")
+        if p is None:
+            raise ValueError("these kernel coefficients have no symbolic parameter (a numeric or parameter-free "
+                             "layer): they are numbers already; use e.g. kernel_coefficients(BondedLayer(), n)")
+        outs = {"A": self.A_expr, **{f"m_{n}": self.m_expr(n) for n in range(1, self.order + 1)},
+                **{f"M_{k}": self.M_expr(k) for k in range(1, self.order + 1)}}
+        return (p,), outs
+
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         out = [f"KernelCoefficients of {self.layer}, n <= {self.order}   (2.4), (2.20), (4.2)"]

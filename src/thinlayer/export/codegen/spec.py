@@ -13,14 +13,14 @@ from typing import Any, Protocol, runtime_checkable
 
 import sympy as sp
 
-from ...layers.coefficients import KernelCoefficients
 from ...parse import as_expr
 from ...results import MissingArgumentError
 
 
 @runtime_checkable
 class CodegenResult(Protocol):
-    """What a result type implements to plug into :func:`generate`.
+    """What a result type implements to plug into :func:`generate`: the code-generation part of
+    :class:`thinlayer.results.SymbolicResult`, which every symbolic stage result implements.
 
     ``codegen_expressions()`` returns the argument symbols in call order and a mapping
     ``{output name: sympy expression}`` in output order.  Optional attributes: ``codegen_name``
@@ -111,26 +111,9 @@ def _protocol_spec(result: Any, hook: Any, args: Any) -> Spec:
                          f"(args, {{name: expr}}), got {type(got).__name__}")
     r_args, outs = got
     name = getattr(result, "codegen_name", None) or _snake(type(result).__name__)
+    source = getattr(result, "codegen_source", None) or _describe(result)
     return Spec(_as_args(r_args if args is None else args),
-                _outputs_from(dict(outs), type(result).__name__), name, _describe(result))
-
-
-def _coefficients_spec(result: KernelCoefficients, args: Any) -> Spec:
-    """``A, m_1..m_N, M_1..M_N`` of (2.20), (4.2) as functions of the layer's parameter."""
-    p = result.layer.parameter
-    if result.layer.symbolic_coefficients:
-        msg = ("the coefficients of a GenericLayer are the symbols A, m_n themselves; pass the "
-               "expressions you need (e.g. M_expr(k)) with args=[m_1, ...]")
-        raise ValueError(msg)
-    if p is None:
-        raise ValueError("these kernel coefficients have no symbolic parameter (a numeric or "
-                         "parameter-free layer): they are numbers already; use e.g. "
-                         "kernel_coefficients(BondedLayer(), n)")
-    outs = [("A", result.A_expr)] + [(f"m_{n}", result.m_expr(n)) for n in range(1, result.order + 1)]
-    outs += [(f"M_{k}", result.M_expr(k)) for k in range(1, result.order + 1)]
-    return Spec(_as_args((p,) if args is None else args),
-                tuple((k, _as_expr(v, k)) for k, v in outs), "kernel_coefficients",
-                f"{_describe(result)} and (4.2), {result.layer!r}, order {result.order}")
+                _outputs_from(dict(outs), type(result).__name__), name, source)
 
 
 def read_spec(result: Any, args: Any) -> Spec:
@@ -155,12 +138,6 @@ def read_spec(result: Any, args: Any) -> Spec:
     hook = getattr(result, "codegen_expressions", None)
     if callable(hook):
         return _protocol_spec(result, hook, args)
-    if isinstance(result, KernelCoefficients):
-        return _coefficients_spec(result, args)
-    if hasattr(result, "pressure") and hasattr(result, "arguments"):
-        r_args = result.arguments if args is None else args
-        return Spec(_as_args(r_args), (("p", _as_expr(result.pressure, "pressure")),),
-                    _snake(type(result).__name__), _describe(result))
     if isinstance(result, (sp.Basic, int, float, Mapping, list, tuple)) and not isinstance(result, bool):
         if args is None:
             raise ValueError("args is required for a plain expression: the argument symbols in call order")
