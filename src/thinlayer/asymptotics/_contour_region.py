@@ -133,7 +133,7 @@ def short(v: float) -> str:
     return f"{v:.6g}"
 
 
-def _bounding_radius(P: Poly2, delta0: float, expr) -> tuple[float, bool]:
+def _bounding_radius(P: Poly2, delta0: float, expr, fr: Frame) -> tuple[float, bool]:
     """A radius R with Phi > delta0 for |x| > R (rigorous: True), or a first guess (False).
 
     Raises ValueError when {Phi < delta0} is unbounded for a structural reason.
@@ -143,17 +143,17 @@ def _bounding_radius(P: Poly2, delta0: float, expr) -> tuple[float, bool]:
     if d == 0:
         if c0 >= delta0:
             raise ValueError(
-                f"no contact: Phi = {expr} is constant, min Phi = {short(c0)} >= delta0 = {short(delta0)}; "
+                f"no contact: Phi = {expr} is constant, min Phi = {fr.val(c0)} >= delta0 = {fr.val(delta0)}; "
                 "delta0 must exceed the minimum of Phi"
             )
-        raise ValueError(f"Phi = {expr} is constant below delta0 = {short(delta0)}: the contact area "
+        raise ValueError(f"Phi = {expr} is constant below delta0 = {fr.val(delta0)}: the contact area "
                          "{delta0 - Phi > 0} is the whole plane (unbounded)")
     theta = np.linspace(0.0, 2 * np.pi, 2048, endpoint=False)
     lead = P.homogeneous(d, theta)
     big = float(np.max(np.abs(lead)))
     m = float(np.min(lead))
     if m < -1e-12 * big:
-        th = float(theta[int(np.argmin(lead))])
+        th = fr.angle(float(theta[int(np.argmin(lead))]))
         raise ValueError(
             f"the contact area {{delta0 - Phi > 0}} is unbounded: Phi = {expr} tends to -infinity along "
             f"the direction (cos t, sin t), t = {short(th)}; the punch must rise in every direction "
@@ -169,7 +169,159 @@ def _bounding_radius(P: Poly2, delta0: float, expr) -> tuple[float, bool]:
     # semidefinite leading part (or no positive root): a guess, to be checked by growth
     scales = [((abs(delta0 - c0) + delta0) / P.abs_sum(k)) ** (1.0 / k) for k in range(1, d + 1)
               if P.abs_sum(k) > 0]
-    return (max(scales) if scales else 1.0), False
+    # the smallest length first (the box grows until its edge is clear); the largest is checked too
+    return (min(scales) if scales else 1.0), False
+
+
+# ---------------------------------------------------------------------------------------------
+# the natural frame: the region search runs in x = A u, Phi / delta0 (scale-free)
+# ---------------------------------------------------------------------------------------------
+#: largest aspect ratio (longest / shortest principal axis of omega_0) of a supported contour: the
+#: arc-length Fourier series of an ellipse of aspect ratio r converges like exp(-2 pi k rho / L)
+#: with the tip radius rho = b^2/a and L ~ 4a, so a 1e-12 tail needs about 18 r^2 nodes;
+#: 16384 nodes (contour._NMAX) reach r = 30 (measured), and r = 40 still passes the 1e-6 checks.
+ASPECT_MAX = 32.0
+#: above this aspect ratio the spectral parametrisation is not attempted at all
+ASPECT_HARD = 1e3
+
+
+def _sym_eig2(q11: float, q12: float, q22: float):
+    """Eigenvalues (lo, hi) and the unit eigenvector of ``hi`` of a symmetric 2x2 matrix (lo via det/hi)."""
+    m = 0.5 * (q11 + q22)
+    r = math.hypot(0.5 * (q11 - q22), q12)
+    hi = m + r
+    if hi <= 0:
+        return m - r, hi, (1.0, 0.0)
+    lo = (q11 * q22 - q12 * q12) / hi
+    if q12 == 0.0:
+        v = (1.0, 0.0) if q11 >= q22 else (0.0, 1.0)
+    elif q11 >= q22:
+        v = (hi - q22, q12)
+    else:
+        v = (q12, hi - q11)
+    nv = math.hypot(*v)
+    return lo, hi, (v[0] / nv, v[1] / nv)
+
+
+class Frame:
+    """``x = A u`` and ``Phi = delta0 Phi~``: the coordinates the region is searched in (messages in x)."""
+
+    def __init__(self, A: np.ndarray, ell: float, vscale: float):
+        self.A = np.asarray(A, dtype=float)  # x = A u, A = ell * B
+        self.ell = float(ell)
+        self.vscale = float(vscale)
+
+    def to_x(self, u1, u2):
+        u1 = np.asarray(u1, dtype=float)
+        u2 = np.asarray(u2, dtype=float)
+        return self.A[0, 0] * u1 + self.A[0, 1] * u2, self.A[1, 0] * u1 + self.A[1, 1] * u2
+
+    def pt(self, u1, u2, bare: bool = False) -> str:
+        x, y = self.to_x(u1, u2)
+        p = f"({short(float(x))}, {short(float(y))})"
+        return p if bare else f"(x1, x2) = {p}"
+
+    def val(self, v: float) -> str:
+        return short(float(v) * self.vscale)
+
+    def length(self, r: float) -> str:
+        return short(float(r) * float(np.linalg.norm(self.A, 2)))
+
+    def angle(self, th: float) -> float:
+        x, y = self.to_x(math.cos(th), math.sin(th))
+        return math.atan2(float(y), float(x)) % (2 * math.pi)
+
+
+def _term_lengths(P: Poly2, delta0: float) -> dict[int, float]:
+    """``l_k``: the radius where the degree-k terms alone reach ``|delta0 - c0| + delta0`` (in logs)."""
+    c0 = P.constant()
+    top = math.log(abs(delta0 - c0) + delta0)
+    out = {}
+    for k in range(1, P.deg + 1):
+        a = P.abs_sum(k)
+        if a > 0:
+            out[k] = math.exp((top - math.log(a)) / k)
+    return out
+
+
+def natural_frame(P: Poly2, delta0: float) -> Frame:
+    """The natural lengths of Phi at delta0: ``x = A u`` with the region of size about 1 in ``u``.
+
+    A positive definite quadratic part ``x^T Q x / 2`` gives the principal lengths
+    ``l_j = sqrt(2 delta0 / lambda_j)`` along its eigenvectors (each capped by the lengths of the
+    other degrees, which bound the region when they are larger); otherwise one isotropic length,
+    the smallest ``l_k``.
+    """
+    lens = _term_lengths(P, delta0)
+    if not lens:
+        return Frame(np.eye(2), 1.0, delta0)
+    c = {(i, j): cc for i, j, cc in P.terms if i + j == 2}
+    lo, hi, v = _sym_eig2(2 * c.get((2, 0), 0.0), c.get((1, 1), 0.0), 2 * c.get((0, 2), 0.0))
+    cap = min((lk for k, lk in lens.items() if k != 2), default=math.inf)
+    if lo > 0 and hi > 0 and math.isfinite(lo) and math.isfinite(hi):
+        l_short = min(math.sqrt(2 * delta0 / hi), cap)  # along v
+        l_long = min(math.sqrt(2 * delta0 / lo), cap)  # along v rotated by 90 degrees
+        ell = math.sqrt(l_short) * math.sqrt(l_long)
+        B = np.array([[v[0] * l_short / ell, -v[1] * l_long / ell],
+                      [v[1] * l_short / ell, v[0] * l_long / ell]])
+    else:
+        # no definite quadratic part: per-axis lengths from the pure powers x1^i, x2^j when both exist
+        top = math.log(abs(delta0 - P.constant()) + delta0)
+        l1 = min((math.exp((top - math.log(abs(cc))) / i) for i, j, cc in P.terms if j == 0 and i > 0),
+                 default=None)
+        l2 = min((math.exp((top - math.log(abs(cc))) / j) for i, j, cc in P.terms if i == 0 and j > 0),
+                 default=None)
+        if l1 is not None and l2 is not None:
+            ell = math.sqrt(l1) * math.sqrt(l2)
+            B = np.diag([l1 / ell, l2 / ell])
+        else:
+            ell = min(lens.values())
+            B = np.eye(2)
+    return Frame(ell * B, ell, delta0)
+
+
+def _linear_power(p: float, q: float, n: int) -> dict[tuple[int, int], float]:
+    """``(p u + q v)^n`` as {(a, b): coefficient of u^a v^b}."""
+    return {(k, n - k): math.comb(n, k) * p**k * q ** (n - k) for k in range(n + 1)}
+
+
+def transformed(P: Poly2, fr: Frame) -> Poly2:
+    """``Phi(A u) / delta0`` as a :class:`Poly2` in ``u`` (the scale ``ell`` applied in logarithms)."""
+    ell, B = fr.ell, fr.A / fr.ell
+    lg, lv = math.log(ell), math.log(fr.vscale)
+    out: dict[tuple[int, int], float] = {}
+    for i, j, c in P.terms:
+        cs = math.copysign(math.exp(math.log(abs(c)) + (i + j) * lg - lv), c)
+        if cs == 0.0 or not math.isfinite(cs):
+            if cs == 0.0:
+                continue  # below 1e-308 of delta0 on the region: nothing
+            raise ValueError(f"the term {c:g} x_1^{i} x_2^{j} overflows on the natural length {ell:g} of Phi")
+        px = _linear_power(B[0, 0], B[0, 1], i)
+        py = _linear_power(B[1, 0], B[1, 1], j)
+        for (a1, b1), v1 in px.items():
+            for (a2, b2), v2 in py.items():
+                key = (a1 + a2, b1 + b2)
+                out[key] = out.get(key, 0.0) + cs * v1 * v2
+    big = max((abs(v) for v in out.values()), default=0.0)
+    return Poly2([(i, j, v) for (i, j), v in sorted(out.items()) if abs(v) > 1e-300 * big and v != 0.0])
+
+
+def _aspect(curve_u: np.ndarray, fr: Frame) -> float:
+    """sqrt(largest / smallest principal second moment) of the polygon, mapped to x (ellipse: a/b)."""
+    x, y = curve_u[:, 0], curve_u[:, 1]
+    xn, yn = np.roll(x, -1), np.roll(y, -1)
+    a = x * yn - xn * y
+    A = 0.5 * a.sum()
+    cx = ((x + xn) * a).sum() / (6 * A)
+    cy = ((y + yn) * a).sum() / (6 * A)
+    mxx = ((x * x + x * xn + xn * xn) * a).sum() / (12 * A) - cx * cx
+    myy = ((y * y + y * yn + yn * yn) * a).sum() / (12 * A) - cy * cy
+    mxy = ((x * yn + 2 * x * y + 2 * xn * yn + xn * y) * a).sum() / (24 * A) - cx * cy
+    B = fr.A / fr.ell
+    M = B @ np.array([[mxx, mxy], [mxy, myy]]) @ B.T
+    lo, hi, _ = _sym_eig2(M[0, 0], M[0, 1], M[1, 1])
+    return math.sqrt(hi / lo) if lo > 0 else math.inf
+
 
 
 def _box_edge(x0, x1, y0, y1, n=256):
@@ -179,25 +331,49 @@ def _box_edge(x0, x1, y0, y1, n=256):
     return xs, ys
 
 
+def _edge_min(P: Poly2, fixed: float, lo: float, hi: float, axis: int) -> float:
+    """The minimum of Phi on the segment x_axis = fixed, the other coordinate in [lo, hi] (exact 1-D polynomial)."""
+    coef = np.zeros(P.deg + 1)
+    for i, j, c in P.terms:
+        k, m = (j, i) if axis == 0 else (i, j)  # m: power of the fixed coordinate, k: of the free one
+        coef[k] += c * fixed**m
+    p = np.polynomial.Polynomial(coef)
+    cand = [lo, hi]
+    if P.deg >= 2 and np.any(coef[1:] != 0):
+        for r in p.deriv().roots():
+            if abs(r.imag) <= 1e-9 * max(1.0, abs(r)) and lo <= r.real <= hi:
+                cand.append(r.real)
+    return float(np.min(p(np.array(cand))))
+
+
 def _edge_clear(P: Poly2, delta0: float, box) -> bool:
     xs, ys = _box_edge(*box)
-    return bool(np.all(P.value(xs, ys) > delta0))
+    if not np.all(P.value(xs, ys) > delta0):
+        return False
+    x0, x1, y0, y1 = box
+    with np.errstate(all="ignore"):
+        mins = [_edge_min(P, x0, y0, y1, 0), _edge_min(P, x1, y0, y1, 0),
+                _edge_min(P, y0, x0, x1, 1), _edge_min(P, y1, x0, x1, 1)]
+    return bool(all(m > delta0 or not math.isfinite(m) for m in mins))
 
 
-def _outer_box(P: Poly2, delta0: float, expr):
-    R, rigorous = _bounding_radius(P, delta0, expr)
+def _outer_box(P: Poly2, delta0: float, expr, fr: Frame):
+    R, rigorous = _bounding_radius(P, delta0, expr, fr)
     if rigorous:
         R = 1.25 * R + 1e-300
         return (-R, R, -R, R)
-    # heuristic: grow until the box edge lies in {Phi > delta0}, then confirm on larger boxes
+    # heuristic: grow until the box edge lies in {Phi > delta0}, then confirm on larger boxes and at the
+    # largest natural length (where the weakest terms alone reach delta0)
+    far = max(_term_lengths(P, delta0).values(), default=R)
     for _ in range(60):
-        if all(_edge_clear(P, delta0, (-R * f, R * f, -R * f, R * f)) for f in (1.0, 2.0, 4.0, 16.0, 256.0)):
+        fs = (1.0, 2.0, 4.0, 16.0, 256.0) + ((2 * far / R,) if 2 * far > 256 * R else ())
+        if all(_edge_clear(P, delta0, (-R * f, R * f, -R * f, R * f)) for f in fs):
             return (-2 * R, 2 * R, -2 * R, 2 * R)
         R *= 2.0
     raise ValueError(
-        f"the contact area {{delta0 - Phi > 0}} is unbounded for Phi = {expr}, delta0 = {short(delta0)}: "
+        f"the contact area {{delta0 - Phi > 0}} is unbounded for Phi = {expr}, delta0 = {fr.val(delta0)}: "
         "the set {Phi < delta0} reaches the edge of every box up to "
-        f"|x| = {short(R)}; the punch must rise above delta0 in every direction"
+        f"|x| = {fr.length(R)}; the punch must rise above delta0 in every direction"
     )
 
 
@@ -275,7 +451,8 @@ def _inside(poly: np.ndarray, x, y) -> np.ndarray:
     return (np.count_nonzero(cross, axis=1) % 2) == 1
 
 
-def _closed_lines(xs, ys, Z, level, expr, delta0):
+def _closed_lines(xs, ys, Z, level, expr, delta0, fr: Frame, outer: tuple):
+    """The closed level lines on one grid; an open one is unboundedness only on the outer box."""
     import contourpy
 
     gen = contourpy.contour_generator(xs, ys, Z, line_type=contourpy.LineType.Separate)
@@ -285,8 +462,13 @@ def _closed_lines(xs, ys, Z, level, expr, delta0):
         if len(ln) < 4:
             continue
         if not np.allclose(ln[0], ln[-1], rtol=0, atol=1e-12 * (abs(ln).max() + 1e-300)):
+            if (xs[0], xs[-1], ys[0], ys[-1]) != tuple(outer):
+                raise RuntimeError(
+                    f"could not resolve the level set Phi = {fr.val(delta0)} of Phi = {expr}: it leaves every zoom "
+                    "box of the search grid (features much thinner than the region, e.g. long narrow arms)"
+                )
             raise ValueError(
-                f"the contact area {{delta0 - Phi > 0}} is unbounded for Phi = {expr}, delta0 = {short(delta0)}: "
+                f"the contact area {{delta0 - Phi > 0}} is unbounded for Phi = {expr}, delta0 = {fr.val(delta0)}: "
                 "a level line Phi = delta0 leaves the search box"
             )
         out.append(ln[:-1])
@@ -305,7 +487,7 @@ def _expand(box, frac, outer):
 
 
 def _lowest_point(P: Poly2, F: np.ndarray, X: np.ndarray, Y: np.ndarray, crit: list, delta0: float,
-                  expr) -> tuple[float, float, float]:
+                  expr, fr: Frame) -> tuple[float, float, float]:
     """The global minimum of Phi (grid and critical points); no contact when it is not below delta0."""
     k = int(np.argmin(F))
     best = (float(F.flat[k]), float(X.flat[k]), float(Y.flat[k]))
@@ -316,8 +498,8 @@ def _lowest_point(P: Poly2, F: np.ndarray, X: np.ndarray, Y: np.ndarray, crit: l
     scale = max(delta0, abs(best[0]))
     if best[0] >= delta0 - 1e-12 * scale:
         raise ValueError(
-            f"no contact: delta0 = {short(delta0)} does not exceed the minimum of Phi = {expr}, "
-            f"min Phi = {short(best[0])} at (x1, x2) = ({short(best[1])}, {short(best[2])}); "
+            f"no contact: delta0 = {fr.val(delta0)} does not exceed the minimum of Phi = {expr}, "
+            f"min Phi = {fr.val(best[0])} at {fr.pt(best[1], best[2])}; "
             "delta0 must be larger than min Phi for the set {delta0 - Phi > 0} to be non-empty"
         )
     return best
@@ -351,7 +533,7 @@ def _fit(P: Poly2, delta0: float, b: tuple, outer: tuple) -> tuple:
     return b
 
 
-def _trace(P: Poly2, delta0: float, expr, box: tuple, outer: tuple, crit: list) -> tuple[list, list]:
+def _trace(P: Poly2, delta0: float, expr, box: tuple, outer: tuple, crit: list, fr: Frame) -> tuple[list, list]:
     """The closed level lines on a fine grid, zooming in while they fill less than a fifth of the box."""
     Gf = 129
     curves: list = []
@@ -359,7 +541,7 @@ def _trace(P: Poly2, delta0: float, expr, box: tuple, outer: tuple, crit: list) 
         xs, ys, X, Y, D = _grid(P, box, Gf, Gf)
         crit = crit + [c for c in _critical_points(P, X, Y, D, box)
                        if all(math.hypot(c[0] - p, c[1] - q) > 1e-6 * (box[1] - box[0]) for p, q in crit)]
-        curves = _closed_lines(xs, ys, D[0], delta0, expr, delta0)
+        curves = _closed_lines(xs, ys, D[0], delta0, expr, delta0, fr, outer)
         if curves:
             pts = np.vstack(curves)
             cb = (pts[:, 0].min(), pts[:, 0].max(), pts[:, 1].min(), pts[:, 1].max())
@@ -372,19 +554,20 @@ def _trace(P: Poly2, delta0: float, expr, box: tuple, outer: tuple, crit: list) 
     return curves, crit
 
 
-def _check_smooth(P: Poly2, crit: list, delta0: float, expr) -> None:
+def _check_smooth(P: Poly2, crit: list, delta0: float, expr, fr: Frame) -> None:
     """A critical point on the level set: Gamma_0 is not smooth there."""
     for cx, cy in crit:
         v = float(P.value(cx, cy))
         if abs(v - delta0) <= 1e-8 * max(delta0, abs(v)):
             raise ValueError(
-                f"the contour Phi = delta0 = {short(delta0)} of Phi = {expr} is not smooth: it passes through "
-                f"the critical point (x1, x2) = ({short(cx)}, {short(cy)}) where grad Phi = 0; "
+                f"the contour Phi = delta0 = {fr.val(delta0)} of Phi = {expr} is not smooth: it passes through "
+                f"the critical point {fr.pt(cx, cy)} where grad Phi = 0; "
                 "choose a delta0 different from the critical values of Phi"
             )
 
 
-def _small_components(P: Poly2, curves: list, mins: list, delta0: float, expr, outer: tuple) -> list:
+def _small_components(P: Poly2, curves: list, mins: list, delta0: float, expr, outer: tuple,
+                      fr: Frame) -> list:
     """Minima below delta0 that no curve encloses: zoom around each (unresolved small components)."""
     curves = list(curves)
     for cx, cy, r in mins:
@@ -392,28 +575,28 @@ def _small_components(P: Poly2, curves: list, mins: list, delta0: float, expr, o
             continue
         lb = _fit(P, delta0, _expand((cx - r, cx + r, cy - r, cy + r), 0.5, outer), outer)
         lxs, lys, _, _, LD = _grid(P, lb, 97, 97)
-        for c in _closed_lines(lxs, lys, LD[0], delta0, expr, delta0):
+        for c in _closed_lines(lxs, lys, LD[0], delta0, expr, delta0, fr, outer):
             if _inside(c, cx, cy)[0]:
                 curves.append(c)
                 break
     return curves
 
 
-def _check_one_region(P: Poly2, curves: list, crit: list, delta0: float, expr) -> np.ndarray:
+def _check_one_region(P: Poly2, curves: list, crit: list, delta0: float, expr, fr: Frame) -> np.ndarray:
     """The one closed curve of a simply connected region; holes and extra components are errors."""
     if not curves:
-        raise RuntimeError(f"could not resolve the level set Phi = {short(delta0)} of Phi = {expr} on a grid")
+        raise RuntimeError(f"could not resolve the level set Phi = {fr.val(delta0)} of Phi = {expr} on a grid")
     if len(curves) > 1:
         nested = any(_inside(b, *a[0])[0] for a in curves for b in curves if a is not b)
-        cents = "; ".join(f"({short(c[:, 0].mean())}, {short(c[:, 1].mean())})" for c in curves)
+        cents = "; ".join(fr.pt(c[:, 0].mean(), c[:, 1].mean(), bare=True) for c in curves)
         if nested:
             raise ValueError(
-                f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {short(delta0)} is not simply "
+                f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} is not simply "
                 f"connected: its boundary has {len(curves)} nested closed curves (a region with a hole, e.g. an "
                 f"annulus) around {cents}; the boundary-layer analysis needs one simply connected region"
             )
         raise ValueError(
-            f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {short(delta0)} has {len(curves)} "
+            f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} has {len(curves)} "
             f"components (near {cents}); the boundary-layer analysis needs one simply connected region"
         )
     curve = curves[0]
@@ -422,33 +605,58 @@ def _check_one_region(P: Poly2, curves: list, crit: list, delta0: float, expr) -
         ins = _inside(curve, cx, cy)[0]
         if ins and v > delta0:
             raise ValueError(
-                f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {short(delta0)} is not simply "
-                f"connected: it has a hole around (x1, x2) = ({short(cx)}, {short(cy)}) where Phi = {short(v)} > "
+                f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} is not simply "
+                f"connected: it has a hole around {fr.pt(cx, cy)} where Phi = {fr.val(v)} > "
                 "delta0; the boundary-layer analysis needs one simply connected region"
             )
         if not ins and v < delta0:
             raise ValueError(
-                f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {short(delta0)} has more than "
-                f"one component: Phi = {short(v)} < delta0 at (x1, x2) = ({short(cx)}, {short(cy)}) outside the "
+                f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} has more than "
+                f"one component: Phi = {fr.val(v)} < delta0 at {fr.pt(cx, cy)} outside the "
                 "main one; the boundary-layer analysis needs one simply connected region"
             )
     return curve
 
 
-def region_curve(P: Poly2, delta0: float, expr):
+def region(P: Poly2, delta0: float, expr):
     """The polygon (M, 2) of the single closed level line, after all structural checks (3.3).
 
-    Returns the curve, the critical points of Phi found on the way and the lowest point ``(Phi, x1, x2)``.
+    The search is scale-free: it runs on ``Phi(A u) / delta0 = 1`` in the natural frame ``x = A u``
+    (:func:`natural_frame`) and maps back.  Returns the curve, the critical points of Phi found on
+    the way, the lowest point ``(Phi, x1, x2)`` (all in x) and the aspect ratio of the region
+    (longest/shortest principal axis, from its second moments; ``a/b`` for an ellipse).
     """
-    outer = _outer_box(P, delta0, expr)
+    fr = natural_frame(P, delta0)
+    Q = transformed(P, fr)
+    d1 = 1.0
+    outer = _outer_box(Q, d1, expr, fr)
     G = 97
-    _, _, X, Y, D = _grid(P, outer, G, G)
-    crit = _critical_points(P, X, Y, D, outer)
-    best = _lowest_point(P, D[0], X, Y, crit, delta0, expr)
+    _, _, X, Y, D = _grid(Q, outer, G, G)
+    crit = _critical_points(Q, X, Y, D, outer)
+    best = _lowest_point(Q, D[0], X, Y, crit, d1, expr, fr)
     cell = ((outer[1] - outer[0]) / (G - 1), (outer[3] - outer[2]) / (G - 1))
-    boxes, mins = _zoom_boxes(P, D[0], X, Y, crit, delta0, cell, G)
+    boxes, mins = _zoom_boxes(Q, D[0], X, Y, crit, d1, cell, G)
     bb = (min(b[0] for b in boxes), max(b[1] for b in boxes), min(b[2] for b in boxes), max(b[3] for b in boxes))
-    curves, crit = _trace(P, delta0, expr, _fit(P, delta0, _expand(bb, 0.1, outer), outer), outer, crit)
-    _check_smooth(P, crit, delta0, expr)
-    curves = _small_components(P, curves, mins, delta0, expr, outer)
-    return _check_one_region(P, curves, crit, delta0, expr), crit, best
+    curves, crit = _trace(Q, d1, expr, _fit(Q, d1, _expand(bb, 0.1, outer), outer), outer, crit, fr)
+    _check_smooth(Q, crit, d1, expr, fr)
+    curves = _small_components(Q, curves, mins, d1, expr, outer, fr)
+    curve = _check_one_region(Q, curves, crit, d1, expr, fr)
+    cx, cy = fr.to_x(curve[:, 0], curve[:, 1])
+    crit_x = [tuple(float(t) for t in fr.to_x(a, b)) for a, b in crit]
+    bx, by = fr.to_x(best[1], best[2])
+    return np.column_stack([cx, cy]), crit_x, (best[0] * delta0, float(bx), float(by)), _aspect(curve, fr)
+
+
+def region_curve(P: Poly2, delta0: float, expr):
+    """:func:`region` without the aspect ratio: ``(curve, critical points, lowest point)`` in x."""
+    return region(P, delta0, expr)[:3]
+
+
+def too_elongated(expr, delta0: float, ratio: float) -> ValueError:
+    """The one-line error for a contour beyond the spectral parametrisation's aspect-ratio limit."""
+    return ValueError(
+        f"the contact contour of Phi = {expr} at delta0 = {short(delta0)} is too elongated for the arc-length "
+        f"Fourier series: its aspect ratio (longest/shortest principal axis) is {ratio:.3g}, above the supported "
+        f"limit {ASPECT_MAX:g} (an ellipse of aspect ratio r needs about 18 r^2 = {18 * ratio * ratio:.2g} nodes, "
+        "at most 16384 are used)"
+    )

@@ -32,9 +32,15 @@ place of ``R_1^*``; see :meth:`EllipseContour.scaled_semi_axes`).
 
 Method of :func:`contact_contour`:
 
+0. the natural frame (scale-free search): steps 1-3 run on ``Phi(A u)/delta0 = 1`` with
+   ``x = A u``, ``A`` built from the principal lengths ``l_j = sqrt(2 delta0/lambda_j)`` of a
+   positive definite quadratic part (eigen-decomposition of its Hessian; lengths of the other
+   degrees cap them), else from the smallest length at which one degree's terms reach delta0;
+   so coefficients from 1e-70 to 1e30 and rotated, elongated regions are found on O(1) grids;
 1. a box that contains the whole set ``{Phi < delta0}`` (a rigorous radius when the leading
-   homogeneous part of Phi is positive definite, otherwise a box grown until its edge lies in
-   ``{Phi > delta0}``);
+   homogeneous part of Phi is positive definite, otherwise a box grown from the smallest natural
+   length until its edge lies in ``{Phi > delta0}``, confirmed on boxes up to 256 times larger
+   and at the largest natural length);
 2. the critical points of Phi in the box (Newton on ``grad Phi = 0`` from the grid minima of
    ``|grad Phi|^2``): the minimum of Phi, critical points on the level set (not smooth), maxima
    inside the region (holes), minima outside it (further components);
@@ -49,10 +55,21 @@ Method of :func:`contact_contour`:
    ``| |f'| - 1 |`` at points halfway between the nodes, the Fourier tail and the turning number
    ``(1/2pi) oint kappa ds = 1``.
 
-Limits: components, holes and critical points smaller than the search grids can be missed
+Limits: the supported aspect ratio of omega_0 (longest/shortest principal axis, from its second
+moments) is ``ASPECT_MAX = 32``: the arc-length Fourier series of an ellipse of aspect ratio
+``r`` decays like ``exp(-2 pi k rho/L)`` with tip radius ``rho = b^2/a`` and ``L ~ 4a``, so it needs
+about ``18 r^2`` nodes; ``_NMAX = 16384`` nodes reach ``r = 32`` with ``| |f'| - 1 | = 4.9e-7`` (measured;
+``r = 35`` gives 4e-6 and fails the 1e-6 check).  A more elongated contour is kept only if it
+still passes the spectral checks (ends blunter than an ellipse's, e.g. ``x1^2 + 1e6 x2^4``),
+otherwise it is a ValueError naming its aspect ratio and the limit; above ``ASPECT_HARD = 1e3``
+(an ellipse would need about 1.8e7 nodes) the spectral parametrisation is not attempted.  The
+spectral step itself runs on ``Phi(ell u)/delta0 = 1`` with ``ell`` the size of the region, so its
+tolerances do not depend on the units.
+Components, holes and critical points smaller than the search grids can be missed
 (structures are found from grid cells, grid minima of ``|grad Phi|^2`` and zooms around every
 minimum below delta0); when the leading homogeneous part of Phi is only semidefinite, the
-boundedness of ``{Phi < delta0}`` is checked on box edges up to 512 times the first guess.
+boundedness of ``{Phi < delta0}`` is checked on box edges (exact minimum of the 1-D polynomial
+on each edge) up to 256 times the first guess and at the largest natural length.
 """
 from __future__ import annotations
 
@@ -69,7 +86,18 @@ import sympy as sp
 from .. import symbols as S
 from ..display import RichDisplay, fmt
 from ..parse import as_expr
-from ._contour_region import Poly2, as_polynomial, region_curve, short, signed_area
+from ._contour_region import (
+    ASPECT_HARD,
+    ASPECT_MAX,
+    Frame,
+    Poly2,
+    as_polynomial,
+    region,
+    short,
+    signed_area,
+    too_elongated,
+    transformed,
+)
 
 __all__ = ["ContactContour", "ContourAccuracy", "EllipseContour", "contact_contour", "ellipse_contour"]
 
@@ -627,7 +655,12 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     ValueError
         delta0 <= 0; Phi not a polynomial in x1, x2 or with other free symbols; no contact
         (delta0 <= min Phi, the minimum is named); an unbounded region; several components
-        or a hole; a level set through a critical point of Phi (not smooth).
+        or a hole; a level set through a critical point of Phi (not smooth); a contour more
+        elongated than the supported aspect ratio 32 (longest/shortest principal axis of
+        omega_0) that the arc-length Fourier series cannot represent with at most 16384 nodes
+        (an ellipse needs about ``18 ratio^2``; see the module docstring).  Overall scale is
+        free: the region search runs in the natural frame of Phi at delta0, so e.g.
+        ``1e-70 (x1^2 + 4 x2^2)`` and ``1e30 (x1^2 + 4 x2^2)`` work alike.
 
     Examples
     --------
@@ -647,21 +680,29 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     if P.deg < 2 and P.deg >= 1:
         raise ValueError(f"the contact area {{delta0 - Phi > 0}} is unbounded: Phi = {expr} is linear "
                          "(a half-plane); the punch must rise in every direction")
-    poly, _, best = region_curve(P, d0, expr)
-    res = _nodes_by_reference(P, d0, poly, n, tol)
-    acc = _accuracy(P, d0, *res) if res is not None else None
+    poly, _, best, aspect = region(P, d0, expr)
+    if aspect > ASPECT_HARD:
+        raise too_elongated(expr, d0, aspect)
+    # the spectral work in x = ell u, Phi = d0 Phi~ (ell the size of the region): arc length scales by ell
+    ell = float(np.max(np.abs(poly)))
+    Ps = transformed(P, Frame(ell * np.eye(2), ell, d0))
+    polys = poly / ell
+    res = _nodes_by_reference(Ps, 1.0, polys, n, tol)
+    acc = _accuracy(Ps, 1.0, *res) if res is not None else None
     if acc is None or (n is None and not _acceptable(acc, 1e-9)):
-        alt = _nodes_by_ode(P, d0, poly, n, tol)
+        alt = _nodes_by_ode(Ps, 1.0, polys, n, tol)
         if alt is not None:
-            acc_alt = _accuracy(P, d0, *alt)
+            acc_alt = _accuracy(Ps, 1.0, *alt)
             if acc is None or acc_alt.speed_error < acc.speed_error:
                 res, acc = alt, acc_alt
     if acc is None or (not _acceptable(acc, 1e-6) if n is None else abs(acc.turning_number - 1) > 1e-3):
+        if aspect > ASPECT_MAX:
+            raise too_elongated(expr, d0, aspect)
         raise RuntimeError(
             f"the spectral contour of Phi = {expr} at delta0 = {short(d0)} is inaccurate ({acc}): the contour "
             f"has features too small for {_NMAX} arc-length nodes; try a larger n"
         )
-    Z, L = res
+    Z, L = res[0] * ell, res[1] * ell
     N = len(Z)
     Zhat = np.fft.fft(Z)
     k, c = _sym_coeffs(Zhat)
