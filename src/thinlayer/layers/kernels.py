@@ -372,7 +372,7 @@ class HalfSpace(LayerKernel):
             u = kernel_numeric.check_u(u)
             if not over_u:
                 return np.ones_like(u)
-            with np.errstate(divide="ignore"):
+            with np.errstate(divide="ignore", over="ignore"):  # 1/u beyond the double range (u < 5.6e-309) is inf
                 return 1.0 / u
         if backend == "mpmath":
             u = kernel_numeric.check_u_mpmath(u)
