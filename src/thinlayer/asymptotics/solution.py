@@ -97,15 +97,10 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     if layer.parameter is not None:
         raise ValueError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
                          "not the symbolic BondedLayer()")
-    fixed = layer.numeric_nu
-    if fixed is None:  # the kernel does not depend on nu (frictionless base): vartheta still does
-        if nu is None:
-            raise ValueError(f"the {layer.base}-base kernel does not fix the Poisson ratio: pass nu= "
-                             "(-1 < nu < 1/2) for vartheta = mu/(1 - nu)")
-        return layer, parse_nu(nu, floats="float", example="0.3, '3/10'")
-    if nu is not None and abs(float(nu) - fixed) > 1e-12:
-        raise ValueError(f"nu = {nu!r} disagrees with the layer's Poisson ratio {fixed}")
-    return layer, fixed
+    given = layer.poisson_ratio(nu)  # the layer's own nu, or nu for a kernel that fixes none (frictionless base)
+    if layer.numeric_nu is None:
+        return layer, parse_nu(given, floats="float", example="0.3, '3/10'")
+    return layer, given
 
 
 def _numeric_punch(punch: Any, parameters: dict | None) -> Punch:

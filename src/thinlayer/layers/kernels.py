@@ -111,6 +111,23 @@ class LayerKernel(RichDisplay, ABC):
         """The Poisson ratio the layer fixes, as a float; None when it fixes none (symbolic or nu-free)."""
         return None
 
+    def poisson_ratio(self, nu: Any = None) -> Any:
+        """The Poisson ratio that defines ``vartheta = mu/(1 - nu)`` (2.1): the layer's own, or ``nu``.
+
+        A layer that fixes nu (:attr:`numeric_nu`) returns it, and a given ``nu`` must agree with it; a
+        layer that fixes none (a frictionless base, the half-space) needs ``nu``, returned as given for the
+        caller to parse.
+        """
+        fixed = self.numeric_nu
+        if fixed is None:
+            if nu is None:
+                raise ValueError(f"{self!r} does not fix Poisson's ratio: pass nu= (-1 < nu < 1/2) "
+                                 "to define vartheta = mu/(1 - nu)")
+            return nu
+        if nu is not None and abs(float(nu) - fixed) > 1e-12:
+            raise ValueError(f"nu={nu!r} disagrees with the layer's Poisson ratio {fixed}")
+        return fixed
+
     @property
     def vartheta(self) -> sp.Expr:
         """``vartheta = mu/(1 - nu)`` (2.1), with the layer's nu when it fixes one."""

@@ -63,17 +63,10 @@ def numeric_layer_nu(layer: Any, nu: Any) -> float:
     if layer_nu is None and layer.parameter is not None and not layer.symbolic_coefficients:
         raise ValueError("the direct solver needs a numeric Poisson ratio: build e.g. BondedLayer(0.3), "
                          f"not {layer!r}")
-    if layer_nu is not None:
-        if nu is not None and abs(float(nu) - layer_nu) > 1e-12:
-            raise ValueError(f"nu={nu!r} disagrees with the layer's Poisson ratio {layer_nu}")
-        nu_val = layer_nu
-    else:
-        if nu is None:
-            raise ValueError(f"{type(layer).__name__} does not fix Poisson's ratio: pass nu= (-1 < nu < 1/2) "
-                             "to define vartheta = mu/(1-nu)")
-        if isinstance(nu, bool) or not isinstance(nu, (numbers.Real, sp.Number)):
-            raise TypeError(f"nu must be a real number with -1 < nu < 1/2, got {nu!r}")
-        nu_val = float(nu)
+    nu_val = layer.poisson_ratio(nu)
+    if layer_nu is None and (isinstance(nu_val, bool) or not isinstance(nu_val, (numbers.Real, sp.Number))):
+        raise TypeError(f"nu must be a real number with -1 < nu < 1/2, got {nu!r}")
+    nu_val = float(nu_val)
     # nu = 1/2 is admissible only when the layer itself fixes it (the incompressible bonded layer, kappa = 1)
     if not (-1 < nu_val < 0.5 or (nu_val == 0.5 and layer_nu == 0.5)):
         raise ValueError(f"Poisson ratio nu={nu_val} outside the admissible range -1 < nu < 1/2 "
