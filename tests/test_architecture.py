@@ -31,9 +31,10 @@ RANK = {
     "thinlayer.asymptotics": 4,  # (2.14)-(3.25), (4.1), (I.2)-(I.13): the stages of the paper
     "thinlayer.numerics": 4,     # (1.5)-(1.8) solved directly: independent of the asymptotics
     "thinlayer.errata": 5,       # printed vs derived equations, each re-derived by the stages
-    "thinlayer.validation": 6,   # the only place that imports stages and numerics together
-    "thinlayer.export": 7,       # report, derivation files, code generation, CLI
-    "thinlayer": 8,              # the front door (__init__) and __main__
+    "thinlayer.contact": 6,      # the user's question answered: picks a stage or the direct solver (model="auto")
+    "thinlayer.validation": 7,   # studies that compare stages and numerics
+    "thinlayer.export": 8,       # report, derivation files, code generation, CLI
+    "thinlayer": 9,              # the front door (__init__) and __main__
 }
 
 #: asymptotic stages in the paper's order: each imports only earlier ones
