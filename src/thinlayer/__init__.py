@@ -6,7 +6,8 @@ and ``lambdify()``:
 ``kernel_coefficients`` (2.20), (4.2) -> ``kernel_moment`` (2.15), (2.21) ->
 ``moment_expansion`` (2.22) -> ``inner_pressure`` (2.24)-(2.31), (4.1) ->
 ``contact_contour`` (3.1)-(3.14) -> ``alexandrov_solution`` / ``boundary_layer_exact`` (3.15)-(3.25) ->
-``force_law`` (1.8) and ``composite_pressure``; ``solve`` joins them for numeric parameters.
+``force_law`` (1.8) and ``composite_pressure``.  ``solve`` answers for numeric parameters with the model
+that holds (the compressible expansion, the two-term or incompressible model, or the direct solver).
 The direct numerical solvers (``solve_axisymmetric``, ``solve_2d``) are the independent reference.
 
 The folders follow the pipeline: ``layers/`` -> ``punch`` -> ``asymptotics/`` (and, independent of it,
@@ -27,7 +28,7 @@ from .asymptotics.force_law import force_law
 from .asymptotics.incompressible import obstacle_problem, regime, thin_layer_operator, two_term_sphere
 from .asymptotics.inner import inner_pressure
 from .asymptotics.moment_expansion import moment_expansion
-from .asymptotics.solution import ContactSolution, solve
+from .contact.solve import Indentation, solve
 from .asymptotics.wiener_hopf import boundary_layer_exact, edge_shift_alexandrov, edge_shift_exact
 from .layers.coefficients import kernel_coefficients
 from .layers.kernels import (
@@ -55,8 +56,8 @@ __all__ = [
     "edge_shift_exact", "edge_shift_alexandrov", "force_law", "composite_pressure",
     # nu = 1/2 and near it (I.1)-(I.13)
     "thin_layer_operator", "obstacle_problem", "two_term_sphere", "regime",
-    # numbers: the contact solution and the direct solvers
-    "solve", "ContactSolution", "solve_axisymmetric", "solve_2d",
+    # the user's question: force, contact size and pressure by the model that holds; the direct solvers
+    "solve", "Indentation", "solve_axisymmetric", "solve_2d",
     # errors and tools
     "IncompressibleLayerError", "PunchError", "MissingArgumentError", "checked_lambdify",
     # modules
@@ -81,6 +82,7 @@ _MOVED = {
     **dict.fromkeys(["solve_obstacle_grid", "GridContact"], "thinlayer.numerics.obstacle"),
     **dict.fromkeys(["compare_sphere_models", "SphereModels"], "thinlayer.validation.comparison"),
     "InnerPressure": "thinlayer.asymptotics.inner",
+    "ContactSolution": "thinlayer.asymptotics.solution",
     "MomentExpansion": "thinlayer.asymptotics.moment_expansion",
     **dict.fromkeys(["WienerHopfSolution", "edge_shift_table", "wiener_hopf_solution"],
                     "thinlayer.asymptotics.wiener_hopf"),

@@ -39,8 +39,10 @@ def test_layer_kernel_is_the_nu_half_member_of_23():
     assert float(lhs.subs(u, 0.7)) == pytest.approx(float(layer.L_numeric(0.7)), rel=1e-14)
     assert layer.kappa == 1 and layer.nu == sp.Rational(1, 2)
     assert sp.simplify(layer.vartheta - 2 * S.mu) == 0  # vartheta = mu/(1 - nu) (2.1)
+    # nu = 1/2 spelled as a bonded layer is the incompressible layer (A = 0 in (2.4): no compressible data)
+    assert BondedLayer(0.5) == layer and BondedLayer("1/2") == layer
     with pytest.raises(IncompressibleLayerError):
-        BondedLayer(0.5)  # the compressible kernel class refuses nu = 1/2 (A = 0)
+        BondedLayer(0.5).m(1)
 
 
 def test_coefficients_against_sympy_series():

@@ -17,7 +17,7 @@ import sympy as sp
 from thinlayer import BondedLayer, FrictionlessLayer, GenericLayer, Punch, PunchError, solve_axisymmetric
 from thinlayer import symbols as S
 from thinlayer.asymptotics.force_law import boundary_layer_force_defect, force_law, h_star
-from thinlayer.asymptotics.solution import solve
+from thinlayer.asymptotics.solution import compressible_solution as solve
 from thinlayer.asymptotics.wiener_hopf import boundary_layer_exact
 
 r = sp.Symbol("r", nonnegative=True)

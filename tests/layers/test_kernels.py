@@ -109,9 +109,26 @@ def test_poisson_ratio_out_of_range(bad):
 
 
 @pytest.mark.parametrize("half", [0.5, "1/2", sp.Rational(1, 2)])
-def test_incompressible_layer_is_refused(half):
+def test_bonded_layer_at_one_half_is_the_incompressible_layer(half):
+    from thinlayer import IncompressibleLayer
+
+    layer = BondedLayer(half)
+    assert layer == IncompressibleLayer() and layer.numeric_nu == 0.5
+    # the same kernel (2.3) at kappa = 1, but A = 0 (2.4): the compressible coefficients (2.20) are refused
+    assert layer.L_numeric(0.7) == pytest.approx(BondedLayer(0.4999999999).L_numeric(0.7), rel=1e-8)
     with pytest.raises(IncompressibleLayerError, match="incompressible"):
-        BondedLayer(half)
+        layer.coefficients(1)
+
+
+@pytest.mark.parametrize("nu", [0.3, "3/10", 0.5, -0.5])
+def test_frictionless_layer_takes_a_poisson_ratio(nu):
+    layer = FrictionlessLayer(nu)
+    assert layer.poisson_ratio() == pytest.approx(float(sp.Rational(str(nu))) if isinstance(nu, str) else nu)
+    assert layer.L_numeric(0.7) == FrictionlessLayer().L_numeric(0.7)  # the kernel does not depend on nu
+    with pytest.raises(ValueError, match="disagrees"):
+        layer.poisson_ratio(0.1)
+    with pytest.raises(ValueError, match="nu"):
+        FrictionlessLayer(0.7)
 
 
 def test_bad_nu_types():

@@ -1,6 +1,6 @@
 r"""One call for users: the contact solution for numeric parameters.
 
-:func:`solve` joins the stages of the paper for a layer of thickness ``H``, shear modulus ``mu``
+:func:`compressible_solution` joins the stages of the paper for a layer of thickness ``H``, shear modulus ``mu``
 and Poisson ratio ``nu`` indented by ``delta0`` (or pressed by a force ``P``):
 
 * the leading contact area omega_0 = {delta0 - Phi > 0} and its contour Gamma_0 (3.1)-(3.14)
@@ -18,7 +18,7 @@ grow like ``m_1 ~ 1/(3 (1 - 2 nu))`` as nu -> 1/2, so every solution carries an 
 structure of the expansion: powers of ``kappa^2 = |P1/P0| + (1 + h^*^2)(H/a)^2``, checked against the
 direct solver).
 
-Validity: :func:`solve` refuses, with a one-line :class:`ValidityError` naming the quantity, its
+Validity: :func:`compressible_solution` refuses, with a one-line :class:`ValidityError` naming the quantity, its
 estimate, the tolerance and the model that would hold, when an estimate exceeds ``tol`` (default 5 %)
 or a result would be unphysical (``P <= 0``, area ``<= 0``, a non-finite force, area or pressure).  The
 force is computed per unit ``mu`` and scaled at the end, so it overflows only when the true force
@@ -45,9 +45,10 @@ from ..punch import Punch, PunchError
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, force_law
 
-__all__ = ["ContactSolution", "ValidityError", "solve", "MAX_FORCE_ORDER", "DEFAULT_TOL"]
+__all__ = ["ContactSolution", "ValidityError", "compressible_solution", "numeric_punch", "MAX_FORCE_ORDER",
+           "DEFAULT_TOL"]
 
-#: default tolerance of :func:`solve` on the relative error estimates
+#: default tolerance of :func:`compressible_solution` on the relative error estimates
 DEFAULT_TOL = 0.05
 
 
@@ -103,7 +104,8 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     return layer, given
 
 
-def _numeric_punch(punch: Any, parameters: dict | None) -> Punch:
+def numeric_punch(punch: Any, parameters: dict | None = None) -> Punch:
+    """The punch as a :class:`~thinlayer.Punch` with every parameter given a number (one clear error if not)."""
     if not isinstance(punch, Punch):
         punch = Punch(punch)
     if parameters:
@@ -119,7 +121,7 @@ def _numeric_punch(punch: Any, parameters: dict | None) -> Punch:
 
 @dataclass(frozen=True, eq=False)
 class ContactSolution:
-    r"""Contact solution for numeric parameters; made by :func:`solve`.
+    r"""Contact solution for numeric parameters; made by :func:`compressible_solution`.
 
     Attributes
     ----------
@@ -234,7 +236,7 @@ class ContactSolution:
         bad = ~np.isfinite(np.asarray(p, dtype=float))
         if np.any(bad):
             raise ValidityError(
-                f"solve(): the composite pressure is not finite at {int(bad.sum())} of {bad.size} points "
+                f"compressible model: the composite pressure is not finite at {int(bad.sum())} of {bad.size} points "
                 f"(mu = {self.mu:.3g}, H/a = {self.H_over_a:.3g}: beyond the double range); "
                 f"express mu in a larger unit of stress (smaller numbers) or use {_reference_model(self.punch)}",
                 "pressure")
@@ -294,10 +296,13 @@ class ContactSolution:
         return display_math(self.latex())
 
 
-def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,
+def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,
           force: Any = None, parameters: dict | None = None, order: int = 1, terms: int = 2,
           boundary_layer: str = "exact", nu: Any = None, tol: Any = DEFAULT_TOL) -> ContactSolution:
-    r"""Contact solution of a thin bonded layer under a rigid polynomial punch.
+    r"""The compressible thin-layer model: contact solution of a thin layer under a rigid polynomial punch.
+
+    This is one model of the front door :func:`thinlayer.solve` (``model="compressible"``), which also
+    chooses the nearly-incompressible models or the direct solver where this one does not hold.
 
     Parameters
     ----------
@@ -344,18 +349,18 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
 
     Examples
     --------
-    >>> from thinlayer import BondedLayer, Punch, solve
-    >>> sol = solve(BondedLayer("3/10"), Punch.paraboloid(1), delta0=0.01, H=0.01)
+    >>> from thinlayer import BondedLayer, Punch
+    >>> sol = compressible_solution(BondedLayer("3/10"), Punch.paraboloid(1), delta0=0.01, H=0.01)
     >>> round(sol.edge_shift, 6), round(sol.edge_shift_alexandrov, 6)
     (0.122071, 0.145193)
     >>> round(sol.force / sol.force_leading - 1, 6)      # -2 m1 H^2/(R delta0), m1 = 1/14
     -0.001429
     >>> sol.error_estimate["force"] < 2e-3      # 2 kappa^3 (1 + kappa), kappa^2 = |P1/P0| + (1 + h*^2)(H/a)^2
     True
-    >>> solve(BondedLayer(0.49), Punch.paraboloid(10), delta0=0.1, H=0.5)   # doctest: +ELLIPSIS
+    >>> compressible_solution(BondedLayer(0.49), Punch.paraboloid(10), delta0=0.1, H=0.5)   # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    thinlayer.asymptotics.solution.ValidityError: solve(): the force error estimate ... exceeds tol = 5 % ...
+    thinlayer.asymptotics.solution.ValidityError: compressible model: the force error estimate ... exceeds tol = 5 % ...
     """
     layer, nu_value = _check_layer(layer, nu)
     if boundary_layer not in BOUNDARY_LAYERS:
@@ -374,7 +379,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     HH = _positive(H, "H")
     mm = _positive(mu, "mu")
     tol_v = _check_tol(tol)
-    pn = _numeric_punch(punch, parameters)
+    pn = numeric_punch(punch, parameters)
     law = force_law(layer, pn)
     if (delta0 is None) == (force is None):
         raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
@@ -382,12 +387,12 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         Pt = _positive(force, "force")
         per_mu = Pt / mm  # the law is linear in mu: solve it per unit mu
         if not (math.isfinite(per_mu) and per_mu > 0):
-            raise ValidityError(f"solve(): force/mu = {Pt:.3g}/{mm:.3g} is beyond the double range; "
+            raise ValidityError(f"compressible model: force/mu = {Pt:.3g}/{mm:.3g} is beyond the double range; "
                                 "express force and mu in other units", "force")
         try:
             d0 = law.indentation(per_mu, HH, 1.0, nu=nu_value, order=order)
         except (OverflowError, ZeroDivisionError) as exc:
-            raise ValidityError(f"solve(): the indentation for force = {Pt:.3g} is beyond the double range "
+            raise ValidityError(f"compressible model: the indentation for force = {Pt:.3g} is beyond the double range "
                                 f"({exc}); express the lengths in other units", "force") from None
     else:
         d0 = _positive(delta0, "delta0")
@@ -405,7 +410,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
             raise ZeroDivisionError(f"|omega_0| = {vals.area0:.3g}, |Gamma_0| = {vals.perimeter:.3g}")
         est = error_estimate(vals, order=order)
     except (OverflowError, ZeroDivisionError) as exc:
-        raise ValidityError(f"solve(): the contact geometry is beyond the double range at delta0 = {d0:.3g}, "
+        raise ValidityError(f"compressible model: the contact geometry is beyond the double range at delta0 = {d0:.3g}, "
                             f"H = {HH:.3g} ({exc}); express the lengths in other units", "force") from None
     _check_overflow(vals, mm)
     vals = _scaled(vals, mm, order)
@@ -462,12 +467,12 @@ def _check_overflow(unit: ForceValues, mu: float) -> None:
     """The force per unit mu is finite and positive, but times mu beyond the double range."""
     P = unit.P0 + unit.P1
     if math.isfinite(P) and P > 0 and 0 < P * mu < sys.float_info.min:
-        raise ValidityError(f"solve(): the force P = {P * mu:.3g} underflows double precision (below "
+        raise ValidityError(f"compressible model: the force P = {P * mu:.3g} underflows double precision (below "
                             f"{sys.float_info.min:.3g}) at mu = {mu:.3g}; express mu (and P) in a smaller unit "
                             "of stress", "force", math.nan, math.nan, "other units")
     if math.isfinite(unit.P0) and unit.P0 > 0 and P > 0 and not math.isfinite(unit.P0 * mu):
         mag = math.log10(P) + math.log10(mu)
-        raise ValidityError(f"solve(): the force P = 1e{mag:.2f} overflows double precision (max 1.8e308) at "
+        raise ValidityError(f"compressible model: the force P = 1e{mag:.2f} overflows double precision (max 1.8e308) at "
                             f"mu = {mu:.3g}; express mu (and P) in a larger unit of stress", "force",
                             math.nan, math.nan, "other units")
 
@@ -479,7 +484,7 @@ def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValu
     where = f"nu = {nu:.4g}, H/a = {x:.3g}"
     for name, q in (("force", vals.force), ("contact_area", vals.area), ("perimeter", vals.perimeter)):
         if not math.isfinite(q):
-            raise ValidityError(f"solve(): the {name.replace('_', ' ')} is not finite ({q}) at {where}; "
+            raise ValidityError(f"compressible model: the {name.replace('_', ' ')} is not finite ({q}) at {where}; "
                                 f"use {_reference_model(punch)} or other units",
                                 name, est.get(name, math.inf), tol, _reference_model(punch))
     model = _validity_model(layer, punch, vals)
@@ -489,19 +494,19 @@ def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValu
             value = vals.force if key == "force" else vals.area
             sign = f"; the asymptotic value {value:.4g} is unphysical" if value <= 0 else ""
             raise ValidityError(
-                f"solve(): the {key.replace('_', ' ')} error estimate {_percent(e)} exceeds tol = {_percent(tol)} "
+                f"compressible model: the {key.replace('_', ' ')} error estimate {_percent(e)} exceeds tol = {_percent(tol)} "
                 f"({where}, |P1/P0| = {abs(vals.P1 / vals.P0) if vals.P0 else math.inf:.3g}: outside the "
                 f"thin-layer expansion{sign}); use {model}", key, e, tol, model, value)
     if vals.force <= 0 and vals.P0 > 0 and mu > 0:
-        raise ValidityError(f"solve(): the asymptotic force P = {vals.force:.4g} <= 0 is unphysical ({where}; "
+        raise ValidityError(f"compressible model: the asymptotic force P = {vals.force:.4g} <= 0 is unphysical ({where}; "
                             f"estimate {_percent(est['force'])}); use {model}", "force", est["force"], tol, model,
                             vals.force)
     if vals.force <= 0:
-        raise ValidityError(f"solve(): the force P = {vals.force:.4g} underflows or is not positive at mu = "
+        raise ValidityError(f"compressible model: the force P = {vals.force:.4g} underflows or is not positive at mu = "
                             f"{mu:.3g}; express mu (and P) in a smaller unit of stress", "force",
                             est["force"], tol, "other units")
     if vals.area <= 0:
-        raise ValidityError(f"solve(): the asymptotic contact area {vals.area:.4g} <= 0 is unphysical ({where}; "
+        raise ValidityError(f"compressible model: the asymptotic contact area {vals.area:.4g} <= 0 is unphysical ({where}; "
                             f"estimate {_percent(est['contact_area'])}); use {model}", "contact_area",
                             est["contact_area"], tol, model, vals.area)
 

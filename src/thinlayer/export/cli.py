@@ -319,7 +319,7 @@ def _codegen_result(args):
         if args.param:
             punch = punch.subs(_params(args.param))
         return force_law(_layer(args.nu or "symbolic"), punch)
-    from ..asymptotics.solution import solve  # composite: numeric parameters
+    from ..asymptotics.solution import compressible_solution as solve  # composite: numeric parameters
 
     if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
         raise BadInput("composite needs numeric --nu, --delta0 and --H (and --param values)")

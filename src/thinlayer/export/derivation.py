@@ -442,7 +442,7 @@ def _edge_shift_section(doc: Any, nus: tuple) -> None:
 
 def _contact_section(doc: Any, der: Derivation) -> None:
     """The contact solution for the numeric parameters of ``[contact]`` (:func:`thinlayer.solve`)."""
-    from ..asymptotics.solution import solve
+    from ..asymptotics.solution import compressible_solution as solve
 
     c = der.contact
     sol = solve(c.get("layer", der.layer), der.punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],

@@ -63,6 +63,14 @@ def _as_nu(nu: Any) -> sp.Basic | mpmath.mpf:
     )
 
 
+def _is_half(nu: Any) -> bool:
+    """Whether ``nu`` is a valid spelling of exactly 1/2 (0.5, "1/2", Rational(1, 2)); False for anything else."""
+    try:
+        return parse_nu(nu, floats="Float", upper_closed=True, symbols=False) == HALF
+    except (TypeError, ValueError):
+        return False
+
+
 class LayerKernel(RichDisplay, ABC):
     """Interface of a layer model: symbolic L(u), Maclaurin data of L(s)/s, numerics."""
 
@@ -221,6 +229,16 @@ class BondedLayer(LayerKernel):
     #: never hand the float layer's coefficients to the exact one (0.5 == Rational(1, 2) in Python)
     kind: str = field(default="symbolic", init=False, repr=False)
 
+    def __new__(cls, nu: Any = None, parameter: str = "nu", dps: int = 30):
+        """``BondedLayer(1/2)`` is the incompressible layer: it returns ``IncompressibleLayer()``.
+
+        At nu = 1/2 the kernel (2.3) is the same formula (kappa = 1) but A = 0 (2.4), so the compressible
+        expansion (2.20) does not exist; the layer with the incompressible data (I.1) stands in for it.
+        """
+        if cls is BondedLayer and nu is not None and _is_half(nu):
+            return IncompressibleLayer()
+        return super().__new__(cls)
+
     def __init__(self, nu: Any = None, parameter: str = "nu", dps: int = 30):
         if parameter not in ("nu", "kappa"):
             raise ValueError(f"parameter must be 'nu' or 'kappa', got {parameter!r}")
@@ -331,9 +349,21 @@ class FrictionlessLayer(LayerKernel):
     Independent of nu with the normalisation (2.1); ``A = 1/2``.
     """
 
+    #: Poisson ratio (optional): the kernel does not depend on it, ``vartheta = mu/(1 - nu)`` (2.1) does
+    nu: Any = None
     name: str = field(default="frictionless", init=False)
     equation: str = field(default="", init=False)
     base: ClassVar[str | None] = "frictionless"
+
+    def __post_init__(self):
+        if self.nu is not None:
+            object.__setattr__(self, "nu", parse_nu(self.nu, floats="float", upper_closed=True, symbols=False,
+                                                    example="FrictionlessLayer(0.3) or FrictionlessLayer('1/2')"))
+
+    @property
+    def numeric_nu(self) -> float | None:
+        """The Poisson ratio given to the layer, as a float (None when none was given)."""
+        return None if self.nu is None else float(self.nu)
 
     @property
     def edge_shift_key(self) -> str:
@@ -359,7 +389,7 @@ class FrictionlessLayer(LayerKernel):
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        return [f"{type(self).__name__}()"]
+        return [f"{type(self).__name__}({'' if self.nu is None else 'nu=' + fmt(self.nu, 15)})"]
 
 
 @dataclass(frozen=True)

@@ -433,7 +433,7 @@ def _circles(nu: float, eps: float, c: float, a0: float, H: float, h_ex: float, 
 
 def sphere_case(nu: float, eps: float) -> tuple[ValidationRow, list[PressureProfile], list[ContourData]]:
     """The sphere at ``nu`` and ``H/a = eps`` against the axisymmetric numerics: the row and the plot data."""
-    from ..asymptotics.solution import solve
+    from ..asymptotics.solution import compressible_solution as solve
     from ..numerics import contact_for_radius, radial_profile, solve_axisymmetric
     from ..punch import Punch
 
@@ -589,7 +589,7 @@ def _elliptic_plot_data(row: ValidationRow, fine: Any, pc: np.ndarray, semi_axes
 def elliptic_case(nu: float, eps: float, cells_per_H: float, workers: int | None
                   ) -> tuple[ValidationRow, list[PressureProfile], list[ContourData]]:
     """The elliptic paraboloid at ``nu`` and ``H/a = eps`` against the 2D numerics on two grids."""
-    from ..asymptotics.solution import solve
+    from ..asymptotics.solution import compressible_solution as solve
     from ..numerics import solve_2d
     from ..punch import Punch
 

@@ -25,7 +25,8 @@ from ..asymptotics.incompressible import (
     two_term_sphere,
 )
 from ..asymptotics.incompressible.operator import model_layer
-from ..asymptotics.solution import ValidityError, solve
+from ..asymptotics.solution import ValidityError
+from ..asymptotics.solution import compressible_solution as solve
 from ..asymptotics.wiener_hopf import edge_shift_exact
 from ..layers.kernels import LayerKernel
 from ..numerics import solve_axisymmetric

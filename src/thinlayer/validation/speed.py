@@ -93,7 +93,7 @@ def speed_comparison(nu: float = 0.3, H_over_a: float = 0.1, *, repeat: int = 3,
     SpeedComparison
     """
     from ..asymptotics.force_law import force_law
-    from ..asymptotics.solution import solve
+    from ..asymptotics.solution import compressible_solution as solve
     from ..numerics import solve_axisymmetric
     from ..punch import Punch
 
