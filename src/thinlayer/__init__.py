@@ -28,8 +28,8 @@ from .asymptotics.force_law import force_law
 from .asymptotics.incompressible import obstacle_problem, regime, thin_layer_operator, two_term_sphere
 from .asymptotics.inner import inner_pressure
 from .asymptotics.moment_expansion import moment_expansion
-from .contact.solve import Indentation, solve
 from .asymptotics.wiener_hopf import boundary_layer_exact, edge_shift_alexandrov, edge_shift_exact
+from .contact.solve import Indentation, solve
 from .layers.coefficients import kernel_coefficients
 from .layers.kernels import (
     BondedLayer,

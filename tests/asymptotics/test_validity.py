@@ -14,9 +14,10 @@ import math
 import numpy as np
 import pytest
 
-from thinlayer import BondedLayer, FrictionlessLayer, Punch, solve
+from thinlayer import BondedLayer, FrictionlessLayer, Punch
 from thinlayer.asymptotics.force_law import ForceValues, error_estimate
 from thinlayer.asymptotics.solution import ValidityError
+from thinlayer.asymptotics.solution import compressible_solution as solve
 from thinlayer.numerics import solve_2d, solve_axisymmetric
 
 #: largest accepted ratio estimate/true error (an estimate may be loose, not absurd)

@@ -9,6 +9,9 @@ import sympy as sp
 
 from thinlayer.export.cli import build_parser, main
 
+#: the solve subcommand with its shear modulus (solve needs --mu or --E)
+SOLVE_MU = ["solve", "--mu", "1"]
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -62,19 +65,19 @@ def test_inner_json_and_latex(capsys):
 def test_solve_json_matches_api(capsys):
     from thinlayer import BondedLayer, Punch, solve
 
-    code, out, _ = run(capsys, "solve", "--nu", "0.3", "--kind", "elliptic_paraboloid", "--param", "R_1=4",
+    code, out, _ = run(capsys, "solve", "--mu", "1", "--nu", "0.3", "--kind", "elliptic_paraboloid", "--param", "R_1=4",
                        "--param", "R_2=1", "--delta0", "0.5", "--H", "0.05", "--json")
     assert code == 0
     data = json.loads(out)
-    sol = solve(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), delta0=0.5, H=0.05)
+    sol = solve(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), delta0=0.5, H=0.05, mu=1.0)
     assert data["force"] == pytest.approx(sol.force, rel=1e-14)
     assert data["contact_area"] == pytest.approx(sol.contact_area, rel=1e-14)
     assert data["edge_shift_exact"] == pytest.approx(0.1220706479, abs=1e-9)
     assert set(data["remainder"]) == {"force", "contact_area", "pressure_interior", "pressure_composite"}
-    code, out, _ = run(capsys, "solve", "--nu", "0.3", "--punch", "x_1**2/8 + x_2**2/2", "--force",
+    code, out, _ = run(capsys, "solve", "--mu", "1", "--nu", "0.3", "--punch", "x_1**2/8 + x_2**2/2", "--force",
                        str(sol.force), "--H", "0.05", "--json")
     assert code == 0 and json.loads(out)["delta0"] == pytest.approx(0.5, rel=1e-12)
-    code, out, _ = run(capsys, "solve", "--nu", "0.3", "--punch", "x_1**2/8 + x_2**2/2", "--delta0", "0.5",
+    code, out, _ = run(capsys, "solve", "--mu", "1", "--nu", "0.3", "--punch", "x_1**2/8 + x_2**2/2", "--delta0", "0.5",
                        "--H", "0.05", "--latex")
     assert code == 0 and r"\tag{1.8}" in out
 
@@ -97,13 +100,13 @@ def test_report_json_and_alias(capsys, tmp_path):
 
 
 @pytest.mark.parametrize("argv, reason", [
-    (["solve", "--nu", "0.7", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "0.1"], "nu"),
-    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--delta0", "0.1", "--H", "0.1"], "without values"),
-    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "-1", "--H", "0.1"], "delta0"),
-    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "0"], "H"),
-    (["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R", "--delta0", "0.1", "--H", "1"], "NAME=VALUE"),
-    (["solve", "--nu", "0.3", "--punch", "exp(x_1)", "--delta0", "0.1", "--H", "1"], "polynomial"),
-    (["solve", "--nu", "0.3", "--punch", "x_1**2", "--kind", "paraboloid", "--delta0", "0.1", "--H", "1"],
+    ([*SOLVE_MU, "--nu", "0.7", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "0.1"], "nu"),
+    ([*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--delta0", "0.1", "--H", "0.1"], "without values"),
+    ([*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "-1", "--H", "0.1"], "delta0"),
+    ([*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "0"], "H"),
+    ([*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R", "--delta0", "0.1", "--H", "1"], "NAME=VALUE"),
+    ([*SOLVE_MU, "--nu", "0.3", "--punch", "exp(x_1)", "--delta0", "0.1", "--H", "1"], "polynomial"),
+    ([*SOLVE_MU, "--nu", "0.3", "--punch", "x_1**2", "--kind", "paraboloid", "--delta0", "0.1", "--H", "1"],
      "exactly one"),
     (["coefficients", "--nu", "abc"], "--nu"),
     (["coefficients", "--order", "0"], "--order"),

@@ -10,14 +10,17 @@ import pytest
 
 from thinlayer.export.cli import main
 
+#: the solve subcommand with its shear modulus (solve needs --mu or --E)
+SOLVE_MU = ["solve", "--mu", "1"]
+
 ROOT = Path(__file__).resolve().parents[2]
 SRC = str(ROOT / "src")
 GOOD = "[derivation]\nname='x'\n[layer]\nnu='3/10'\n[punch]\nkind='paraboloid'\n"
-SOLVE = ["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1"]
+SOLVE = [*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1"]
 
 #: (name, derivation file content or None, argv with {file} and {tmp}) -> one line, exit 2
 CASES = [
-    ("nu 1/0", None, ["solve", "--nu", "1/0", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H",
+    ("nu 1/0", None, [*SOLVE_MU, "--nu", "1/0", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H",
                       "0.01"]),
     ("nu nan", None, ["coefficients", "--nu", "nan"]),
     ("nu inf", None, ["coefficients", "--nu", "inf"]),
@@ -31,9 +34,9 @@ CASES = [
     ("H 1e300", None, [*SOLVE, "--H", "1e300", "--json"]),
     ("H negative", None, [*SOLVE, "--H", "-1"]),
     ("mu 1e308", None, [*SOLVE, "--H", "0.01", "--mu", "1e308", "--json"]),
-    ("param nan", None, ["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=nan", "--delta0", "0.1",
+    ("param nan", None, [*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R=nan", "--delta0", "0.1",
                          "--H", "0.01"]),
-    ("param no =", None, ["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R", "--delta0", "0.1",
+    ("param no =", None, [*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R", "--delta0", "0.1",
                           "--H", "0.01"]),
     ("punch code", None, ["inner", "--punch", "x_1**2 + __import__('os').system('touch pwned')"]),
     ("punch exp", None, ["inner", "--punch", "exp(x_1)"]),
@@ -124,7 +127,7 @@ def test_closed_pipe_ends_quietly():
 
 
 def test_subprocess_bad_input_no_traceback():
-    res = _run(["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "1e300",
+    res = _run([*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R=1", "--delta0", "0.1", "--H", "1e300",
                 "--json"])
     assert res.returncode == 2 and b"Traceback" not in res.stderr and res.stdout == b""
     assert len(res.stderr.decode().strip().splitlines()) == 1

@@ -141,7 +141,7 @@ def _force_law_case() -> Case:
 
 def _composite_case() -> Case:
     # composite pressure with Alexandrov's boundary layer (3.24) for a sphere: radial, closed form
-    from thinlayer import solve
+    from thinlayer.asymptotics.solution import compressible_solution as solve
 
     sol = solve(BondedLayer(0.3), Punch.paraboloid(2), delta0=0.25, H=0.02, boundary_layer="alexandrov")
     comp = sol.composite
@@ -538,7 +538,7 @@ def test_composite_codegen_matches_the_numeric_composite(tmp_path):
 
 
 def test_composite_codegen_needs_closed_form():
-    from thinlayer import solve
+    from thinlayer.asymptotics.solution import compressible_solution as solve
 
     exact = solve(BondedLayer(0.3), Punch.paraboloid(2), delta0=0.25, H=0.02).composite
     with pytest.raises(NotImplementedError, match="alexandrov"):

@@ -107,7 +107,7 @@ def test_report_contains_boundary_layer_force_law_and_solution():
     # the numeric solution's force agrees with thinlayer.solve called directly
     from thinlayer import BondedLayer, Punch, solve
 
-    sol = solve(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), delta0=0.5, H=0.05)
+    sol = solve(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), delta0=0.5, H=0.05, mu=1.0)
     assert f"= {sol.force:.8g}" in text
 
 

@@ -10,7 +10,8 @@ import math
 import numpy as np
 import pytest
 
-from thinlayer import BondedLayer, FrictionlessLayer, Punch, solve
+from thinlayer import BondedLayer, FrictionlessLayer, Punch
+from thinlayer.asymptotics.solution import compressible_solution as solve
 from thinlayer.numerics import solve_2d, solve_axisymmetric
 
 

@@ -236,7 +236,7 @@ class ContactSolution:
         bad = ~np.isfinite(np.asarray(p, dtype=float))
         if np.any(bad):
             raise ValidityError(
-                f"compressible model: the composite pressure is not finite at {int(bad.sum())} of {bad.size} points "
+                f"compressible: the composite pressure is not finite at {int(bad.sum())} of {bad.size} points "
                 f"(mu = {self.mu:.3g}, H/a = {self.H_over_a:.3g}: beyond the double range); "
                 f"express mu in a larger unit of stress (smaller numbers) or use {_reference_model(self.punch)}",
                 "pressure")
@@ -360,7 +360,7 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     >>> compressible_solution(BondedLayer(0.49), Punch.paraboloid(10), delta0=0.1, H=0.5)   # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    thinlayer.asymptotics.solution.ValidityError: compressible model: the force error estimate ... exceeds tol = 5 % ...
+    thinlayer.asymptotics.solution.ValidityError: compressible: the force error estimate ... exceeds tol = 5 % ...
     """
     layer, nu_value = _check_layer(layer, nu)
     if boundary_layer not in BOUNDARY_LAYERS:
@@ -387,12 +387,12 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
         Pt = _positive(force, "force")
         per_mu = Pt / mm  # the law is linear in mu: solve it per unit mu
         if not (math.isfinite(per_mu) and per_mu > 0):
-            raise ValidityError(f"compressible model: force/mu = {Pt:.3g}/{mm:.3g} is beyond the double range; "
+            raise ValidityError(f"compressible: force/mu = {Pt:.3g}/{mm:.3g} is beyond the double range; "
                                 "express force and mu in other units", "force")
         try:
             d0 = law.indentation(per_mu, HH, 1.0, nu=nu_value, order=order)
         except (OverflowError, ZeroDivisionError) as exc:
-            raise ValidityError(f"compressible model: the indentation for force = {Pt:.3g} is beyond the double range "
+            raise ValidityError(f"compressible: the indentation for force = {Pt:.3g} is beyond the double range "
                                 f"({exc}); express the lengths in other units", "force") from None
     else:
         d0 = _positive(delta0, "delta0")
@@ -410,7 +410,7 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
             raise ZeroDivisionError(f"|omega_0| = {vals.area0:.3g}, |Gamma_0| = {vals.perimeter:.3g}")
         est = error_estimate(vals, order=order)
     except (OverflowError, ZeroDivisionError) as exc:
-        raise ValidityError(f"compressible model: the contact geometry is beyond the double range at delta0 = {d0:.3g}, "
+        raise ValidityError(f"compressible: the contact geometry is beyond the double range at delta0 = {d0:.3g}, "
                             f"H = {HH:.3g} ({exc}); express the lengths in other units", "force") from None
     _check_overflow(vals, mm)
     vals = _scaled(vals, mm, order)
@@ -467,12 +467,12 @@ def _check_overflow(unit: ForceValues, mu: float) -> None:
     """The force per unit mu is finite and positive, but times mu beyond the double range."""
     P = unit.P0 + unit.P1
     if math.isfinite(P) and P > 0 and 0 < P * mu < sys.float_info.min:
-        raise ValidityError(f"compressible model: the force P = {P * mu:.3g} underflows double precision (below "
+        raise ValidityError(f"compressible: the force P = {P * mu:.3g} underflows double precision (below "
                             f"{sys.float_info.min:.3g}) at mu = {mu:.3g}; express mu (and P) in a smaller unit "
                             "of stress", "force", math.nan, math.nan, "other units")
     if math.isfinite(unit.P0) and unit.P0 > 0 and P > 0 and not math.isfinite(unit.P0 * mu):
         mag = math.log10(P) + math.log10(mu)
-        raise ValidityError(f"compressible model: the force P = 1e{mag:.2f} overflows double precision (max 1.8e308) at "
+        raise ValidityError(f"compressible: the force P = 1e{mag:.2f} overflows double precision (max 1.8e308) at "
                             f"mu = {mu:.3g}; express mu (and P) in a larger unit of stress", "force",
                             math.nan, math.nan, "other units")
 
@@ -484,7 +484,7 @@ def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValu
     where = f"nu = {nu:.4g}, H/a = {x:.3g}"
     for name, q in (("force", vals.force), ("contact_area", vals.area), ("perimeter", vals.perimeter)):
         if not math.isfinite(q):
-            raise ValidityError(f"compressible model: the {name.replace('_', ' ')} is not finite ({q}) at {where}; "
+            raise ValidityError(f"compressible: the {name.replace('_', ' ')} is not finite ({q}) at {where}; "
                                 f"use {_reference_model(punch)} or other units",
                                 name, est.get(name, math.inf), tol, _reference_model(punch))
     model = _validity_model(layer, punch, vals)
@@ -494,19 +494,19 @@ def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValu
             value = vals.force if key == "force" else vals.area
             sign = f"; the asymptotic value {value:.4g} is unphysical" if value <= 0 else ""
             raise ValidityError(
-                f"compressible model: the {key.replace('_', ' ')} error estimate {_percent(e)} exceeds tol = {_percent(tol)} "
+                f"compressible: the {key.replace('_', ' ')} error estimate {_percent(e)} exceeds tol = {_percent(tol)} "
                 f"({where}, |P1/P0| = {abs(vals.P1 / vals.P0) if vals.P0 else math.inf:.3g}: outside the "
                 f"thin-layer expansion{sign}); use {model}", key, e, tol, model, value)
     if vals.force <= 0 and vals.P0 > 0 and mu > 0:
-        raise ValidityError(f"compressible model: the asymptotic force P = {vals.force:.4g} <= 0 is unphysical ({where}; "
+        raise ValidityError(f"compressible: the asymptotic force P = {vals.force:.4g} <= 0 is unphysical ({where}; "
                             f"estimate {_percent(est['force'])}); use {model}", "force", est["force"], tol, model,
                             vals.force)
     if vals.force <= 0:
-        raise ValidityError(f"compressible model: the force P = {vals.force:.4g} underflows or is not positive at mu = "
+        raise ValidityError(f"compressible: the force P = {vals.force:.4g} underflows or is not positive at mu = "
                             f"{mu:.3g}; express mu (and P) in a smaller unit of stress", "force",
                             est["force"], tol, "other units")
     if vals.area <= 0:
-        raise ValidityError(f"compressible model: the asymptotic contact area {vals.area:.4g} <= 0 is unphysical ({where}; "
+        raise ValidityError(f"compressible: the asymptotic contact area {vals.area:.4g} <= 0 is unphysical ({where}; "
                             f"estimate {_percent(est['contact_area'])}); use {model}", "contact_area",
                             est["contact_area"], tol, model, vals.area)
 

@@ -214,10 +214,23 @@ class Indentation(RichDisplay):
         lines.append(f"  model: {self.model} -- {self.reason}")
         return lines
 
+    @property
+    def equations(self) -> tuple[str, str]:
+        """The equations of the force and of the contact size in the model used."""
+        if self.model == "compressible":
+            return "1.8", "3.25"
+        if self.model == "direct":
+            return "1.5-1.8", "1.5-1.8"
+        if self.model == "two-term" or self.contact_radius is not None and self.semi_axes is None:
+            return ("I.11", "I.12") if self.punch.name.startswith("paraboloid") else ("I.9", "I.12")
+        return "I.8", "I.7"
+
     def latex(self) -> str:
         est = self.error_estimate
-        rows = [rf"P = {_tex_num(self.force)}\ \left(\pm {100 * est['force']:.2g}\,\%\right)",
-                rf"|\omega| = {_tex_num(self.contact_area)}\ \left(\pm {100 * est['contact_area']:.2g}\,\%\right)"]
+        tf, ta = self.equations
+        rows = [rf"P = {_tex_num(self.force)}\ \left(\pm {100 * est['force']:.2g}\,\%\right) \tag{{{tf}}}",
+                rf"|\omega| = {_tex_num(self.contact_area)}\ \left(\pm {100 * est['contact_area']:.2g}\,\%\right)"
+                rf" \tag{{{ta}}}"]
         if self.contact_radius is not None:
             rows.append(rf"c = {_tex_num(self.contact_radius)}")
         rows.append(rf"\text{{model: {self.model}}},\quad H/a = {self.H_over_a:.3g},\quad \nu = {self.nu:.6g}")
@@ -625,10 +638,18 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
 
     Examples
     --------
+    The sphere on a thin layer: the leading force ``P0 = pi vartheta R delta0^2/(A H)`` (1.8),
+    ``A = (1/2 - nu)/(1 - nu)^2``, ``vartheta = mu/(1 - nu)``, ``mu = E/(2(1 + nu))``; its first correction
+    ``-2 m_1 H^2/(R delta0)``, ``m_1 = 1/14``; the contact radius ``sqrt(2 R delta0) - h^* H`` (3.25):
+
+    >>> import math
     >>> from thinlayer import BondedLayer, Punch, solve
-    >>> ans = solve(BondedLayer(0.3), Punch.paraboloid(10), delta0=0.1, H=0.05, E=2.0)
-    >>> ans.model, round(ans.force, 3), round(ans.contact_radius, 4)
-    ('compressible', 71.808, 1.3855)
+    >>> ans = solve(BondedLayer(0.3), Punch.paraboloid(10), delta0=0.1, H=0.05, E=2.6)
+    >>> P0 = math.pi * (1.0 / 0.7) * 10 * 0.1**2 / (0.2 / 0.49 * 0.05)
+    >>> ans.model, round(ans.force / P0 - 1, 6), round(-2 / 14 * 0.05**2 / (10 * 0.1), 6)
+    ('compressible', -0.000357, -0.000357)
+    >>> round((math.sqrt(2) - ans.contact_radius) / 0.05, 2)     # h*(0.3) = 0.1221 (Wiener-Hopf), + O(H)
+    0.12
     >>> ans = solve(BondedLayer(0.49), Punch.paraboloid(10), delta0=0.1, H=0.5, E=2.0)
     >>> ans.model, ans.error_estimate["force"] < 1e-6
     ('direct', True)
@@ -661,6 +682,8 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
             tried.append(f"{name}: {exc}")
             continue
         except ValidityError as exc:
+            if exc.model == "other units":  # beyond the double range: no other model would do better
+                raise
             tried.append(f"{name}: {exc}".replace("solve(): ", ""))
             if choice not in ("auto", "asymptotic"):
                 raise
@@ -668,7 +691,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         if _estimate_ok(ans.error_estimate, tol_v):
             why = "; ".join(tried + [f"{name}: estimates {_fmt_est(ans.error_estimate)} within tol "
                                      f"{100 * tol_v:.3g} %"])
-            return _with_reason(ans, why)
+            return _with_reason(ans, why, tol_v)
         tried.append(f"{name}: estimates {_fmt_est(ans.error_estimate)} exceed tol {100 * tol_v:.3g} %")
         if choice not in ("auto", "asymptotic"):
             raise ValidityError(f"solve(): the {name} model's {tried[-1].split(': ', 1)[1]} (H/a = "
@@ -681,8 +704,9 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         raise ValidityError("solve(): no asymptotic model holds to tol = " + f"{100 * tol_v:.3g} % -- "
                             + "; ".join(tried) + "; use model='auto' or 'direct'", "force", math.inf, tol_v,
                             "direct")
-    ans = _direct(layer, pn, d0, HH, mm, nu_v, force=Pt, tol=tol_v, n=n)
-    return _with_reason(ans, "; ".join(tried + [f"direct: {ans.reason}"]))
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # the solver checks finiteness
+        ans = _direct(layer, pn, d0, HH, mm, nu_v, force=Pt, tol=tol_v, n=n)
+    return _with_reason(ans, "; ".join(tried + [f"direct: {ans.reason}"]), tol_v)
 
 
 def _asymptotic(name, layer, punch, shape, d0, Pt, H, mu, nu, tol, options) -> Indentation:
@@ -690,17 +714,18 @@ def _asymptotic(name, layer, punch, shape, d0, Pt, H, mu, nu, tol, options) -> I
         return _compressible(layer, punch, shape, d0, Pt, H, mu, nu, math.inf, options)
     if options:
         raise TypeError(f"the options {sorted(options)} belong to the compressible model, not {name}")
-    ans = _two_term(layer, punch, shape, d0, Pt, H, mu, nu, tol, incompressible=(name == "incompressible"))
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # refused below if not finite
+        ans = _two_term(layer, punch, shape, d0, Pt, H, mu, nu, tol, incompressible=(name == "incompressible"))
     if not (math.isfinite(ans.force) and ans.force > 0):
         raise ValidityError(f"solve(): the {name} model's force {ans.force:.4g} is not a positive finite number",
                             "force", math.inf, tol, "direct")
     return ans
 
 
-def _with_reason(ans: Indentation, why: str) -> Indentation:
+def _with_reason(ans: Indentation, why: str, tol: float) -> Indentation:
     import dataclasses
 
-    return dataclasses.replace(ans, reason=why)
+    return dataclasses.replace(ans, reason=why, tol=tol)
 
 
 def _tol(tol: Any) -> float:

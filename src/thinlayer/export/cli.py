@@ -231,31 +231,54 @@ def _cmd_inner(args) -> int:
 
 
 def _cmd_solve(args) -> int:
-    from ..asymptotics.solution import solve
+    from ..contact.solve import solve
 
-    layer = _layer(args.nu)
+    layer = _solve_layer(args.layer, args.nu)
     punch = _punch(args)
     if (args.delta0 is None) == (args.force is None):
         raise BadInput("give exactly one of --delta0 (indentation) and --force (total force P)")
-    sol = solve(layer, punch, delta0=args.delta0, force=args.force, H=args.H, mu=args.mu,
-                parameters=_params(args.param), boundary_layer=args.boundary_layer, tol=args.tol)
-    _check_solution(sol)
+    if (args.mu is None) == (args.E is None):
+        raise BadInput("give exactly one of --mu (shear modulus) and --E (Young's modulus)")
+    opts = {} if args.boundary_layer == "exact" else {"boundary_layer": args.boundary_layer}
+    ans = solve(layer, punch, delta0=args.delta0, force=args.force, H=args.H, mu=args.mu, E=args.E,
+                model=args.model, tol=args.tol, parameters=_params(args.param), **opts)
+    for name in ("force", "contact_area", "delta0"):
+        val = getattr(ans, name)
+        if not (math.isfinite(val) and val > 0):
+            raise BadInput(f"the {name.replace('_', ' ')} came out as {val}: not a finite positive number "
+                           "(check --H, --delta0, --mu/--E and --param)")
     if args.latex:
-        print(sol.latex())
+        print(ans.latex())
         return EXIT_OK
-    v = sol.values
-    acc = sol.order_of_accuracy
-    out = {"nu": float(layer.nu), "H": sol.H, "mu": sol.mu, "delta0": sol.delta0,
-           "force": v.force, "force_leading": v.P0, "force_correction": v.P1,
-           "contact_area": v.area, "contact_area_leading": v.area0, "perimeter": v.perimeter,
-           "edge_shift_exact": sol.edge_shift, "edge_shift_alexandrov": sol.edge_shift_alexandrov,
-           "H_over_a": sol.H_over_a, "error_estimate": dict(sol.error_estimate), "tol": args.tol,
-           "remainder": {k: {"statement": t, "relative_size": e} for k, (t, e) in acc.items()}}
+    out = ans.as_dict()
+    out["layer"] = args.layer
+    if ans.model == "compressible":  # the expansion's own terms (1.8), (3.25)
+        sol = ans.detail
+        v = sol.values
+        out.update({"force_leading": v.P0, "force_correction": v.P1, "contact_area_leading": v.area0,
+                    "perimeter": v.perimeter, "edge_shift_exact": sol.edge_shift,
+                    "edge_shift_alexandrov": sol.edge_shift_alexandrov,
+                    "remainder": {k: {"statement": t, "relative_size": e}
+                                  for k, (t, e) in sol.order_of_accuracy.items()}})
     if args.json:
         _print(out, True)
     else:
-        print(sol)
+        print(ans)
     return EXIT_OK
+
+
+def _solve_layer(kind: str, nu: str):
+    """The layer of ``thinlayer solve``: bonded (nu up to 1/2, 1/2 the incompressible layer) or frictionless."""
+    from ..layers.kernels import BondedLayer, FrictionlessLayer
+
+    try:
+        val: Any = nu if "/" in nu else float(nu)
+    except ValueError as exc:
+        raise BadInput(f"--nu {nu!r}: use an exact fraction such as 3/10, or a number in (-1, 1/2]") from exc
+    try:
+        return FrictionlessLayer(val) if kind == "frictionless" else BondedLayer(val)
+    except (ValueError, TypeError, ArithmeticError) as exc:
+        raise BadInput(f"--nu {nu}: {exc}") from exc
 
 
 def _tolerance(text: str) -> float:
@@ -267,21 +290,6 @@ def _tolerance(text: str) -> float:
     if not (0 < v <= 1):
         raise argparse.ArgumentTypeError(f"--tol must be a number in (0, 1], got {text!r}")
     return v
-
-
-def _check_solution(sol: Any) -> None:
-    """A force, contact area, perimeter and indentation that are finite and positive, or :class:`BadInput`."""
-    v = sol.values
-    for name, val in (("force", v.force), ("leading force", v.P0), ("contact area", v.area),
-                      ("leading contact area", v.area0), ("perimeter", v.perimeter), ("delta0", sol.delta0),
-                      ("H/a", sol.H_over_a)):
-        try:
-            x = float(val)
-        except (TypeError, ValueError, OverflowError):
-            x = math.nan
-        if not (math.isfinite(x) and x > 0):
-            raise BadInput(f"the {name} came out as {val}: not a finite positive number, so these inputs are "
-                           "outside the range of the asymptotic model (check --H, --delta0, --mu and --param)")
 
 
 def _cmd_errata(args) -> int:
@@ -414,27 +422,33 @@ def _add_inner(sub: Any, fmt: type) -> None:
 
 
 def _add_solve(sub: Any, fmt: type) -> None:
-    s = sub.add_parser("solve", formatter_class=fmt, help="contact solution for numeric parameters",
-                       description="Force, contact area and edge shift for numeric parameters (thinlayer.solve).\n"
-                                   "JSON keys: nu, H, mu, delta0, force, force_leading, force_correction, "
-                                   "contact_area,\ncontact_area_leading, perimeter, edge_shift_exact, "
-                                   "edge_shift_alexandrov, H_over_a,\n"
-                                   "error_estimate ({force, contact_area}, relative), tol, "
-                                   "remainder ({force, contact_area, "
-                                   "pressure_interior, pressure_composite: {statement, relative_size}}).",
+    s = sub.add_parser("solve", formatter_class=fmt, help="force, contact size and pressure for numeric parameters",
+                       description="Force, contact area and contact radius by the model that holds (thinlayer.solve):\n"
+                                   "the compressible expansion, the two-term or incompressible model near nu = 1/2,\n"
+                                   "or the direct numerical solver.\n"
+                                   "JSON keys: model, reason, force, delta0, contact_area, contact_radius, semi_axes, "
+                                   "max_pressure,\nH, mu, E, nu, H_over_a, error_estimate (relative), tol, layer; "
+                                   "with the compressible model also\nforce_leading, force_correction, "
+                                   "contact_area_leading, perimeter, edge_shift_exact,\nedge_shift_alexandrov, "
+                                   "remainder.",
                        epilog="examples:\n  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 "
-                              "--H 0.1 --json\n  thinlayer solve --nu 0.3 --punch 'x_1**2/8 + x_2**2/2' "
-                              "--force 100 --H 0.05")
-    s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2): a number or an exact fraction")
+                              "--H 0.1 --E 2 --json\n  thinlayer solve --layer frictionless --nu 0.5 --punch "
+                              "'x_1**2/8 + x_2**2/2' --force 100 --H 0.05 --mu 1")
+    s.add_argument("--layer", choices=("bonded", "frictionless"), default="bonded",
+                   help="the base under the layer: bonded (default) or frictionless")
+    s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
     s.add_argument("--H", type=_finite, required=True, help="layer thickness (> 0)")
-    s.add_argument("--mu", type=_finite, default=1.0, help="shear modulus (> 0, default 1)")
+    s.add_argument("--mu", type=_finite, default=None, help="shear modulus (> 0); or give --E")
+    s.add_argument("--E", type=_finite, default=None, help="Young's modulus (> 0); or give --mu")
     s.add_argument("--delta0", type=_finite, help="indentation (> 0)")
     s.add_argument("--force", type=_finite, help="total force P instead of --delta0 (inverse problem)")
+    s.add_argument("--model", choices=("auto", "asymptotic", "compressible", "two-term", "incompressible", "direct"),
+                   default="auto", help="auto (default): the first model within --tol, else the direct solver; "
+                                        "asymptotic: refuse instead of solving directly; or one model")
     s.add_argument("--tol", type=_tolerance, default=0.05,
-                   help="largest relative error estimate accepted (default 0.05); beyond it the answer is refused "
-                        "with the model that would hold")
+                   help="largest relative error estimate accepted (default 0.05)")
     s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
-                   help="boundary layer of the composite pressure (default exact)")
+                   help="boundary layer of the compressible model's composite pressure (default exact)")
     _add_punch_args(s)
     _add_output_args(s)
     s.set_defaults(func=_cmd_solve)
