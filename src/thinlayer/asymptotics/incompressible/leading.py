@@ -127,6 +127,17 @@ class IncompressibleEllipse:
         exprs = (self.force, sp.sqrt(self.a2), sp.sqrt(self.b2), self.C)
         return checked_lambdify(self.arguments if args is None else args, exprs, backend)
 
+    codegen_name = "incompressible_ellipse"
+
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``(arguments, outputs)`` for code generation: ``force`` (I.8), ``semi_axis_a``, ``semi_axis_b`` (I.7) and
+        ``pressure`` ``C (1 - x1^2/a^2 - x2^2/b^2)^2`` inside the ellipse, zero outside (I.7), at ``(x1, x2)``
+        in the punch's principal axes."""
+        q = 1 - S.x1**2 / self.a2 - S.x2**2 / self.b2
+        outs = {"force": self.force, "semi_axis_a": sp.sqrt(self.a2), "semi_axis_b": sp.sqrt(self.b2),
+                "pressure": sp.Piecewise((self.C * q**2, q > 0), (0, True))}
+        return (S.x1, S.x2) + self.arguments, outs
+
     def evaluate(self, delta0: float, H: float, mu: float = 1.0, R1: float | None = None,
                  R2: float | None = None) -> EllipseValues:
         """Numbers of (I.6)-(I.8); R1, R2 are needed when the result is symbolic in them."""
@@ -308,6 +319,16 @@ class IncompressibleRadial:
         """``(G(c), P(c))`` as a numeric function of :attr:`arguments` (c, delta0, H, mu, punch parameters)."""
         return checked_lambdify(self.arguments if args is None else args,
                                 (self.radius_equation, self.force_of_c), backend)
+
+    codegen_name = "incompressible_axisymmetric"
+
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``(arguments, outputs)`` for code generation, in terms of the contact radius ``c`` (I.9):
+        ``radius_equation`` ``G(c)`` (zero at the contact radius), ``force`` ``P(c)`` and ``pressure`` ``p(r)``
+        (zero for ``r >= c``)."""
+        outs = {"radius_equation": self.radius_equation, "force": self.force_of_c,
+                "pressure": sp.Piecewise((self.pressure_of_c, rho < c_sym), (0, True))}
+        return (rho,) + self.arguments, outs
 
     def evaluate(self, delta0: float, H: float, mu: float = 1.0, parameters: dict | None = None) -> RadialValues:
         """Radius (smallest positive root of ``G`` with ``p >= 0`` on ``[0, c]``), force and ``p(r)``."""

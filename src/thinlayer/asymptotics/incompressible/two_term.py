@@ -294,6 +294,19 @@ class TwoTermSphere:
         exprs = (self._with_k(self.delta0_of_c), self._with_k(self.force_of_c))
         return checked_lambdify(self.arguments if args is None else args, exprs, backend)
 
+    codegen_name = "two_term_sphere"
+
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``(arguments, outputs)`` for code generation, in terms of the contact radius ``c`` (I.11):
+        ``delta0`` ``delta0(c)``, ``force`` ``P(c)`` and ``pressure`` ``p(r)`` (zero for ``r >= c``).
+
+        At nu = 1/2 the outputs are polynomials; for nu < 1/2 they hold the modified Bessel functions
+        ``I_0, I_1`` of ``k r`` (languages without them refuse with ``NotImplementedError``).
+        """
+        outs = {"delta0": self._with_k(self.delta0_of_c), "force": self._with_k(self.force_of_c),
+                "pressure": sp.Piecewise((self._with_k(self.pressure_of_c), rho < c_sym), (0, True))}
+        return (rho,) + self.arguments, outs
+
     def evaluate(self, delta0: float, R: float, H: float, mu: float = 1.0, edge_correction: bool = True
                  ) -> SphereValues:
         """Radius and force for a prescribed depth.
