@@ -246,9 +246,9 @@ class Indentation(RichDisplay):
 
 
 def _tex_num(x: float) -> str:
-    m, e = f"{x:.8e}".split("e")
+    m, e = f"{x:.7e}".split("e")
     e = int(e)
-    return f"{float(m):.8g}" if -3 <= e <= 5 else rf"{float(m):.8g} \times 10^{{{e}}}"
+    return f"{x:.8g}" if -3 <= e <= 5 else rf"{float(m):.8g} \times 10^{{{e}}}"
 
 
 @dataclass(frozen=True, eq=False)

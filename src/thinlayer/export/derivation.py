@@ -57,8 +57,11 @@ SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
     "inner": {"order": ((int,), "a positive integer (number of terms)")},
     "edge_shift": {"nu": ((list,), "a list of numbers in (-1, 1/2)")},
     "contact": {"delta0": ((int, float), "a number > 0"), "force": ((int, float), "a number > 0"),
-                "H": ((int, float), "a number > 0"), "mu": ((int, float), "a number > 0"),
-                "nu": ((int, float), "a number in (-1, 1/2)"),
+                "H": ((int, float), "a number > 0"), "mu": ((int, float), "a number > 0 (shear modulus)"),
+                "E": ((int, float), "a number > 0 (Young's modulus)"),
+                "nu": ((int, float), "a number in (-1, 1/2]"),
+                "model": ((str,), "'auto', 'asymptotic', 'compressible', 'two-term', 'incompressible' or 'direct'"),
+                "tol": ((int, float), "a relative tolerance > 0, e.g. 0.05"),
                 "parameters": ((dict,), "a table of numbers, e.g. {R_1 = 4, R_2 = 1}")},
     "validation": {"nu": ((list,), "a list of Poisson ratios"), "H_over_a": ((list,), "a list of H/a values"),
                    "shapes": ((list,), "a list of shape names")},
@@ -150,14 +153,26 @@ def _contact_table(ct: Any, layer: LayerKernel, punch: Punch, layer_nu: Any) -> 
         raise DerivationFileError("[contact] needs exactly one of 'delta0' (indentation) or 'force' (inverse problem)")
     if "H" not in ct:
         raise DerivationFileError("[contact] is missing the key 'H' (a number > 0)")
-    out = {key: _positive_number(ct, key, "contact") for key in ("delta0", "force", "H", "mu") if key in ct}
+    out = {key: _positive_number(ct, key, "contact") for key in ("delta0", "force", "H", "mu", "E") if key in ct}
+    if "mu" in out and "E" in out:
+        raise DerivationFileError("[contact] gives both 'mu' and 'E': give one elastic modulus (mu shear, E Young's)")
+    if "mu" not in out and "E" not in out:
+        out["mu"] = 1.0  # the report's numbers are then per unit shear modulus, as the symbolic sections
+    if "model" in ct:
+        from ..contact.solve import MODELS
+
+        if ct["model"] not in MODELS:
+            raise DerivationFileError(f"[contact] model = {ct['model']!r}: valid models are {list(MODELS)}")
+        out["model"] = ct["model"]
+    if "tol" in ct:
+        out["tol"] = _positive_number(ct, "tol", "contact")
     nu = ct.get("nu")
     if nu is not None and layer_nu is not None:
         raise DerivationFileError(f"[contact] nu = {nu!r} contradicts [layer] nu = {layer_nu!r}: give nu in one "
                                   "place ([layer] for the whole derivation, or [contact] with [layer] nu = 'symbolic')")
     if layer.base == "frictionless":
-        if not isinstance(nu, (int, float)) or not -1 < nu < 0.5:
-            raise DerivationFileError(f"[contact] nu = {nu!r}: the frictionless base needs a number in (-1, 1/2) "
+        if not isinstance(nu, (int, float)) or not -1 < nu <= 0.5:
+            raise DerivationFileError(f"[contact] nu = {nu!r}: the frictionless base needs a number in (-1, 1/2] "
                                       "for vartheta = mu/(1 - nu)")
         out["nu"] = float(nu)
     elif _compressible_bonded(layer) and layer.parameter is not None:
@@ -357,6 +372,7 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: b
     _kernel_sections(doc, der)
     _inner_sections(doc, der)
     _boundary_layer_sections(doc, der.layer, der.punch)
+    _two_term_section(doc, der)
     if der.edge_shift_nus:
         _edge_shift_section(doc, der.edge_shift_nus)
     if der.contact is not None:
@@ -371,6 +387,9 @@ def _kernel_sections(doc: Any, der: Derivation) -> None:
     """Kernel (2.3), coefficients (2.20), (4.2) (tabulated when numeric), moments (2.21) and (2.22)."""
     layer = der.layer
     doc.section("Layer kernel (2.3), (2.4)").math(rf"\mathcal{{L}}(u) = {sp.latex(layer.L())} \tag{{2.3}}")
+    if layer.base == "bonded" and not layer.has_compressible_expansion:
+        _incompressible_sections(doc, der)
+        return
     co = kernel_coefficients(layer, der.coefficient_order)
     doc.section("Coefficients (2.20), (4.2)").math(co.latex())
     if not layer.symbolic_coefficients and layer.parameter is None:  # numbers: tabulate them
@@ -386,9 +405,71 @@ def _kernel_sections(doc: Any, der: Derivation) -> None:
     doc.math(SEPARATOR.join(mom)).math(moment_expansion(layer, min(2, der.coefficient_order)).latex())
 
 
+def _incompressible_sections(doc: Any, der: Derivation) -> None:
+    """nu = 1/2: the data (I.1), the thin-layer operator (I.2), the obstacle problem (I.3)-(I.5) and its solution.
+
+    Closed forms for the sphere (I.11), the elliptic paraboloid (I.6)-(I.8) and any axisymmetric punch (I.9); the
+    edge correction (I.12).
+    """
+    from ..asymptotics.incompressible import (
+        incompressible_axisymmetric,
+        incompressible_ellipse,
+        obstacle_problem,
+        thin_layer_operator,
+        two_term_edge_shift,
+        two_term_sphere,
+    )
+    from ..layers.coefficients import incompressible_coefficients
+
+    layer, punch = der.layer, der.punch
+    doc.section("Incompressible layer: Maclaurin data (I.1) and thin-layer operator (I.2)").text(
+        "At $\\nu = 1/2$ the coefficient $\\mathcal{A}$ of (2.4) vanishes: the compressible expansion (2.20)--(3.25) "
+        "does not exist, and the leading operator is of second order.")
+    doc.math(incompressible_coefficients(der.coefficient_order).latex()).math(thin_layer_operator(layer).latex())
+    doc.section("Punch and the obstacle problem (I.3)--(I.5)").math(punch.latex())
+    doc.math(obstacle_problem(layer, punch).latex())
+    kind = punch.name
+    if kind.startswith("paraboloid"):
+        doc.section("Solution for the sphere (I.11)").math(two_term_sphere(layer).latex())
+    elif kind == "elliptic paraboloid":
+        doc.section("Solution for the elliptic paraboloid (I.6)--(I.8)").math(incompressible_ellipse().latex())
+    elif _axisymmetric(punch):
+        doc.section("Solution for an axisymmetric punch (I.9)").math(incompressible_axisymmetric(punch).latex())
+    h = float(two_term_edge_shift(layer, dps=15))
+    doc.section("Edge correction (I.12)").text(
+        f"The model's edge lies $h H$ outside the true contact edge, $h = {h:.10f}$ at $\\nu = 1/2$ "
+        "(the edge layer of width $H$ that the model neglects); thinlayer.solve reports the corrected radius "
+        "$c - hH$ and estimates the model's force error by $2hH/c$.")
+
+
+def _axisymmetric(punch: Punch) -> bool:
+    from .. import symbols as S
+
+    e = punch.expr
+    return sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0
+
+
+def _two_term_section(doc: Any, der: Derivation) -> None:
+    """The two-term model of the sphere (I.10)-(I.12), for a bonded layer with symbolic nu or 1/4 < nu < 1/2."""
+    from ..asymptotics.incompressible import two_term_sphere
+
+    layer = der.layer
+    nu = layer.numeric_nu
+    if not (der.punch.name.startswith("paraboloid") and layer.base == "bonded" and layer.has_compressible_expansion
+            and (nu is None or 0.25 < nu < 0.5)):
+        return
+    doc.section("Nearly incompressible layer: the two-term model (I.10)--(I.12)").text(
+        "Near $\\nu = 1/2$ the compressible expansion needs $\\lambda^2 = (a/H)^2/m_1 \\gg 1$ (I.13); the two-term "
+        "model (I.10), $-\\Delta p + k^2 p = f$ with $f = \\vartheta (\\delta_0 - \\Phi)/(c_1 H^3)$ and "
+        "$k^2 = 1/(m_1 H^2)$, holds in both regimes. For the sphere, in terms of the contact radius $c$:")
+    doc.math(two_term_sphere(layer).latex())
+
+
 def _inner_sections(doc: Any, der: Derivation) -> None:
     """The punch, the inner expansion (2.24)-(2.31), (4.1) and, for an ellipse, the contact area (3.1)."""
     layer, punch = der.layer, der.punch
+    if layer.base == "bonded" and not layer.has_compressible_expansion:
+        return  # nu = 1/2: the obstacle problem (I.3) replaces the inner expansion
     doc.section("Punch and inner expansion (2.24)--(2.31), (4.1)").math(punch.latex())
     doc.math(inner_pressure(layer, punch, der.inner_order).latex())
     if punch.name == "elliptic paraboloid":
@@ -442,12 +523,16 @@ def _edge_shift_section(doc: Any, nus: tuple) -> None:
 
 def _contact_section(doc: Any, der: Derivation) -> None:
     """The contact solution for the numeric parameters of ``[contact]`` (:func:`thinlayer.solve`)."""
-    from ..asymptotics.solution import compressible_solution as solve
+    from ..contact.solve import solve
 
     c = der.contact
-    sol = solve(c.get("layer", der.layer), der.punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
-                mu=c.get("mu", 1.0), parameters=c["parameters"], nu=c.get("nu"))
-    doc.section("Contact solution for numeric parameters").math(sol.latex())
+    ans = solve(c.get("layer", der.layer), der.punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
+                mu=c.get("mu"), E=c.get("E"), parameters=c["parameters"], nu=c.get("nu"),
+                model=c.get("model", "auto"), tol=c.get("tol", 0.05))
+    doc.section("Contact solution for numeric parameters").text(
+        f"Model: {ans.model} (thinlayer.solve chooses the first model whose error estimates are within the "
+        f"tolerance {100 * ans.tol:g}\\,\\%; otherwise the direct numerical solver). The estimates are relative.")
+    doc.math(ans.detail.latex() if ans.model == "compressible" else ans.latex())
 
 
 def _validation_section(doc: Any, v: dict, figure_dir: str | Path | None, force: bool = False) -> None:
