@@ -13,8 +13,8 @@ def run() -> list[tuple[str, float, str]]:
     import numpy as np
 
     from thinlayer import BondedLayer, Punch
-    from thinlayer.asymptotics.solution import compressible_solution as solve
     from thinlayer.asymptotics.solution import _edge_shifts
+    from thinlayer.asymptotics.solution import compressible_solution as solve
     from thinlayer.layers.coefficients import kernel_coefficients
 
     punch = Punch.elliptic_paraboloid(4, 1)

@@ -406,7 +406,7 @@ def _kernel_sections(doc: Any, der: Derivation) -> None:
 
 
 def _incompressible_sections(doc: Any, der: Derivation) -> None:
-    """nu = 1/2: the data (I.1), the thin-layer operator (I.2), the obstacle problem (I.3)-(I.5) and its solution.
+    """At nu = 1/2: the data (I.1), the thin-layer operator (I.2), the obstacle problem (I.3)-(I.5) and its solution.
 
     Closed forms for the sphere (I.11), the elliptic paraboloid (I.6)-(I.8) and any axisymmetric punch (I.9); the
     edge correction (I.12).

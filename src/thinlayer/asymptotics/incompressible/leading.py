@@ -132,7 +132,8 @@ class IncompressibleEllipse:
     def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
         """``(arguments, outputs)`` for code generation: ``force`` (I.8), ``semi_axis_a``, ``semi_axis_b`` (I.7) and
         ``pressure`` ``C (1 - x1^2/a^2 - x2^2/b^2)^2`` inside the ellipse, zero outside (I.7), at ``(x1, x2)``
-        in the punch's principal axes."""
+        in the punch's principal axes.
+        """
         q = 1 - S.x1**2 / self.a2 - S.x2**2 / self.b2
         outs = {"force": self.force, "semi_axis_a": sp.sqrt(self.a2), "semi_axis_b": sp.sqrt(self.b2),
                 "pressure": sp.Piecewise((self.C * q**2, q > 0), (0, True))}
@@ -325,7 +326,8 @@ class IncompressibleRadial:
     def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
         """``(arguments, outputs)`` for code generation, in terms of the contact radius ``c`` (I.9):
         ``radius_equation`` ``G(c)`` (zero at the contact radius), ``force`` ``P(c)`` and ``pressure`` ``p(r)``
-        (zero for ``r >= c``)."""
+        (zero for ``r >= c``).
+        """
         outs = {"radius_equation": self.radius_equation, "force": self.force_of_c,
                 "pressure": sp.Piecewise((self.pressure_of_c, rho < c_sym), (0, True))}
         return (rho,) + self.arguments, outs
