@@ -30,7 +30,7 @@ def _module(result, tmp_path):
 
 def test_incompressible_sphere(tmp_path):
     gc, f = _module(two_term_sphere(tl.IncompressibleLayer()), tmp_path)
-    assert gc.arguments == ("r", "c", "R", "H", "mu")
+    assert gc.arguments == ("rho", "c", "R", "H", "mu")
     R, H, mu, d0 = 10.0, 0.02, 1.3, 0.1
     c = 2 * math.sqrt(R * d0)
     delta0, force, _ = f(0.0, c, R, H, mu)
@@ -74,3 +74,24 @@ def test_incompressible_axisymmetric_quartic(tmp_path):
 def test_two_term_below_one_half_names_the_missing_function():
     with pytest.raises(NotImplementedError, match="besseli"):
         generate(two_term_sphere(tl.BondedLayer(0.45)), "c")
+
+
+@pytest.mark.parametrize(("argv", "code", "text"), [
+    (["incompressible", "--kind", "paraboloid", "--lang", "c"], 0, "two_term_sphere"),
+    (["incompressible", "--kind", "elliptic_paraboloid", "--param", "R_1=4", "--param", "R_2=1", "--lang", "python"],
+     0, "def incompressible_ellipse"),
+    (["incompressible", "--kind", "fourth_degree", "--lang", "fortran"], 0, "incompressible_axisymmetric"),
+    (["two-term", "--kind", "paraboloid", "--nu", "0.45", "--lang", "julia"], 0, "besseli"),
+    (["two-term", "--kind", "paraboloid", "--nu", "0.45", "--lang", "c"], 2, "besseli"),
+    (["two-term", "--kind", "elliptic_paraboloid", "--lang", "julia"], 2, "sphere"),
+    (["two-term", "--kind", "paraboloid", "--nu", "0.2"], 2, "1/4 < nu < 1/2"),
+    (["incompressible", "--kind", "paraboloid", "--nu", "0.3"], 2, "nu = 1/2"),
+])
+def test_cli_codegen_of_the_nearly_incompressible_models(capsys, argv, code, text):
+    from thinlayer.export.cli import main
+
+    assert main(["codegen", *argv]) == code
+    out, err = capsys.readouterr()
+    assert text in (out if code == 0 else err)
+    if code:
+        assert len(err.strip().splitlines()) == 1 and "Traceback" not in err

@@ -327,6 +327,8 @@ def _codegen_result(args):
         if args.param:
             punch = punch.subs(_params(args.param))
         return force_law(_layer(args.nu or "symbolic"), punch)
+    if args.result in ("incompressible", "two-term"):
+        return _nearly_incompressible_result(args, punch)
     from ..asymptotics.solution import compressible_solution as solve  # composite: numeric parameters
 
     if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
@@ -334,6 +336,42 @@ def _codegen_result(args):
     sol = solve(_layer(args.nu), punch, delta0=args.delta0, H=args.H, mu=args.mu,
                 parameters=_params(args.param), boundary_layer="alexandrov")
     return sol.composite
+
+
+def _nearly_incompressible_result(args, punch):
+    """``codegen incompressible`` (nu = 1/2: (I.11), (I.6)-(I.8), (I.9)) or ``codegen two-term`` (the sphere, (I.11))."""
+    from ..asymptotics.incompressible import (
+        incompressible_axisymmetric,
+        incompressible_ellipse,
+        two_term_sphere,
+    )
+    from ..layers.kernels import IncompressibleLayer
+
+    if args.param:
+        punch = punch.subs(_params(args.param))
+    sphere = punch.name.startswith("paraboloid")
+    if args.result == "two-term":
+        if not sphere:
+            raise BadInput("two-term: the two-term model (I.10)-(I.11) is derived for the sphere: use --kind paraboloid")
+        layer = _layer(args.nu or "symbolic")
+        nu = layer.numeric_nu
+        if nu is not None and not 0.25 < nu < 0.5:
+            raise BadInput(f"two-term: --nu {args.nu} is outside 1/4 < nu < 1/2 where the model holds "
+                           "('codegen incompressible' for nu = 1/2)")
+        return two_term_sphere(layer)
+    if args.nu not in (None, "1/2", "0.5"):
+        raise BadInput(f"incompressible: the model is nu = 1/2; leave out --nu (got {args.nu})")
+    if sphere:
+        return two_term_sphere(IncompressibleLayer())
+    if punch.name == "elliptic paraboloid":
+        from .. import symbols as S
+
+        e = sp.Poly(punch.expr, S.x1, S.x2)
+        return incompressible_ellipse(1 / (2 * e.coeff_monomial(S.x1**2)), 1 / (2 * e.coeff_monomial(S.x2**2)))
+    try:
+        return incompressible_axisymmetric(punch)
+    except (ValueError, TypeError) as exc:
+        raise BadInput(f"incompressible: {exc}") from exc
 
 
 def _cmd_codegen(args) -> int:
@@ -468,14 +506,20 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                        description="Generate functions from a result: 'inner' (pressure (2.26)), 'force' (force "
                                    "law (1.8) and contact area), 'coefficients' (A, m_n, M_k of nu), 'composite' "
                                    "(composite pressure, radial punch, Alexandrov boundary layer, numeric "
-                                   "parameters).\nWithout --out the code is printed. JSON keys: a list of "
+                                   "parameters), 'incompressible' (nu = 1/2: force, contact size, pressure of "
+                                   "the sphere (I.11),\nthe elliptic paraboloid (I.6)-(I.8), an axisymmetric punch "
+                                   "(I.9)), 'two-term' (the sphere near nu = 1/2 (I.11);\nBessel functions: Julia "
+                                   "and Octave).\nWithout --out the code is printed. JSON keys: a list of "
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
                        epilog="examples:\n  thinlayer codegen inner --kind elliptic_paraboloid --nu 3/10 --lang c\n"
                               "  thinlayer codegen force --kind paraboloid --lang all --out gen\n"
                               "  thinlayer codegen coefficients --order 2 --lang fortran,rust --json\n"
                               "  thinlayer codegen composite --kind paraboloid --param R=2 --nu 0.3 "
-                              "--delta0 0.25 --H 0.02 --lang python")
-    g.add_argument("result", choices=("inner", "force", "coefficients", "composite"), help="what to generate")
+                              "--delta0 0.25 --H 0.02 --lang python\n"
+                              "  thinlayer codegen incompressible --kind elliptic_paraboloid --lang c,python\n"
+                              "  thinlayer codegen two-term --kind paraboloid --nu 0.45 --lang julia")
+    g.add_argument("result", choices=("inner", "force", "coefficients", "composite", "incompressible", "two-term"),
+                   help="what to generate")
     g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
     g.add_argument("--out", help="write the files into this folder (created) instead of printing")
     g.add_argument("--force", action="store_true", help="overwrite existing files in --out")

@@ -40,6 +40,8 @@ r_sym = sp.Symbol("r", positive=True)
 #: contact radius and the radial coordinate of axisymmetric results
 c_sym = sp.Symbol("c", positive=True)
 rho = sp.Symbol("r", nonnegative=True)
+#: the radial coordinate of generated code (``rho``: Fortran ignores case, and ``r`` would collide with ``R``)
+rho_out = sp.Symbol("rho", nonnegative=True)
 
 
 # =============================================================================================
@@ -329,8 +331,8 @@ class IncompressibleRadial:
         (zero for ``r >= c``).
         """
         outs = {"radius_equation": self.radius_equation, "force": self.force_of_c,
-                "pressure": sp.Piecewise((self.pressure_of_c, rho < c_sym), (0, True))}
-        return (rho,) + self.arguments, outs
+                "pressure": sp.Piecewise((self.pressure_of_c, rho < c_sym), (0, True)).subs(rho, rho_out)}
+        return (rho_out,) + self.arguments, outs
 
     def evaluate(self, delta0: float, H: float, mu: float = 1.0, parameters: dict | None = None) -> RadialValues:
         """Radius (smallest positive root of ``G`` with ``p >= 0`` on ``[0, c]``), force and ``p(r)``."""

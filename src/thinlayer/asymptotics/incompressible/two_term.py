@@ -24,7 +24,7 @@ from ..._series import quotient_field
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...punch import Punch
 from ...results import checked_lambdify, latex_equation
-from .leading import c_sym, rho
+from .leading import c_sym, rho, rho_out
 from .operator import HALF, model_layer, obstacle_problem
 
 __all__ = [
@@ -304,8 +304,8 @@ class TwoTermSphere:
         ``I_0, I_1`` of ``k r`` (languages without them refuse with ``NotImplementedError``).
         """
         outs = {"delta0": self._with_k(self.delta0_of_c), "force": self._with_k(self.force_of_c),
-                "pressure": sp.Piecewise((self._with_k(self.pressure_of_c), rho < c_sym), (0, True))}
-        return (rho,) + self.arguments, outs
+                "pressure": sp.Piecewise((self._with_k(self.pressure_of_c), rho < c_sym), (0, True)).subs(rho, rho_out)}
+        return (rho_out,) + self.arguments, outs
 
     def evaluate(self, delta0: float, R: float, H: float, mu: float = 1.0, edge_correction: bool = True
                  ) -> SphereValues:
