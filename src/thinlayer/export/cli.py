@@ -339,7 +339,7 @@ def _codegen_result(args):
 
 
 def _nearly_incompressible_result(args, punch):
-    """``codegen incompressible`` (nu = 1/2: (I.11), (I.6)-(I.8), (I.9)) or ``codegen two-term`` (the sphere, (I.11))."""
+    """``codegen incompressible`` (nu = 1/2: (I.11), (I.6)-(I.8), (I.9)) or ``codegen two-term`` (sphere, (I.11))."""
     from ..asymptotics.incompressible import (
         incompressible_axisymmetric,
         incompressible_ellipse,
@@ -352,7 +352,7 @@ def _nearly_incompressible_result(args, punch):
     sphere = punch.name.startswith("paraboloid")
     if args.result == "two-term":
         if not sphere:
-            raise BadInput("two-term: the two-term model (I.10)-(I.11) is derived for the sphere: use --kind paraboloid")
+            raise BadInput("two-term: the two-term model (I.10)-(I.11) is derived for the sphere: --kind paraboloid")
         layer = _layer(args.nu or "symbolic")
         nu = layer.numeric_nu
         if nu is not None and not 0.25 < nu < 0.5:
