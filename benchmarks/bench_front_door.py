@@ -31,6 +31,11 @@ def run() -> list[tuple[str, float, str]]:
 
         model = call().model  # warm: the law, the edge shift and the coefficients are cached per layer
         rows.append((f"solve(auto) {name}: {model}", best(call), f"< {target:g} s"))
+    # the inverse problem through the direct solver: secant steps on log P against log delta0
+    layer = tl.BondedLayer(0.49)
+    P = tl.solve(layer, sphere, delta0=0.1, H=0.28, E=1.0).force
+    rows.append(("solve(auto, force=P) sphere nu=0.49 H/a=0.2: direct",
+                 best(lambda: tl.solve(layer, sphere, force=P, H=0.28, E=1.0)), "< 2 s"))
     return rows
 
 

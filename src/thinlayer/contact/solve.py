@@ -490,34 +490,48 @@ def _fast_size(n: float) -> int:
 
 
 def _depth_for_force(force_of: Callable[[float], float], target: float, guess: float) -> float:
-    """The depth whose force is ``target``: bracket in log(delta0), then Brent (the force increases with delta0)."""
+    """The depth whose force is ``target`` (the force increases with the depth).
+
+    Secant steps on ``log P`` against ``log delta0`` (``P ~ delta0^gamma`` with ``gamma`` between 1 and 3 for
+    every model: few steps from a good guess), safeguarded by a bracket and Brent's method.
+    """
     from scipy import optimize
 
-    lo = hi = max(guess, 1e-300)
+    def g(logd):
+        return math.log(force_of(math.exp(logd))) - math.log(target)
 
-    def g(d):
-        return math.log(force_of(d)) - math.log(target)
-
-    glo = g(lo)
-    ghi = glo
-    for _ in range(200):
-        if glo <= 0 <= ghi and lo < hi:
+    x0 = math.log(max(guess, 1e-300))
+    g0 = g(x0)
+    x1 = x0 - g0 / 2.0  # gamma ~ 2 (a sphere on a thin compressible layer)
+    g1 = g(x1)
+    pts = [(x0, g0), (x1, g1)]
+    for _ in range(12):
+        if abs(g1) < 1e-13:
+            return math.exp(x1)
+        if g1 == g0:
             break
-        if glo > 0:
-            hi, ghi = lo, glo
-            lo /= 4.0
-            glo = g(lo)
-        else:
-            lo, glo = hi, ghi
-            hi *= 4.0
-            ghi = g(hi)
-    else:
+        x0, g0, x1 = x1, g1, x1 - g1 * (x1 - x0) / (g1 - g0)
+        g1 = g(x1)
+        pts.append((x1, g1))
+    lows = [x for x, v in pts if v < 0]
+    highs = [x for x, v in pts if v > 0]
+    lo = max(lows) if lows else min(x for x, _ in pts) - 1.0
+    hi = min(highs) if highs else max(x for x, _ in pts) + 1.0
+    for _ in range(100):
+        if g(lo) < 0:
+            break
+        lo -= 2.0
+    for _ in range(100):
+        if g(hi) > 0:
+            break
+        hi += 2.0
+    if not (g(lo) < 0 < g(hi)):
         raise ValidityError(f"solve(): no depth gives the force {target:.6g}", "force")
-    return optimize.brentq(g, lo, hi, xtol=1e-14 * hi, rtol=1e-12)
+    return math.exp(optimize.brentq(g, lo, hi, xtol=1e-14, rtol=1e-13))
 
 
 def _direct(layer, punch, delta0, H, mu, nu, refine=False, previous=None, force=None, tol=DEFAULT_TOL,
-            n=None) -> Indentation:
+            n=None, estimate=True) -> Indentation:
     """The direct numerical solution (axisymmetric spectral or 2D FFT), with its estimate from a coarser run."""
     from ..numerics import solve_2d, solve_axisymmetric
     from ..numerics.fft2d import memory_estimate
@@ -526,12 +540,13 @@ def _direct(layer, punch, delta0, H, mu, nu, refine=False, previous=None, force=
     free_nu = nu if layer.numeric_nu is None else None
     if force is not None:
         guess = delta0 if delta0 is not None else 1.0
-        delta0 = _depth_for_force(lambda d: _direct(layer, punch, d, H, mu, nu, n=n).force, force, guess)
+        delta0 = _depth_for_force(lambda d: _direct(layer, punch, d, H, mu, nu, n=n, estimate=False).force, force,
+                                  guess)
     if shape.axisymmetric:
         modes = n
         if refine and previous is not None:
             modes = int(1.4 * previous.modes) + 1
-        res = solve_axisymmetric(layer, punch, delta0, H, mu, n=modes, nu=free_nu)
+        res = solve_axisymmetric(layer, punch, delta0, H, mu, n=modes, nu=free_nu, error_estimate=estimate)
         c = res.radius
         floor = 1e-9  # the spectral estimate can read zero; the solver's own tolerances are ~1e-12
         est = {"force": max(res.force_error, floor), "contact_radius": max(res.radius_error / c, floor),
@@ -557,6 +572,9 @@ def _direct(layer, punch, delta0, H, mu, nu, refine=False, previous=None, force=
                     "asymptotic model", "force", math.inf, tol, "direct")
         try:
             res = solve_2d(layer, punch, delta0=delta0, H=H, mu=mu, n=cells, extent=half, nu=free_nu)
+            if not estimate:
+                coarse = res
+                break
             coarse = solve_2d(layer, punch, delta0=delta0, H=H, mu=mu, n=_fast_size(0.7 * cells), extent=half,
                               nu=free_nu)
             break
@@ -673,7 +691,8 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         layer = IncompressibleLayer()
     if choice == "direct":
         return _direct(layer, pn, d0, HH, mm, nu_v, force=Pt, tol=tol_v, n=n)
-    tried = []
+    tried: list[str] = []
+    guess = None
     names = ASYMPTOTIC if choice in ("auto", "asymptotic") else (choice,)
     for name in names:
         try:
@@ -684,7 +703,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         except ValidityError as exc:
             if exc.model == "other units":  # beyond the double range: no other model would do better
                 raise
-            tried.append(f"{name}: {exc}".replace("solve(): ", ""))
+            tried.append(f"{name}: " + str(exc).replace("solve(): ", "").removeprefix(f"{name}: "))
             if choice not in ("auto", "asymptotic"):
                 raise
             continue
@@ -693,6 +712,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
                                      f"{100 * tol_v:.3g} %"])
             return _with_reason(ans, why, tol_v)
         tried.append(f"{name}: estimates {_fmt_est(ans.error_estimate)} exceed tol {100 * tol_v:.3g} %")
+        guess = guess or ans.delta0  # a depth for the direct solver's inverse problem to start from
         if choice not in ("auto", "asymptotic"):
             raise ValidityError(f"solve(): the {name} model's {tried[-1].split(': ', 1)[1]} (H/a = "
                                 f"{ans.H_over_a:.3g}); use model='auto' or model='direct'", "force",
@@ -705,7 +725,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
                             + "; ".join(tried) + "; use model='auto' or 'direct'", "force", math.inf, tol_v,
                             "direct")
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # the solver checks finiteness
-        ans = _direct(layer, pn, d0, HH, mm, nu_v, force=Pt, tol=tol_v, n=n)
+        ans = _direct(layer, pn, d0 if d0 is not None else guess, HH, mm, nu_v, force=Pt, tol=tol_v, n=n)
     return _with_reason(ans, "; ".join(tried + [f"direct: {ans.reason}"]), tol_v)
 
 
