@@ -22,6 +22,7 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "thinlayer"
 RANK = {
     "thinlayer._checks": 0,      # argument validators: import nothing of thinlayer
     "thinlayer._series": 0,      # power-series arithmetic
+    "thinlayer._lazy": 0,        # package names imported on first use (PEP 562)
     "thinlayer.symbols": 0,      # the paper's symbols
     "thinlayer.results": 1,      # Result protocol, checked_lambdify
     "thinlayer.display": 1,      # text and Jupyter display

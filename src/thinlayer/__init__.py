@@ -20,30 +20,30 @@ import importlib
 import warnings
 from typing import Any
 
-from . import errata, symbols
-from .asymptotics.boundary_layer import alexandrov_solution
-from .asymptotics.composite import composite_pressure
-from .asymptotics.contour import contact_contour, ellipse_contour
-from .asymptotics.force_law import force_law
-from .asymptotics.incompressible import obstacle_problem, regime, thin_layer_operator, two_term_sphere
-from .asymptotics.inner import inner_pressure
-from .asymptotics.moment_expansion import moment_expansion
-from .asymptotics.wiener_hopf import boundary_layer_exact, edge_shift_alexandrov, edge_shift_exact
-from .contact.solve import Indentation, solve
-from .layers.coefficients import kernel_coefficients
-from .layers.kernels import (
-    BondedLayer,
-    FrictionlessLayer,
-    GenericLayer,
-    HalfSpace,
-    IncompressibleLayer,
-    IncompressibleLayerError,
-    LayerKernel,
-)
-from .layers.moments import kernel_moment
-from .numerics import solve_2d, solve_axisymmetric
-from .punch import Punch, PunchError
-from .results import MissingArgumentError, checked_lambdify
+#: where each public name lives; imported on first use (PEP 562), so that ``import thinlayer`` and
+#: ``thinlayer --help`` do not pay for scipy, the numerics and the validation studies up front
+_PUBLIC = {
+    **dict.fromkeys(["BondedLayer", "FrictionlessLayer", "GenericLayer", "HalfSpace", "IncompressibleLayer",
+                     "IncompressibleLayerError", "LayerKernel"], "thinlayer.layers.kernels"),
+    "kernel_coefficients": "thinlayer.layers.coefficients",
+    "kernel_moment": "thinlayer.layers.moments",
+    **dict.fromkeys(["Punch", "PunchError"], "thinlayer.punch"),
+    "moment_expansion": "thinlayer.asymptotics.moment_expansion",
+    "inner_pressure": "thinlayer.asymptotics.inner",
+    **dict.fromkeys(["contact_contour", "ellipse_contour"], "thinlayer.asymptotics.contour"),
+    "alexandrov_solution": "thinlayer.asymptotics.boundary_layer",
+    **dict.fromkeys(["boundary_layer_exact", "edge_shift_alexandrov", "edge_shift_exact"],
+                    "thinlayer.asymptotics.wiener_hopf"),
+    "force_law": "thinlayer.asymptotics.force_law",
+    "composite_pressure": "thinlayer.asymptotics.composite",
+    **dict.fromkeys(["obstacle_problem", "regime", "thin_layer_operator", "two_term_sphere"],
+                    "thinlayer.asymptotics.incompressible"),
+    **dict.fromkeys(["Indentation", "solve"], "thinlayer.contact.solve"),
+    **dict.fromkeys(["solve_2d", "solve_axisymmetric"], "thinlayer.numerics"),
+    **dict.fromkeys(["MissingArgumentError", "checked_lambdify"], "thinlayer.results"),
+}
+#: public submodules
+_MODULES = {"errata": "thinlayer.errata", "symbols": "thinlayer.symbols"}
 
 __all__ = [
     # layers: the kernel L(u) (2.3)-(2.4)
@@ -90,15 +90,22 @@ _MOVED = {
 
 
 def __getattr__(name: str) -> Any:
-    """A name moved out of ``__all__``: import it from its module, with a DeprecationWarning."""
-    module = _MOVED.get(name)
-    if module is None:
-        raise AttributeError(f"module 'thinlayer' has no attribute {name!r}")
-    warnings.warn(f"thinlayer.{name} is deprecated: import it from {module} (thinlayer 0.2 removes this alias)",
-                  DeprecationWarning, stacklevel=2)
-    return getattr(importlib.import_module(module), name)
+    """A public name, imported on first use; a name moved out of ``__all__``, with a DeprecationWarning."""
+    if name in _PUBLIC:
+        value = getattr(importlib.import_module(_PUBLIC[name]), name)
+    elif name in _MODULES:
+        value = importlib.import_module(_MODULES[name])
+    else:
+        module = _MOVED.get(name)
+        if module is None:
+            raise AttributeError(f"module 'thinlayer' has no attribute {name!r}")
+        warnings.warn(f"thinlayer.{name} is deprecated: import it from {module} (thinlayer 0.2 removes this alias)",
+                      DeprecationWarning, stacklevel=2)
+        return getattr(importlib.import_module(module), name)
+    globals()[name] = value  # the next access is a plain attribute
+    return value
 
 
 def __dir__() -> list[str]:
-    """The current names only: the deprecated aliases are not advertised."""
-    return sorted(globals())
+    """The current names only (loaded or not): the deprecated aliases are not advertised."""
+    return sorted(set(globals()) | set(__all__))

@@ -67,3 +67,11 @@ def test_cli_plots_written_atomically_and_kept_without_force(tmp_path, capsys):
     assert png.read_bytes() == b"my figure" and not (tmp_path / "validation.json").exists()
     args = _parser().parse_args([*argv, "--force"])
     assert args.func(args) in (0, 1) and png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_default_shapes_are_every_shape():
+    # the parser spells the default out so that building it imports no solver
+    from thinlayer.validation.cases import SHAPES
+    from thinlayer.validation.cli import DEFAULT_SHAPES
+
+    assert DEFAULT_SHAPES == ",".join(SHAPES)

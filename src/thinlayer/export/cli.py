@@ -19,10 +19,6 @@ import sys
 from pathlib import Path
 from typing import Any
 
-import sympy as sp
-
-from ..parse import as_expr
-
 EXIT_OK, EXIT_FAILURE, EXIT_BAD_INPUT = 0, 1, 2
 EXIT_INTERRUPTED, EXIT_BROKEN_PIPE, EXIT_TERMINATED = 130, 141, 143
 
@@ -137,6 +133,10 @@ def _num(x: Any) -> float | None:
 
 def _expr_json(e: Any) -> dict:
     """``{"expr": sympy string, "latex": LaTeX, "value": float or null}``."""
+    import sympy as sp
+
+    from ..parse import as_expr
+
     e = as_expr(e)
     return {"expr": str(e), "latex": sp.latex(e), "value": _num(e) if e.is_number else None}
 
@@ -364,6 +364,8 @@ def _nearly_incompressible_result(args, punch):
     if sphere:
         return two_term_sphere(IncompressibleLayer())
     if punch.name == "elliptic paraboloid":
+        import sympy as sp
+
         from .. import symbols as S
 
         e = sp.Poly(punch.expr, S.x1, S.x2)

@@ -21,26 +21,21 @@ Modules, by role:
   two-term sphere models side by side (with the direct solver);
 * :mod:`~thinlayer.validation.cli`: the command ``thinlayer validate`` (:func:`add_cli`, :func:`cli`).
 """
-from .analysis import EdgeShiftCheck, OrderFit, ValidationStudy
-from .cases import (
-    CLAIMED_ORDERS,
-    H_OVER_A_RANGE,
-    NUS,
-    SHAPES,
-    ContourData,
-    PressureProfile,
-    ValidationRow,
-    check_nu,
-    check_nus,
-    check_ratio,
-    check_ratios,
-    check_shapes,
-    elliptic_grid,
-)
-from .cli import add_cli, cli
-from .comparison import SphereModels, compare_sphere_models
-from .runner import StudyEvent, validate_elliptic, validate_sphere, validation_study
-from .speed import SpeedComparison, speed_comparison
+from .._lazy import lazy_exports
+
+#: public names and the module each lives in (imported on first use)
+_EXPORTS = {
+    **dict.fromkeys(["EdgeShiftCheck", "OrderFit", "ValidationStudy"], "thinlayer.validation.analysis"),
+    **dict.fromkeys(["CLAIMED_ORDERS", "H_OVER_A_RANGE", "NUS", "SHAPES", "ContourData", "PressureProfile",
+                     "ValidationRow", "check_nu", "check_nus", "check_ratio", "check_ratios", "check_shapes",
+                     "elliptic_grid"], "thinlayer.validation.cases"),
+    **dict.fromkeys(["add_cli", "cli"], "thinlayer.validation.cli"),
+    **dict.fromkeys(["SphereModels", "compare_sphere_models"], "thinlayer.validation.comparison"),
+    **dict.fromkeys(["StudyEvent", "validate_elliptic", "validate_sphere", "validation_study"],
+                    "thinlayer.validation.runner"),
+    **dict.fromkeys(["SpeedComparison", "speed_comparison"], "thinlayer.validation.speed"),
+}
+__getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 __all__ = [
     "CLAIMED_ORDERS",
