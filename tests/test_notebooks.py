@@ -100,7 +100,9 @@ def test_results_render_as_latex_in_jupyter(monkeypatch):
     data = nb.cells[0].outputs[0]["data"]
     assert data["text/latex"].startswith("$$\\begin{gather*}\\mathcal{A} = \\frac{20}{49} \\tag{2.4}")
     assert "m_{1} = \\frac{1}{14} \\tag{2.20}" in data["text/latex"]
-    assert data["text/plain"].startswith("KernelCoefficients(layer=BondedLayer(nu=3/10)")  # repr is untouched
+    # text/plain is the readable text (_repr_pretty_), not the dataclass's field-by-field repr (issue 17)
+    assert data["text/plain"].startswith("KernelCoefficients of BondedLayer(nu=3/10), n <= 1")
+    assert "layer=BondedLayer" not in data["text/plain"]
     text = nb.cells[1].outputs[0]["text"]
     assert text.startswith("Punch (paraboloid of revolution): Phi(x_1, x_2) = x_1**2/2 + x_2**2/2   (1.1)")
 

@@ -127,6 +127,29 @@ class RichDisplay:
 
     __slots__ = ()
 
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        """A class that formats itself (``text_lines``) and writes no ``__repr__`` gets the short one below.
+
+        Set here, before ``@dataclass`` runs, so that the dataclass keeps it instead of listing every field
+        (a 950-character repr in the REPL).
+        """
+        super().__init_subclass__(**kwargs)
+        if "__repr__" not in cls.__dict__ and "text_lines" in cls.__dict__:
+            cls.__repr__ = RichDisplay._short_repr
+
+    def _short_repr(self) -> str:
+        first = self.text_lines()[0] if self.text_lines() else type(self).__name__
+        return first if len(first) <= 110 else first[:107] + "..."
+
+    def _repr_pretty_(self, printer: Any, cycle: bool) -> None:
+        """IPython's text form (the REPL of IPython, Jupyter's text/plain): the readable text, not the repr."""
+        printer.text(type(self).__name__ + "(...)" if cycle else str(self))
+
+    def _latex(self, printer: Any = None) -> str:
+        """``sympy.latex(result)``: the result's own LaTeX (sympy's printer hook)."""
+        tex = self._display_tex()
+        return tex if tex is not None else r"	ext{" + latex_escape(str(self)) + "}"
+
     def _display_tex(self) -> str | None:
         """The LaTeX Jupyter shows: ``latex()`` when the class has one, else None (plain text)."""
         latex = getattr(self, "latex", None)

@@ -39,6 +39,7 @@ import numpy as np
 import sympy as sp
 
 from .._checks import parse_nu
+from ..display import RichDisplay
 from .._checks import positive as _positive
 from ..layers.kernels import LayerKernel
 from ..punch import Punch, PunchError
@@ -120,7 +121,7 @@ def numeric_punch(punch: Any, parameters: dict | None = None) -> Punch:
 
 
 @dataclass(frozen=True, eq=False)
-class ContactSolution:
+class ContactSolution(RichDisplay):
     r"""Contact solution for numeric parameters; made by :func:`compressible_solution`.
 
     Attributes
