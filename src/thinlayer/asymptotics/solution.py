@@ -39,8 +39,8 @@ import numpy as np
 import sympy as sp
 
 from .._checks import parse_nu
-from ..display import RichDisplay
 from .._checks import positive as _positive
+from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
 from ..punch import Punch, PunchError
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
