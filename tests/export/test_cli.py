@@ -167,3 +167,20 @@ def test_cli_and_no_overwrite(tmp_path, capsys):
     assert "not written by thinlayer" in capsys.readouterr().err
     assert mine.read_text() == "my notes\n"
     assert main(["derive", str(f), "--out", str(tmp_path), "--force"]) == 0
+
+
+def test_conventions_version_quiet_overwrite(capsys, tmp_path):
+    # --version; --overwrite for files (the former --force still accepted there); --quiet drops 'wrote ...'
+    from importlib.metadata import version
+
+    assert main(["--version"]) == 0 and capsys.readouterr().out.strip() == f"thinlayer {version('thinlayer')}"
+    out = tmp_path / "gen"
+    argv = ["codegen", "force", "--kind", "paraboloid", "--lang", "python", "--out", str(out)]
+    assert main(argv) == 0 and "wrote" in capsys.readouterr().out
+    assert main(argv) == 2 and "pass --overwrite" in capsys.readouterr().err
+    assert main([*argv, "--overwrite", "--quiet"]) == 0 and capsys.readouterr().out == ""
+    assert main([*argv, "--force"]) == 0
+    for cmd in ("report", "coefficients", "inner", "solve", "errata", "codegen", "validate"):
+        text = build_parser()._subparsers._group_actions[0].choices[cmd].format_help()
+        assert "--quiet" in text, cmd
+        assert ("--overwrite" in text) == (cmd in ("report", "codegen", "validate")), cmd

@@ -178,7 +178,7 @@ def test_validate_refuses_existing_outputs_before_running(tmp_path, capsys):
         d.mkdir()
         (d / name).write_text("old\n")
         assert main(["validate", "--out", str(d), "--plots", "--quiet"]) == 2
-        assert "exists; pass --force" in capsys.readouterr().err and (d / name).read_text() == "old\n"
+        assert "exists; pass --overwrite" in capsys.readouterr().err and (d / name).read_text() == "old\n"
 
 
 def _fake_tex(tmp_path) -> dict:

@@ -40,10 +40,10 @@ def test_cli_refuses_existing_outputs_before_the_study(tmp_path):
 
     (tmp_path / "validation.tex").write_text("my edited table\n")
     args = _parser().parse_args(["validate", "--shapes", "sphere", "--nu", "0.3", "--out", str(tmp_path), "--quiet"])
-    with pytest.raises(OutputExistsError, match="validation.tex exists; pass --force"):
+    with pytest.raises(OutputExistsError, match="validation.tex exists; pass --overwrite"):
         args.func(args)
     assert (tmp_path / "validation.tex").read_text() == "my edited table\n"
-    assert "--force" in _parser()._subparsers._group_actions[0].choices["validate"].format_help()
+    assert "--overwrite" in _parser()._subparsers._group_actions[0].choices["validate"].format_help()
 
 
 def test_cli_plots_written_atomically_and_kept_without_force(tmp_path, capsys):

@@ -159,7 +159,14 @@ def _add_punch_args(p: argparse.ArgumentParser) -> None:
                    help="a value for a punch parameter (repeatable), e.g. --param R_1=4 --param R_2=1")
 
 
+def _add_overwrite(p: argparse.ArgumentParser, help: str) -> None:
+    """``--overwrite`` (files); ``--force`` is still accepted for it, hidden: in ``solve`` it is the total force."""
+    p.add_argument("--overwrite", action="store_true", help=help)
+    p.add_argument("--force", dest="overwrite", action="store_true", help=argparse.SUPPRESS)
+
+
 def _add_output_args(p: argparse.ArgumentParser, latex: bool = True) -> None:
+    p.add_argument("--quiet", action="store_true", help="no 'wrote ...' messages (errors still go to stderr)")
     p.add_argument("--json", action="store_true", help="machine-readable JSON output (keys above)")
     if latex:
         p.add_argument("--latex", action="store_true", help="print the LaTeX of the result")
@@ -172,12 +179,13 @@ def _cmd_report(args) -> int:
     from .derivation import load_derivation, write_report
 
     der = load_derivation(args.file)
-    tex = write_report(der, args.out, pdf=args.pdf, force=args.force)
+    tex = write_report(der, args.out, pdf=args.pdf, force=args.overwrite)
     pdf = tex.with_suffix(".pdf") if args.pdf else None
     if args.json:
         _print({"tex": str(tex), "pdf": str(pdf) if pdf else None}, True)
     else:
-        print(f"wrote {tex}" + (f" and {pdf}" if pdf else ""))
+        if not args.quiet:
+            print(f"wrote {tex}" + (f" and {pdf}" if pdf else ""))
     return EXIT_OK
 
 
@@ -397,16 +405,17 @@ def _cmd_codegen(args) -> int:
 
     out_dir = Path(args.out)
     targets = [out_dir / fname for c in codes for fname in c.files]
-    refuse_existing(targets, args.force)  # every file checked before any is written
+    refuse_existing(targets, args.overwrite)  # every file checked before any is written
     written = []
     with output_lock(out_dir, codes[0].function_name):
-        refuse_existing(targets, args.force)
+        refuse_existing(targets, args.overwrite)
         for c in codes:
             written += [str(p) for p in c.write(out_dir, force=True)]
     if args.json:
         _print({"files": written}, True)
     else:
-        print("wrote " + ", ".join(written))
+        if not args.quiet:
+            print("wrote " + ", ".join(written))
     return EXIT_OK
 
 
@@ -424,7 +433,7 @@ def _add_report(sub: Any, fmt: type) -> None:
     r.add_argument("--pdf", action="store_true",
                    help="also compile the report (pdflatex; shell escape off, reading and writing only in its "
                         "temporary folder)")
-    r.add_argument("--force", action="store_true",
+    _add_overwrite(r,
                    help="overwrite existing files: a .tex that was not written by thinlayer or was edited since, "
                         "a PDF, a log, figures (default: refuse, before anything is written)")
     _add_output_args(r, latex=False)
@@ -524,7 +533,7 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                    help="what to generate")
     g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
     g.add_argument("--out", help="write the files into this folder (created) instead of printing")
-    g.add_argument("--force", action="store_true", help="overwrite existing files in --out")
+    _add_overwrite(g, help="overwrite existing files in --out (default: refuse, before anything is written)")
     g.add_argument("--name", help="function name (default from the result)")
     g.add_argument("--nu", default=None, help="Poisson ratio: 'symbolic' (default), a fraction or a number")
     g.add_argument("--order", type=_order, default=None, help="inner terms / number of coefficients")
@@ -534,6 +543,15 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     _add_punch_args(g)
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
+
+
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("thinlayer")
+    except PackageNotFoundError:  # run from a source tree that was never installed
+        return "unknown (not installed)"
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -558,6 +576,7 @@ def build_parser() -> argparse.ArgumentParser:
                "--delta0 0.5 --H 0.05\n\n"
                "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure,\n"
                "130 Ctrl-C, 143 SIGTERM, 141 output pipe closed")
+    ap.add_argument("--version", action="version", version=f"thinlayer {_version()}")
     sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
     for add in (_add_report, _add_coefficients, _add_inner, _add_solve, _add_errata, _add_codegen):
         add(sub, fmt)

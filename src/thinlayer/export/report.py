@@ -253,9 +253,9 @@ def check_writable(path: Path, force: bool) -> None:
     first, _, rest = path.read_bytes().decode("utf-8", errors="replace").partition("\n")
     m = _MARK.match(first)
     if m is None:
-        raise OutputExistsError(f"{path} exists and was not written by thinlayer; pass --force to overwrite it")
+        raise OutputExistsError(f"{path} exists and was not written by thinlayer; pass --overwrite to replace it")
     if m.group(1) != content_hash(rest):
-        raise OutputExistsError(f"{path} was edited after thinlayer wrote it; pass --force to overwrite it")
+        raise OutputExistsError(f"{path} was edited after thinlayer wrote it; pass --overwrite to replace it")
 
 
 def write_tex(text: str, path: Path, force: bool = False) -> Path:

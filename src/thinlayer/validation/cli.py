@@ -5,6 +5,7 @@ study cleanly: the rows done are printed and written, and the exit code is 130.
 """
 from __future__ import annotations
 
+import argparse
 import sys
 from fractions import Fraction
 from pathlib import Path
@@ -50,8 +51,9 @@ def add_cli(subparsers: Any, formatter_class: Any = None) -> Any:
     p.add_argument("--full", action="store_true",
                    help="the full study: nine H/a values, the elliptic case for every nu (2D grids up to 2304^2)")
     p.add_argument("--out", metavar="DIR", help="write validation.txt/.tex/.json (and plots) into DIR")
-    p.add_argument("--force", action="store_true",
+    p.add_argument("--overwrite", action="store_true",
                    help="replace existing validation.txt/.tex/.json and figures in --out (default: refuse)")
+    p.add_argument("--force", dest="overwrite", action="store_true", help=argparse.SUPPRESS)  # the former name
     p.add_argument("--plots", action="store_true", help="also write PNG and PDF figures into --out (needs matplotlib)")
     p.add_argument("--json", action="store_true", help="print JSON instead of the text table")
     p.add_argument("--nu", metavar="LIST", help="comma-separated Poisson ratios (default 0,0.2,0.3,0.4,0.45)")
@@ -102,7 +104,7 @@ def cli(args: Any) -> int:
         d = Path(args.out)
         targets = [d / f"validation{x}" for x in (".txt", ".tex", ".json")]
         refuse_existing(targets + (figure_files(d, "validation", ("png", "pdf")) if args.plots else []),
-                        getattr(args, "force", False))
+                        getattr(args, "overwrite", False))
     from .runner import validation_study
 
     shapes = tuple(s.strip() for s in args.shapes.split(",") if s.strip())
@@ -113,7 +115,7 @@ def cli(args: Any) -> int:
         if not study.rows:
             print("thinlayer: no case finished: nothing written", file=sys.stderr)
         else:
-            files = study.write(args.out, plots=args.plots, force=getattr(args, "force", False))
+            files = study.write(args.out, plots=args.plots, force=getattr(args, "overwrite", False))
             print("wrote " + ", ".join(str(f) for f in files), file=sys.stderr)
     if study.interrupted:
         return EXIT_INTERRUPTED

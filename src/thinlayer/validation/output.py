@@ -47,7 +47,7 @@ def file_mode() -> int:
     return 0o666 & ~mask
 
 
-def refuse_existing(paths: Iterable[str | Path], force: bool, hint: str = "pass --force to overwrite it") -> None:
+def refuse_existing(paths: Iterable[str | Path], force: bool, hint: str = "pass --overwrite to replace it") -> None:
     """Raise :class:`OutputExistsError` for the first of ``paths`` that exists, unless ``force``.
 
     Parameters
