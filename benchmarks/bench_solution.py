@@ -2,11 +2,11 @@
 
 ``run()`` returns ``(name, seconds, target)`` rows (best of a few repetitions where the call is
 repeatable); nothing runs at import.  Targets (issue 3): ``solve`` for an elliptic paraboloid
-with numeric parameters under 0.2 s; the composite pressure on 10^6 points under 0.2 s.
+with numeric parameters under 0.2 s; the composite pressure on 10^6 points within 0.1 s (issue 18).
 """
 from __future__ import annotations
 
-from _timing import best, main, timed
+from _timing import best, main, median, timed
 
 
 def run() -> list[tuple[str, float, str]]:
@@ -48,11 +48,12 @@ def run() -> list[tuple[str, float, str]]:
     x1 = rng.uniform(-2.1, 2.1, 10**6)
     x2 = rng.uniform(-1.05, 1.05, 10**6)
     comp(x1, x2)
-    rows.append(("composite pressure on 10^6 points (box around the ellipse)",
-                 best(lambda: comp(x1, x2)), "< 0.2 s"))
+    rows.append(("composite pressure on 10^6 points (box around the ellipse, median of 7)",
+                 median(lambda: comp(x1, x2), 7), "<= 0.1 s"))
     alex = solve(layer, punch, delta0=0.5, H=0.05, boundary_layer="alexandrov").composite
-    rows.append(("composite pressure on 10^6 points, Alexandrov boundary layer",
-                 best(lambda: alex(x1, x2)), "< 0.2 s"))
+    alex(x1, x2)
+    rows.append(("composite pressure on 10^6 points, Alexandrov boundary layer (median of 7)",
+                 median(lambda: alex(x1, x2), 7), "<= 0.1 s"))
     return rows
 
 

@@ -20,9 +20,13 @@ the sum slightly negative where ``g Qhat(v) < |p_1| A/vartheta``: with ``Qhat ~ 
 a zone ``tau < (pi/(4A)) (m_1 H Laplacian(Phi)/g)^2 = O((H/a)^2)`` (wider as nu -> 1/2, where m_1
 grows); ``p_c`` is clipped at 0 there.
 
-The foot point is found by a few Newton steps on ``Phi(x + t e) = delta0`` along
-``e = grad Phi(x)/|grad Phi(x)|``; the gradient line meets Gamma_0 at a point whose distance
-differs from the normal distance by ``O(n^2/R)``, inside the error above.
+The foot point is found by Newton's method on ``Phi(x + t e) = delta0`` along
+``e = grad Phi(x)/|grad Phi(x)|``, started from the root of the second-order Taylor polynomial
+of ``Phi`` along the line (exact for a quadratic punch) and stopped point by point once the step
+is below ``1e-13 H``; the gradient line meets Gamma_0 at a point whose distance differs from the
+normal distance by ``O(n^2/R)``, inside the error above.  The boundary-layer correction is only
+evaluated where ``|Qhat(v) - v| >= 1e-11`` (the tabulated exact solution's own rounding is
+~5e-12 beyond): deeper inside ``p_c = p_in``.
 """
 from __future__ import annotations
 
@@ -44,8 +48,17 @@ __all__ = ["CompositePressure", "composite_pressure", "BOUNDARY_LAYERS"]
 
 BOUNDARY_LAYERS = ("exact", "alexandrov")
 _NEWTON_STEPS = 8
+#: ``Qhat(v) - v`` is taken as 0 where the table's magnitude stays below this (the table's own noise: ~5e-12)
+_TAIL = 1e-11
 #: nodes of the interpolation table of Qhat(v) - v, uniform in sqrt(v - h)
 _TABLE_NODES = 2**14 + 1
+
+
+def _norm(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``sqrt(a^2 + b^2)``, vectorised: several times faster than ``numpy.hypot`` (punch gradients do not overflow)."""
+    out = a * a
+    out += b * b
+    return np.sqrt(out, out=out)
 
 
 @dataclass(frozen=True, eq=False)
@@ -63,7 +76,7 @@ class CompositePressure(RichDisplay):
     amplitude : float
         ``vartheta/A``: the boundary layer is ``amplitude * g * Qhat(v)``.
     band : float
-        ``Qhat(v) - v`` is taken as 0 beyond ``v = band`` (below double precision there).
+        ``Qhat(v) - v`` is taken as 0 beyond ``v = band`` (below 1e-11 there).
     """
 
     layer: LayerKernel
@@ -81,6 +94,8 @@ class CompositePressure(RichDisplay):
     _Q: Callable = field(repr=False)
     _table: tuple = field(repr=False)
     _nu: Any = field(default=None, repr=False)
+    _hess: Callable | None = field(default=None, repr=False)  # (Phi_11, Phi_12, Phi_22): the Newton start
+    _quadratic: bool = field(default=False, repr=False)  # Phi of degree <= 2: the foot point in closed form
 
     def local(self, x1: Any, x2: Any) -> tuple[np.ndarray, np.ndarray]:
         """``(v, g)``: scaled distance ``n/H`` from Gamma_0 (inward positive) and ``|grad Phi|`` at the foot.
@@ -92,21 +107,87 @@ class CompositePressure(RichDisplay):
         return self._newton(x1, x2, f, fx, fy)
 
     def _newton(self, x1, x2, f, fx, fy):
-        gn = np.hypot(fx, fy)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        if self._quadratic:
+            return self._foot_quadratic(x1, x2, f, fx, fy)
+        gn = _norm(fx, fy)
+        d0, tol, far = self.delta0, 1e-13 * self.H, 2 * self.band * self.H
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             ex, ey = fx / gn, fy / gn
-            t = (self.delta0 - f) / gn
+            r = d0 - f
+            if self._hess is None:
+                t = r / gn
+            else:  # root of f + gn t + c t^2/2 = delta0, c = e.Hess(Phi).e (exact for a quadratic Phi)
+                hxx, hxy, hyy = self._hess(x1, x2)
+                c = hxx * ex * ex + (2.0 * hxy) * ex * ey + hyy * ey * ey
+                disc = gn * gn + 2.0 * c * r
+                t = 2.0 * r / (gn + np.sqrt(disc))
+                lin = ~np.isfinite(t)
+                if lin.any():  # no real root of the quadratic model: the first-order distance
+                    t[lin] = r[lin] / gn[lin]
             ok = np.isfinite(t)
-            t = np.where(ok, t, 0.0)
+            if not ok.all():
+                t[~ok] = 0.0
+            # Newton point by point: a point leaves once converged (or far outside the band, where the correction is
+            # 0); g is |grad Phi| at its last evaluation, the foot point to within the last step
+            act = None if ok.all() else np.flatnonzero(ok)
+            g = gn if act is None else gn.copy()
+            ta, exa, eya, xa, ya = (t, ex, ey, x1, x2) if act is None else (t[act], ex[act], ey[act], x1[act], x2[act])
             for _ in range(_NEWTON_STEPS):
-                f, fx, fy = self._phi(x1 + t * ex, x2 + t * ey)
-                step = (f - self.delta0) / (fx * ex + fy * ey)
-                t = t - step
-                # converged where it matters (inside the band; elsewhere the correction is 0)
-                if not np.any((np.abs(step) > 1e-13 * self.H) & (np.abs(t) < 2 * self.band * self.H)):
+                f, fx, fy = self._phi(xa + ta * exa, ya + ta * eya)
+                step = (f - d0) / (fx * exa + fy * eya)
+                ta = ta - step
+                if act is None:
+                    g, t = _norm(fx, fy), ta
+                else:
+                    g[act], t[act] = _norm(fx, fy), ta
+                keep = np.abs(step) > tol
+                keep &= np.abs(ta) < far
+                if not keep.any():
                     break
-            g = np.hypot(fx, fy)
+                if not keep.all():
+                    sel = np.flatnonzero(keep)
+                    act = sel if act is None else act[sel]
+                    ta, exa, eya, xa, ya = ta[sel], exa[sel], eya[sel], xa[sel], ya[sel]
         v = np.where(ok & np.isfinite(t), t / self.H, np.inf)
+        return v, g
+
+    def _foot_quadratic(self, x1, x2, f, fx, fy):
+        """``(v, g)`` for a quadratic Phi: ``Phi(x + t e) = f + |grad f| t + c t^2/2`` exactly along the gradient line.
+
+        ``t = 2 r/(|grad f| + sqrt(|grad f|^2 + 2 c r))``, ``r = delta0 - f``, and the gradient at the foot is
+        ``grad f + (t/|grad f|) Hess grad f``.  Where the line does not reach Gamma_0 (negative discriminant, far
+        outside) the first-order distance stands in.
+        """
+        hxx, hxy, hyy = self._hess(x1, x2)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            if np.ndim(hxy) == 0 and hxy == 0:  # axes along the principal directions (most punches)
+                hx, hy = fx * hxx, fy * hyy
+            else:
+                hx, hy = hxx * fx + hxy * fy, hxy * fx + hyy * fy
+            g2 = fx * fx
+            g2 += fy * fy
+            gn = np.sqrt(g2)
+            r = self.delta0 - f
+            q = fx * hx
+            q += fy * hy  # grad f . Hess . grad f
+            q *= r
+            q *= 2.0
+            q /= g2
+            q += g2
+            np.sqrt(q, out=q)
+            q += gn
+            t = np.multiply(r, 2.0, out=r)
+            t /= q  # 2 r/(|grad f| + sqrt(|grad f|^2 + 2 c r)),  c = q_0/|grad f|^2
+            bad = ~np.isfinite(t)
+            if bad.any():
+                t[bad] = (self.delta0 - f[bad]) / gn[bad]
+            s = np.divide(t, gn, out=q)
+            hx = hx * s
+            hx += fx
+            hy = hy * s
+            hy += fy
+            g = _norm(hx, hy)
+        v = np.where(np.isfinite(t), t / self.H, np.inf)
         return v, g
 
     def __call__(self, x1: Any, x2: Any) -> np.ndarray:
@@ -116,11 +197,13 @@ class CompositePressure(RichDisplay):
         x1, x2 = x1.ravel(), x2.ravel()
         f, fx, fy = self._phi(x1, x2)
         with np.errstate(divide="ignore", invalid="ignore"):
-            v_est = (self.delta0 - f) / (np.hypot(fx, fy) * self.H)
+            v_est = (self.delta0 - f) / (_norm(fx, fy) * self.H)
         p_in = self._p_in(x1, x2)
         p = np.where(v_est > 0, p_in, 0.0)
-        # first-order distance first; the Newton foot point only near the edge
-        near = np.flatnonzero((v_est < 1.25 * self.band + 1) & (v_est > min(self.h, 0.0) - 1))
+        # first-order distance first; the Newton foot point only near the edge (the first-order estimate may be far
+        # off where grad Phi is small: the margin is that of the whole table, the Newton stops at the band)
+        reach = self.h + float(self._table[0][-1]) ** 2
+        near = np.flatnonzero((v_est < 1.25 * reach + 1) & (v_est > min(self.h, 0.0) - 1))
         if near.size:
             xn, yn = x1[near], x2[near]
             v, g = self._newton(xn, yn, f[near], fx[near], fy[near])
@@ -244,9 +327,14 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
 
     Phi = punch.expr
     phi = sp.lambdify((S.x1, S.x2), (Phi, sp.diff(Phi, S.x1), sp.diff(Phi, S.x2)), modules="numpy", cse=True)
+    hess = sp.lambdify((S.x1, S.x2), (sp.diff(Phi, S.x1, 2), sp.diff(Phi, S.x1, S.x2), sp.diff(Phi, S.x2, 2)),
+                       modules="numpy", cse=True)
 
     def phi3(a, b):
         return tuple(q if np.ndim(q) else np.full(np.shape(a), float(q)) for q in phi(a, b))
+
+    def hess3(a, b):
+        return tuple(q if np.ndim(q) else float(q) for q in hess(a, b))  # constants broadcast as scalars
 
     if boundary_layer == "exact":
         sol = boundary_layer_exact(layer)
@@ -262,5 +350,9 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
     vt = h + zt * zt
     ct = np.asarray(Q(vt), dtype=float) - vt
     ct[0] = -h  # Qhat(h) = 0 (3.18)
+    big = np.flatnonzero(np.abs(ct) >= _TAIL)
+    if big.size and big[-1] + 1 < len(vt):  # the band ends where |Qhat - v| stays below _TAIL
+        band = float(vt[big[-1] + 1])
+    quadratic = sp.Poly(Phi, S.x1, S.x2).total_degree() <= 2
     return CompositePressure(layer, punch, float(delta0), float(H), float(mu), inner, boundary_layer, h,
-                             th / float(layer.A), float(band), p_in, phi3, Q, (zt, ct), nu)
+                             th / float(layer.A), float(band), p_in, phi3, Q, (zt, ct), nu, hess3, quadratic)

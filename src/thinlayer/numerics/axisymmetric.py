@@ -272,8 +272,9 @@ def _check_modes(n: Any) -> int | None:
 
 
 #: Largest work estimate ``(t-quadrature points) x modes^2`` of one Galerkin matrix (see :func:`_check_work`).
-#: Measured (paraboloid, nu = 0.3, default modes, with the error estimate): c/H = 100 (9.9e7) takes 3.2 s,
-#: c/H = 128 (1.9e8) 3.4 s, c/H = 300 (1.0e9) 21.6 s, c/H = 1000 (8.1e9) 212 s; the limit admits c/H <= ~130
+#: Measured (paraboloid, nu = 0.3, default modes, with the error estimate): c/H = 100 (9.9e7) takes 0.20 s,
+#: c/H = 128 (1.9e8) 0.29 s (3.2 s and 3.4 s before the recurrences of issue 18; c/H = 300 (1.0e9) took 21.6 s
+#: and c/H = 1000 (8.1e9) 212 s then, the transforms growing like the work); the limit admits c/H <= ~130
 #: with the default modes (about 9 MB for the transforms array).
 MAX_WORK = 2.0e8
 
@@ -291,7 +292,7 @@ def _check_work(layer: Any, H: float, c_lo: float, c_hi: float, modes: int, what
     work = float(nt) * modes * modes
     check_bounded(work, f"the work estimate ({nt} quadrature points x {modes}^2 modes)", MAX_WORK,
                   f"the contact radius ~{c_hi:.3g} is {c_hi / H:.3g} layer thicknesses (H = {H:.3g}) {what}; the "
-                  f"direct solver is limited to about c/H <= 130 with the default modes (3.4 s measured at c/H = 128): "
+                  f"direct solver is limited to about c/H <= 130 with the default modes (0.3 s measured at c/H = 128): "
                   f"increase H, "
                   f"decrease the contact size (delta0 or radius) or the modes n, or use the asymptotic "
                   f"thinlayer.solve, which is accurate for such thin layers")
@@ -463,7 +464,7 @@ def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float |
     ------
     thinlayer._checks.WorkLimitError
         Before any matrix is built, when the work estimate (quadrature points x modes^2, from the rigid
-        overlap radius) exceeds :data:`MAX_WORK` = 2e8: about c/H <= 130 with the default modes (3.4 s measured
+        overlap radius) exceeds :data:`MAX_WORK` = 2e8: about c/H <= 130 with the default modes (0.3 s measured
         at c/H = 128); c/H = 300 took 22 s and c/H = 1000 212 s before the limit, H = 1e-6 tried to allocate 166 GiB.
 
     Examples
