@@ -17,8 +17,11 @@ def run() -> list[tuple[str, float, str]]:
     ellipse = x1**2 / (2 * 4.0) + x2**2 / (2 * 1.0)
     nonsym = x1**2 / 2 + x2**2 + sp.Rational(3, 10) * x1**3 + sp.Rational(1, 5) * x1 * x2 + x1**4 + x2**4
     quartic = (x1**2 + x2**2) / 20 + (x1**2 + x2**2) ** 2 / 125
+    long_ellipse = sp.Float("1e-30") * x1**2 + sp.Float("1e30") * x2**2  # aspect ratio 1e30
+    long_quartic = sp.Float("1e-70") * x1**4 + sp.Float("1e30") * x2**2  # aspect ratio ~3e32
     contact_contour(ellipse, 0.5)  # warm-up (imports, first FFT plans)
     c = contact_contour(ellipse, 0.5)
+    cl = contact_contour(long_ellipse, 1.0)
     rows = [
         ("contact_contour elliptic paraboloid R1=4, R2=1, delta0=0.5",
          best(lambda: contact_contour(ellipse, 0.5), 5), "< 0.05 s"),
@@ -30,6 +33,16 @@ def run() -> list[tuple[str, float, str]]:
          best(lambda: c.integrate(lambda u, v: u * u + v), 5), "< 0.01 s"),
         ("ContactContour.rho/b1/b2 at 10^4 points",
          best(lambda: (c.rho(_grid(c)), c.b1(_grid(c)), c.b2(_grid(c))), 3), "< 0.5 s"),
+        # elongated contours (round frame): about the cost of the round ellipse above
+        ("contact_contour ellipse of aspect ratio 1e30, delta0=1",
+         best(lambda: contact_contour(long_ellipse, 1.0), 5), "< 0.1 s"),
+        ("contact_contour 1e-70 x1^4 + 1e30 x2^2 (aspect ratio 3e32)",
+         best(lambda: contact_contour(long_quartic, 1.0), 5), "< 0.1 s"),
+        ("ContactContour.rho/b1/b2 at 10^4 points, aspect ratio 1e30",
+         best(lambda: (cl.rho(_grid(cl)), cl.b1(_grid(cl)), cl.b2(_grid(cl))), 3), "< 0.5 s"),
+        ("ContactContour force-law integrals V, J, aspect ratio 1e30",
+         best(lambda: (cl.integrate(lambda u, v: 1.0 - cl.phi(u, v)), cl.boundary_integral(cl.g, of="s")), 5),
+         "< 0.05 s"),
     ]
     return rows
 

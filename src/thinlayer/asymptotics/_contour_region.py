@@ -7,6 +7,7 @@ checked for holes, several components and unboundedness.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import numpy as np
 import sympy as sp
@@ -176,13 +177,14 @@ def _bounding_radius(P: Poly2, delta0: float, expr, fr: Frame) -> tuple[float, b
 # ---------------------------------------------------------------------------------------------
 # the natural frame: the region search runs in x = A u, Phi / delta0 (scale-free)
 # ---------------------------------------------------------------------------------------------
-#: largest aspect ratio (longest / shortest principal axis of omega_0) of a supported contour: the
-#: arc-length Fourier series of an ellipse of aspect ratio r converges like exp(-2 pi k rho / L)
-#: with the tip radius rho = b^2/a and L ~ 4a, so a 1e-12 tail needs about 18 r^2 nodes;
-#: 16384 nodes (contour._NMAX) reach r = 30 (measured), and r = 40 still passes the 1e-6 checks.
-ASPECT_MAX = 32.0
-#: above this aspect ratio the spectral parametrisation is not attempted at all
-ASPECT_HARD = 1e3
+#: up to this aspect ratio (longest / shortest principal axis of omega_0) Gamma_0 is represented directly by
+#: its arc-length Fourier series in x (an ellipse of aspect ratio r needs about 18 r^2 nodes: 256 for r = 3);
+#: more elongated contours are represented in the round frame x = W w (:func:`round_frame`), at a cost that
+#: does not grow with r
+ASPECT_DIRECT = 3.0
+#: the largest supported aspect ratio: beyond it the tip curvature (about r^2 / length) and the powers of the
+#: frame lengths in the transformed polynomial approach the double range (1e308)
+ASPECT_MAX = 1e100
 
 
 def _sym_eig2(q11: float, q12: float, q22: float):
@@ -192,13 +194,14 @@ def _sym_eig2(q11: float, q12: float, q22: float):
     hi = m + r
     if hi <= 0:
         return m - r, hi, (1.0, 0.0)
-    lo = (q11 * q22 - q12 * q12) / hi
+    # the determinant exactly (a rotated, elongated form cancels in q11 q22 - q12^2)
+    lo = float(Fraction(q11) * Fraction(q22) - Fraction(q12) ** 2) / hi
     if q12 == 0.0:
         v = (1.0, 0.0) if q11 >= q22 else (0.0, 1.0)
     elif q11 >= q22:
-        v = (hi - q22, q12)
+        v = (0.5 * (q11 - q22) + r, q12)
     else:
-        v = (q12, hi - q11)
+        v = (q12, 0.5 * (q22 - q11) + r)
     nv = math.hypot(*v)
     return lo, hi, (v[0] / nv, v[1] / nv)
 
@@ -280,34 +283,43 @@ def natural_frame(P: Poly2, delta0: float) -> Frame:
     return Frame(ell * B, ell, delta0)
 
 
-def _linear_power(p: float, q: float, n: int) -> dict[tuple[int, int], float]:
+def _linear_power(p: Fraction, q: Fraction, n: int) -> dict[tuple[int, int], Fraction]:
     """``(p u + q v)^n`` as {(a, b): coefficient of u^a v^b}."""
     return {(k, n - k): math.comb(n, k) * p**k * q ** (n - k) for k in range(n + 1)}
 
 
 def transformed(P: Poly2, fr: Frame) -> Poly2:
-    """``Phi(A u) / delta0`` as a :class:`Poly2` in ``u`` (the scale ``ell`` applied in logarithms)."""
-    ell, B = fr.ell, fr.A / fr.ell
-    lg, lv = math.log(ell), math.log(fr.vscale)
-    out: dict[tuple[int, int], float] = {}
+    """``Phi(A u) / delta0`` as a :class:`Poly2` in ``u``, each coefficient correctly rounded.
+
+    The expansion runs in exact rational arithmetic on the float coefficients of Phi, the entries of
+    ``A`` and delta0 (each a :class:`fractions.Fraction`, exact): no overflow of the powers of the
+    frame lengths, and no loss to the cancellation of a rotated, elongated quadratic form, whose terms
+    ``c_20 x1^2 + c_11 x1 x2 + c_02 x2^2`` are each about ``r^2`` times their sum on the region.
+    """
+    A = [[Fraction(float(v)) for v in row] for row in fr.A]
+    inv = 1 / Fraction(float(fr.vscale))
+    out: dict[tuple[int, int], Fraction] = {}
     for i, j, c in P.terms:
-        cs = math.copysign(math.exp(math.log(abs(c)) + (i + j) * lg - lv), c)
-        if cs == 0.0 or not math.isfinite(cs):
-            if cs == 0.0:
-                continue  # below 1e-308 of delta0 on the region: nothing
-            raise ValueError(f"the term {c:g} x_1^{i} x_2^{j} overflows on the natural length {ell:g} of Phi")
-        px = _linear_power(B[0, 0], B[0, 1], i)
-        py = _linear_power(B[1, 0], B[1, 1], j)
+        cs = Fraction(c) * inv
+        px = _linear_power(A[0][0], A[0][1], i)
+        py = _linear_power(A[1][0], A[1][1], j)
         for (a1, b1), v1 in px.items():
             for (a2, b2), v2 in py.items():
                 key = (a1 + a2, b1 + b2)
-                out[key] = out.get(key, 0.0) + cs * v1 * v2
-    big = max((abs(v) for v in out.values()), default=0.0)
-    return Poly2([(i, j, v) for (i, j), v in sorted(out.items()) if abs(v) > 1e-300 * big and v != 0.0])
+                out[key] = out.get(key, 0) + cs * v1 * v2
+    vals = {}
+    for (i, j), v in sorted(out.items()):
+        try:
+            vals[(i, j)] = float(v)
+        except OverflowError:
+            raise ValueError(f"Phi overflows on its natural lengths: the coefficient of u_1^{i} u_2^{j} in "
+                             f"Phi(A u)/delta0 exceeds the double range (|A| = {np.abs(fr.A).max():g})") from None
+    big = max((abs(v) for v in vals.values()), default=0.0)
+    return Poly2([(i, j, v) for (i, j), v in vals.items() if abs(v) > 1e-300 * big and v != 0.0])
 
 
-def _aspect(curve_u: np.ndarray, fr: Frame) -> float:
-    """sqrt(largest / smallest principal second moment) of the polygon, mapped to x (ellipse: a/b)."""
+def _moments(curve_u: np.ndarray) -> tuple[float, float, np.ndarray]:
+    """Centroid and central second-moment matrix of the polygon (exact for the polygon, Green's theorem)."""
     x, y = curve_u[:, 0], curve_u[:, 1]
     xn, yn = np.roll(x, -1), np.roll(y, -1)
     a = x * yn - xn * y
@@ -317,11 +329,39 @@ def _aspect(curve_u: np.ndarray, fr: Frame) -> float:
     mxx = ((x * x + x * xn + xn * xn) * a).sum() / (12 * A) - cx * cx
     myy = ((y * y + y * yn + yn * yn) * a).sum() / (12 * A) - cy * cy
     mxy = ((x * yn + 2 * x * y + 2 * xn * yn + xn * y) * a).sum() / (24 * A) - cx * cy
-    B = fr.A / fr.ell
-    M = B @ np.array([[mxx, mxy], [mxy, myy]]) @ B.T
-    lo, hi, _ = _sym_eig2(M[0, 0], M[0, 1], M[1, 1])
-    return math.sqrt(hi / lo) if lo > 0 else math.inf
+    return float(cx), float(cy), np.array([[mxx, mxy], [mxy, myy]])
 
+
+def _aspect(curve_u: np.ndarray, fr: Frame) -> float:
+    """sqrt(largest / smallest principal second moment) of the polygon, mapped to x (ellipse: a/b)."""
+    B = fr.A / fr.ell
+    with np.errstate(over="ignore", invalid="ignore"):
+        M = B @ _moments(curve_u)[2] @ B.T
+        if not np.all(np.isfinite(M)):
+            return math.inf
+        lo, hi, _ = _sym_eig2(M[0, 0], M[0, 1], M[1, 1])
+        return math.sqrt(hi / lo) if lo > 0 and math.isfinite(hi) else math.inf
+
+
+def round_frame(curve_u: np.ndarray, fr: Frame) -> tuple[Frame, np.ndarray, float]:
+    """The frame ``x = W w`` in which omega_0 is round: ``W = A S``, ``S = (4 M)^(1/2)``.
+
+    ``M`` is the central second-moment matrix of the region polygon in the natural coordinates
+    ``u`` (``x = A u``), so the region becomes about the unit disk in ``w = S^-1 u`` (its second
+    moments are those of the unit disk, ``I/4``).  The product is formed in ``u``, never by
+    inverting ``W`` in ``x``, so an aspect ratio of 1e30 loses nothing.  Returns the frame (with
+    ``ell`` and ``vscale`` of ``fr``), the polygon in ``w`` and ``det W`` (from the factors).
+    """
+    _, _, M = _moments(curve_u)
+    lam, V = np.linalg.eigh(4.0 * M)
+    if not (lam.min() > 0 and np.all(np.isfinite(lam))):
+        raise RuntimeError("degenerate region polygon (no area in one direction)")
+    S = (V * np.sqrt(lam)) @ V.T
+    Sinv = (V / np.sqrt(lam)) @ V.T
+    A = fr.A
+    # det A = (v1^2 + v2^2) l_short l_long for the natural frames: both products have one sign, no cancellation
+    det = float(A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]) * float(np.prod(np.sqrt(lam)))
+    return Frame(A @ S, fr.ell, fr.vscale), curve_u @ Sinv.T, det
 
 
 def _box_edge(x0, x1, y0, y1, n=256):
@@ -623,8 +663,9 @@ def region(P: Poly2, delta0: float, expr):
 
     The search is scale-free: it runs on ``Phi(A u) / delta0 = 1`` in the natural frame ``x = A u``
     (:func:`natural_frame`) and maps back.  Returns the curve, the critical points of Phi found on
-    the way, the lowest point ``(Phi, x1, x2)`` (all in x) and the aspect ratio of the region
-    (longest/shortest principal axis, from its second moments; ``a/b`` for an ellipse).
+    the way, the lowest point ``(Phi, x1, x2)`` (all in x), the aspect ratio of the region
+    (longest/shortest principal axis, from its second moments; ``a/b`` for an ellipse), the natural
+    frame and the curve in its coordinates ``u`` (``x = A u``).
     """
     fr = natural_frame(P, delta0)
     Q = transformed(P, fr)
@@ -644,19 +685,20 @@ def region(P: Poly2, delta0: float, expr):
     cx, cy = fr.to_x(curve[:, 0], curve[:, 1])
     crit_x = [tuple(float(t) for t in fr.to_x(a, b)) for a, b in crit]
     bx, by = fr.to_x(best[1], best[2])
-    return np.column_stack([cx, cy]), crit_x, (best[0] * delta0, float(bx), float(by)), _aspect(curve, fr)
+    return (np.column_stack([cx, cy]), crit_x, (best[0] * delta0, float(bx), float(by)), _aspect(curve, fr),
+            fr, curve)
 
 
 def region_curve(P: Poly2, delta0: float, expr):
-    """:func:`region` without the aspect ratio: ``(curve, critical points, lowest point)`` in x."""
+    """The first three results of :func:`region`: ``(curve, critical points, lowest point)`` in x."""
     return region(P, delta0, expr)[:3]
 
 
 def too_elongated(expr, delta0: float, ratio: float) -> ValueError:
-    """The one-line error for a contour beyond the spectral parametrisation's aspect-ratio limit."""
+    """The one-line error for a contour whose aspect ratio leaves the double range."""
     return ValueError(
-        f"the contact contour of Phi = {expr} at delta0 = {short(delta0)} is too elongated for the arc-length "
-        f"Fourier series: its aspect ratio (longest/shortest principal axis) is {ratio:.3g}, above the supported "
-        f"limit {ASPECT_MAX:g} (an ellipse of aspect ratio r needs about 18 r^2 = {18 * ratio * ratio:.2g} nodes, "
-        "at most 16384 are used)"
+        f"the contact contour of Phi = {expr} at delta0 = {short(delta0)} is too elongated for double precision: "
+        f"its aspect ratio (longest/shortest principal axis) is {ratio:.3g}, above the supported limit "
+        f"{ASPECT_MAX:g} (the tip curvature, about ratio^2/length, and the powers of the frame lengths "
+        "approach the double range)"
     )

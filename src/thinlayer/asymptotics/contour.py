@@ -1,3 +1,4 @@
+# size: one stage (3.1)-(3.14): spectral curve, round frame of elongated contours, results (region search split out)
 r"""The leading contact area omega_0 = {delta0 - Phi(x1, x2) > 0} and its contour Gamma_0 (3.1)-(3.14).
 
 The principal term (2.29) of the inner expansion is proportional to ``delta0 - Phi``; it is
@@ -55,16 +56,38 @@ Method of :func:`contact_contour`:
    ``| |f'| - 1 |`` at points halfway between the nodes, the Fourier tail and the turning number
    ``(1/2pi) oint kappa ds = 1``.
 
-Limits: the supported aspect ratio of omega_0 (longest/shortest principal axis, from its second
-moments) is ``ASPECT_MAX = 32``: the arc-length Fourier series of an ellipse of aspect ratio
-``r`` decays like ``exp(-2 pi k rho/L)`` with tip radius ``rho = b^2/a`` and ``L ~ 4a``, so it needs
-about ``18 r^2`` nodes; ``_NMAX = 16384`` nodes reach ``r = 32`` with ``| |f'| - 1 | = 4.9e-7`` (measured;
-``r = 35`` gives 4e-6 and fails the 1e-6 check).  A more elongated contour is kept only if it
-still passes the spectral checks (ends blunter than an ellipse's, e.g. ``x1^2 + 1e6 x2^4``),
-otherwise it is a ValueError naming its aspect ratio and the limit; above ``ASPECT_HARD = 1e3``
-(an ellipse would need about 1.8e7 nodes) the spectral parametrisation is not attempted.  The
-spectral step itself runs on ``Phi(ell u)/delta0 = 1`` with ``ell`` the size of the region, so its
-tolerances do not depend on the units.
+Steps 4-5 run on ``Phi(ell u)/delta0 = 1`` with ``ell`` the size of the region, so their tolerances
+do not depend on the units.  That is the whole representation up to the aspect ratio (longest /
+shortest principal axis of omega_0, from its second moments) ``ASPECT_DIRECT = 3``.
+
+Elongated contours.  The arc-length Fourier series of an ellipse of aspect ratio ``r`` decays like
+``exp(-2 pi k rho/L)`` with tip radius ``rho = b^2/a`` and ``L ~ 4a``: about ``18 r^2`` nodes (16384
+for ``r = 30``, 1.8e61 for ``r = 1e30``).  Above ``ASPECT_DIRECT`` steps 4-5 therefore run in the
+round frame ``x = W w``, ``W = A S`` (``A`` of step 0, ``S = (4 M)^(1/2)`` with ``M`` the central second
+moments of the region polygon in ``u``; :func:`round_frame`), where omega_0 is about the unit disk,
+so ``w(sigma)``, the arc-length (``sigma``) Fourier series of the round image, needs as many nodes as
+a circle-like contour whatever ``r``.  Everything in x follows from the linear map and its Jacobian:
+
+    x(sigma) = W w(sigma),   ds = |W w'(sigma)| dsigma,   |omega_0| = det W |W^-1 omega_0|,
+    d^m f/ds^m = (|x'(sigma)|^-1 d/dsigma)^m x(sigma)     (tangent (3.9), normal (3.3), curvature),
+
+the centroid is ``W`` times that of the image.  The speed ``|W w'|`` is smooth but nearly a kink at
+each tip (branch points at distance about ``1/r`` from the real sigma axis), so the trapezoidal rule
+in sigma would need about ``r`` nodes for the perimeter; the arc length ``s(sigma)`` is built on
+Chebyshev panels bisected towards the tips instead (:class:`_ArcLength`: a few dozen panels per
+tip whatever ``r``, at most 4096), inverted by safeguarded Newton.  Area integrals keep the trapezoidal
+rule in the smooth parameter sigma (``f'(s) ds = x'(sigma) dsigma``); line integrals ``oint g ds``
+use Gauss-Legendre on the panels.  ``Phi(W w)/delta0`` is expanded in exact rational arithmetic
+(:func:`transformed`), so a rotated elongated quadratic form, whose three terms cancel to one part in
+``r^2``, gives the contour of the coefficients as given.
+
+Limits: aspect ratio at most ``ASPECT_MAX = 1e100`` (a ValueError naming the ratio beyond it: the tip
+curvature, about ``r^2/L``, and the powers of the frame lengths approach the double range).  A tip
+shorter than about 1e-16 of the perimeter (an ellipse with ``r > 1e8``: ``rho = L/(4 r^2)``) lies
+between adjacent doubles ``s``: the evaluators are accurate at every representable ``s``, but the peak of
+the curvature there is not sampled, and line integrals of the curvature itself are not resolved.
+Functions evaluated in x (``phi``, ``g``, ``b1``, ``b2``, ``contains``) of a *rotated* elongated punch lose
+about ``r^2`` (``phi``) or ``r`` (gradient) units in the last place to the same cancellation.
 Components, holes and critical points smaller than the search grids can be missed
 (structures are found from grid cells, grid minima of ``|grad Phi|^2`` and zooms around every
 minimum below delta0); when the leading homogeneous part of Phi is only semidefinite, the
@@ -87,12 +110,13 @@ from .. import symbols as S
 from ..display import RichDisplay, fmt
 from ..parse import as_expr
 from ._contour_region import (
-    ASPECT_HARD,
+    ASPECT_DIRECT,
     ASPECT_MAX,
     Frame,
     Poly2,
     as_polynomial,
     region,
+    round_frame,
     short,
     signed_area,
     too_elongated,
@@ -383,11 +407,249 @@ def _acceptable(acc: ContourAccuracy, strict: float) -> bool:
 
 
 # ---------------------------------------------------------------------------------------------
+# elongated contours: the round frame x = W w(sigma) and the arc length s(sigma) on panels
+# ---------------------------------------------------------------------------------------------
+_PDEG = 16  # Chebyshev degree of the speed on one panel
+_PTHETA = np.pi * np.arange(_PDEG + 1) / _PDEG
+# Chebyshev-Lobatto points, with the panel ends: a near-kink between an end and the next point would leave
+# every interior sample on one branch and pass unseen, the end sample sees it
+_PNODES = np.cos(_PTHETA)
+_PMAT = (2.0 / _PDEG) * np.cos(np.outer(np.arange(_PDEG + 1), _PTHETA))  # values -> coefficients (DCT-I)
+_PMAT[:, [0, -1]] *= 0.5
+_PMAT[[0, -1]] *= 0.5
+_GLX, _GLW = np.polynomial.legendre.leggauss(_PDEG + 1)
+#: bounded work: at most this many bisections of a panel and this many panels
+_PANEL_LEVELS = 64
+_PANEL_MAX = 4096
+
+
+def _clenshaw(C: np.ndarray, xi: np.ndarray) -> np.ndarray:
+    """``sum_k C[:, k] T_k(xi)``: one Chebyshev series per point (rows of C)."""
+    b1 = np.zeros(len(xi))
+    b2 = np.zeros(len(xi))
+    for k in range(C.shape[1] - 1, 0, -1):
+        b1, b2 = C[:, k] + 2.0 * xi * b1 - b2, b1
+    return C[:, 0] + xi * b1 - b2
+
+
+class _ArcLength:
+    r"""The arc length ``s(sigma) = int_0^sigma |x'(t)| dt`` of a smooth closed curve and its inverse.
+
+    ``|x'|`` is smooth and periodic, but for an elongated contour it is nearly a kink at each tip:
+    the ellipse ``x = (a cos sigma, b sin sigma)`` has ``|x'| = a sqrt(sin^2 sigma + (b/a)^2 cos^2 sigma)``
+    with branch points at distance ``atanh(b/a) ~ b/a`` from the real axis, so the trapezoidal rule
+    converges only like ``exp(-N b/a)``.  Hence panels: the period is bisected until the Chebyshev
+    interpolant of the speed (degree 16) has a tail below ``tol`` times the mean speed.  A tip then
+    costs about ``log2(1e13)`` levels of two panels each, whatever the aspect ratio (beyond about
+    1e6 the kink is resolved only down to where it no longer shows at the tolerance: the speed is
+    within ``(b/a)^2 a`` of ``a |sin sigma|``); at most ``_PANEL_LEVELS`` bisections and
+    ``_PANEL_MAX`` panels, and no splitting below ``noise`` (the rounding error of the speed itself).
+    ``s`` is the Chebyshev antiderivative on each panel; its inverse is Newton's iteration on the
+    panel that holds ``s`` (bisection where it does not settle).
+    """
+
+    def __init__(self, speed: Callable, period: float, tol: float = 1e-13, noise: float = 0.0):
+        self.period = float(period)
+        a = self.period * np.arange(16) / 16
+        h = np.full(16, self.period / 16)
+        done_a, done_h, done_c = [], [], []
+        vbar = None
+        self.resolved = True
+        count = 0
+        for level in range(_PANEL_LEVELS + 1):
+            sig = a[:, None] + 0.5 * h[:, None] * (_PNODES + 1.0)
+            vals = speed(sig.ravel()).reshape(sig.shape)
+            if not np.all(np.isfinite(vals)):
+                raise ValueError("the speed |dx/dsigma| of the contour is not finite (beyond the double range)")
+            co = vals @ _PMAT.T
+            if vbar is None:
+                vbar = float(np.mean(vals))
+            ok = np.max(np.abs(co[:, -3:]), axis=1) <= tol * vbar + 8.0 * noise
+            if level == _PANEL_LEVELS or count + len(a) + np.count_nonzero(~ok) > _PANEL_MAX:
+                self.resolved = bool(np.all(ok))
+                ok[:] = True
+            done_a.append(a[ok])
+            done_h.append(h[ok])
+            done_c.append(co[ok])
+            count += int(np.count_nonzero(ok))
+            a, h = a[~ok], 0.5 * h[~ok]
+            if not len(a):
+                break
+            a, h = np.concatenate([a, a + h]), np.concatenate([h, h])
+        a, h, co = np.concatenate(done_a), np.concatenate(done_h), np.concatenate(done_c)
+        order = np.argsort(a)
+        self.a, self.h, self.cv = a[order], h[order], co[order]
+        # s on a panel: (h/2) int_{-1}^{xi} v, a Chebyshev series vanishing at xi = -1
+        self.ci = np.polynomial.chebyshev.chebint(self.cv, axis=1, lbnd=-1) * (0.5 * self.h)[:, None]
+        self.S0 = np.concatenate([[0.0], np.cumsum(self.ci.sum(axis=1))])
+        self.length = float(self.S0[-1])
+
+    @property
+    def panels(self) -> int:
+        return len(self.a)
+
+    def s_of(self, sig) -> np.ndarray:
+        """``s(sigma)`` for sigma in [0, period)."""
+        sig = np.mod(np.asarray(sig, dtype=float), self.period)
+        j = np.clip(np.searchsorted(self.a, sig, side="right") - 1, 0, len(self.a) - 1)
+        xi = np.clip(2.0 * (sig - self.a[j]) / self.h[j] - 1.0, -1.0, 1.0)
+        return self.S0[j] + _clenshaw(self.ci[j], xi)
+
+    def sigma_of(self, s) -> np.ndarray:
+        """The inverse ``sigma(s)`` (s taken modulo the length), in [0, period)."""
+        s = np.mod(np.asarray(s, dtype=float).ravel(), self.length)
+        j = np.clip(np.searchsorted(self.S0, s, side="right") - 1, 0, len(self.a) - 1)
+        r = s - self.S0[j]
+        dS = self.S0[j + 1] - self.S0[j]
+        ci, cv, hh = self.ci[j], self.cv[j], 0.5 * self.h[j]
+        xi = np.clip(-1.0 + 2.0 * r / np.where(dS > 0, dS, 1.0), -1.0, 1.0)
+        act = np.arange(len(s))
+        for _ in range(12):  # Newton (s is monotone in xi); the converged points drop out
+            x = xi[act]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                new = x - (_clenshaw(ci[act], x) - r[act]) / (hh[act] * _clenshaw(cv[act], x))
+            new = np.clip(np.where(np.isfinite(new), new, x), -1.0, 1.0)
+            xi[act] = new
+            act = act[np.abs(new - x) > 1e-15]
+            if not len(act):
+                break
+        bad = np.abs(_clenshaw(ci, xi) - r) > 1e-13 * np.maximum(dS, 1e-300)
+        if np.any(bad):  # bisection where Newton did not settle
+            lo, hi = np.full(np.count_nonzero(bad), -1.0), np.ones(np.count_nonzero(bad))
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                up = _clenshaw(ci[bad], mid) > r[bad]
+                hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
+            xi[bad] = 0.5 * (lo + hi)
+        return self.a[j] + hh * (xi + 1.0)
+
+    def quadrature(self, min_nodes: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Gauss-Legendre nodes sigma_q, weights (in sigma) and ``s(sigma_q)`` on the panels.
+
+        Each panel is cut into equal parts until there are at least ``min_nodes`` nodes.
+        """
+        m = max(1, -(-int(min_nodes) // (self.panels * len(_GLX))))
+        part = np.arange(m)
+        xi = (-1.0 + (2.0 * part[:, None] + 1.0 + _GLX[None, :]) / m).ravel()  # local coordinate on [-1, 1]
+        wq = np.tile(_GLW / m, m)
+        P, Q = self.panels, len(xi)
+        jj = np.repeat(np.arange(P), Q)
+        xx = np.tile(xi, P)
+        sig = self.a[jj] + 0.5 * self.h[jj] * (xx + 1.0)
+        wts = 0.5 * self.h[jj] * np.tile(wq, P)
+        sq = self.S0[jj] + _clenshaw(self.ci[jj], xx)
+        return sig, wts, sq
+
+
+class _FramedCurve:
+    r"""Gamma_0 as ``x = W w(sigma)``: the round image ``w`` by its own arc-length Fourier series.
+
+    ``W`` is the frame of :func:`round_frame` (the natural lengths of Phi times the square root of
+    the region's second moments), so ``w`` traces a nearly round curve and its Fourier series needs
+    as few terms as for a circle-like contour, whatever the aspect ratio of omega_0.  Everything in
+    ``x`` follows by the linear map and its Jacobian: ``x^(m)(sigma) = W w^(m)(sigma)``, the speed
+    ``|dx/dsigma| = |W w'|``, the arc length ``s`` by :class:`_ArcLength`, and with
+    ``D = |x'|^-1 d/dsigma`` the natural derivatives ``d^m f/ds^m = D^m x`` (3.3), (3.9), evaluated from the
+    Taylor coefficients in sigma (truncated power series of ``|x'|^-1``).  The first two are formed
+    without cancellation between the long and the short axis: the unit tangent (3.9) is ``W t_w``
+    normalised, ``t_w = (-dPhi~/dw2, dPhi~/dw1)`` the tangent of the level line of ``Phi~(w) = Phi(W w)/delta0``
+    at ``w(sigma)``: an error ``e`` of the point turns it by about ``e r``, while ``W w'`` would carry ``r``
+    times the interpolation error of the derivative ``w'`` (about 1e-12).  And ``f'' = kappa n0`` with
+    ``kappa = det W (w' x w'')/|W w'|^3``.  Areas are
+    ``det W`` times those in ``w``.
+    """
+
+    def __init__(self, W: np.ndarray, det: float, k: np.ndarray, c: np.ndarray, period: float, Pw: Poly2):
+        self.W = np.asarray(W, dtype=float)
+        self.det = float(det)
+        self.k, self.c, self.period = k, c, float(period)
+        self.Pw = Pw
+        # rounding of |W w'| in the direct sum: about eps sum_k |k c_k| (2 pi/period) |W|
+        wk = 2 * np.pi * np.abs(np.rint(k)) / self.period
+        noise = 2.2e-16 * float(np.sum(np.abs(c) * wk)) * float(np.linalg.norm(self.W, 2))
+        self.arc = _ArcLength(self.speed, self.period, noise=noise)
+        self._last: tuple[np.ndarray, np.ndarray] | None = None
+
+    def apply(self, wz: np.ndarray) -> np.ndarray:
+        """``W (Re wz, Im wz)`` as a complex number."""
+        u, v = wz.real, wz.imag
+        W = self.W
+        return (W[0, 0] * u + W[0, 1] * v) + 1j * (W[1, 0] * u + W[1, 1] * v)
+
+    def w(self, sig, m: int = 0) -> np.ndarray:
+        return _trig_eval(self.k, self.c, self.period, sig, m)
+
+    def x(self, sig, m: int = 0) -> np.ndarray:
+        """``d^m x / dsigma^m`` (complex ``x1 + i x2``)."""
+        return self.apply(self.w(sig, m))
+
+    def speed(self, sig) -> np.ndarray:
+        """``|dx/dsigma| = |W w'(sigma)|``, the Jacobian of the arc length."""
+        return np.abs(self.x(sig, 1))
+
+    def _sigma(self, s: np.ndarray) -> np.ndarray:
+        """``sigma(s)``, remembered for the last ``s`` (f, tangent, curvature, b1, b2 are often asked at the same s)."""
+        last = self._last
+        if last is not None and last[0].shape == s.shape and np.array_equal(last[0], s):
+            return last[1]
+        sig = self.arc.sigma_of(s)
+        self._last = (s.copy(), sig)
+        return sig
+
+    def to_w(self, p) -> np.ndarray:
+        return np.linalg.solve(self.W, np.asarray(p, dtype=float))
+
+    def z(self, s, m: int = 0) -> np.ndarray:
+        """``d^m f / ds^m`` at arc length ``s`` (complex), ``m >= 0``."""
+        s = np.asarray(s, dtype=float)
+        sig = self._sigma(s)
+        if m in (1, 2):
+            wz = self.w(sig)
+            _, gx, gy, *_ = self.Pw.all(wz.real, wz.imag)
+            t = self.apply(-gy + 1j * gx)  # W t_w
+            T = t / np.abs(t)
+            if m == 1:
+                return T.reshape(s.shape)
+            d1, d2 = self.w(sig, 1), self.w(sig, 2)
+            v = np.abs(self.apply(d1))
+            kappa = (self.det / v) * ((np.conj(d1) * d2).imag / v) / v
+            return (kappa * 1j * T).reshape(s.shape)
+        wk = 2 * np.pi * np.rint(self.k) / self.period
+        # Taylor coefficients X_j = x^(j)(sigma)/j! in one pass
+        C = np.stack([self.c * (1j * wk) ** j / math.factorial(j) for j in range(m + 1)], axis=1)
+        X = self.apply(_trig_eval(self.k, C, self.period, sig)).T  # (m + 1, M)
+        if m == 0:
+            return X[0].reshape(s.shape)
+        D1 = [(j + 1) * X[j + 1] for j in range(m)]  # Taylor coefficients of x'
+        v = [np.abs(D1[0])]
+        for j in range(1, m):  # |x'| = sqrt(x'.x'), term by term
+            q = sum((D1[i] * np.conj(D1[j - i])).real for i in range(j + 1))
+            v.append((q - sum(v[i] * v[j - i] for i in range(1, j))) / (2 * v[0]))
+        r = [1.0 / v[0]]
+        for j in range(1, m):  # 1/|x'|
+            r.append(-sum(v[i] * r[j - i] for i in range(1, j + 1)) / v[0])
+        g = list(X)
+        for _ in range(m):  # g <- (1/|x'|) dg/dsigma
+            dg = [(j + 1) * g[j + 1] for j in range(len(g) - 1)]
+            g = [sum(r[i] * dg[j - i] for i in range(j + 1)) for j in range(len(dg))]
+        return g[0].reshape(s.shape)
+
+    def samples(self, M: int):
+        """``M`` equally spaced sigma: ``x``, ``dx/dsigma``, the step, and ``w``, ``dw/dsigma``."""
+        sig = self.period * np.arange(M) / M
+        wz, dwz = self.w(sig), self.w(sig, 1)
+        return self.apply(wz), self.apply(dwz), self.period / M, wz, dwz
+
+
+# ---------------------------------------------------------------------------------------------
 # results
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class ContourAccuracy:
     """Self-checks of the spectral contour (all measured between the nodes).
+
+    For an elongated contour they are those of its round image ``w`` (``x = W w``, module docstring),
+    whose arc length sigma is the parameter of the Fourier series.
 
     Attributes
     ----------
@@ -415,7 +677,9 @@ class ContactContour(RichDisplay):
     Made by :func:`contact_contour`; dimensional coordinates.  ``s`` is the arc length along
     Gamma_0 in ``[0, perimeter)`` (periodic), counterclockwise, ``omega_0`` on the left.
     All evaluators are vectorised over ``s`` (any shape); vector-valued ones return arrays with a
-    trailing axis of length 2.
+    trailing axis of length 2.  An elongated contour (aspect ratio above 3) is held as
+    ``x = W w(sigma)`` with its arc length ``s(sigma)`` (module docstring); the evaluators are the
+    same functions of ``s``.
 
     Attributes
     ----------
@@ -428,7 +692,7 @@ class ContactContour(RichDisplay):
     min_point, min_value
         Where Phi is smallest and its value (the first point of contact).
     accuracy : ContourAccuracy
-        :class:`ContourAccuracy`.
+        :class:`ContourAccuracy` (of the round image ``w`` for an elongated contour).
     """
 
     #: the paper's equation this result reproduces
@@ -447,9 +711,12 @@ class ContactContour(RichDisplay):
     _c: np.ndarray = field(repr=False)
     _poly: Poly2 = field(repr=False)
     _star_center: tuple[float, float] | None = field(repr=False)
+    _framed: _FramedCurve | None = field(default=None, repr=False)
 
     # ---- the curve (3.3) ------------------------------------------------------------------
     def _z(self, s, m=0):
+        if self._framed is not None:
+            return self._framed.z(s, m)
         return _trig_eval(self._k, self._c, self.perimeter, s, m)
 
     @staticmethod
@@ -552,7 +819,10 @@ class ContactContour(RichDisplay):
         like ``sqrt(delta0 - Phi)`` or ``1/sqrt(delta0 - Phi)`` smooth at the edge.  F is only
         evaluated inside omega_0.  Otherwise Green's theorem ``iint F = oint G dx2`` with
         ``G(x1, x2) = int_{c1}^{x1} F(t, x2) dt``; then F must be smooth on the horizontal segments
-        from ``x1 = c1`` to the contour (e.g. a polynomial).
+        from ``x1 = c1`` to the contour (e.g. a polynomial).  An elongated contour (round frame
+        ``x = W w(sigma)``, see :func:`contact_contour`) uses the same formulas in its smooth
+        parameter sigma instead of ``s`` (``f'(s) ds = x'(sigma) dsigma``), with
+        ``(f - c) x x'(sigma) = det W (w - w_c) x w'(sigma)``; ``n_angular`` then counts sigma nodes.
         """
         if not callable(F):
             raise TypeError(f"F must be a vectorised function F(x1, x2), got {F!r}")
@@ -562,9 +832,11 @@ class ContactContour(RichDisplay):
         M = int(n_angular) if n_angular is not None else max(2 * N, 128)
         if M < 8:
             raise ValueError(f"n_angular must be >= 8, got {n_angular!r}")
-        s = self.perimeter * np.arange(M) / M
-        z = self._z(s)
-        dz = self._z(s, 1)
+        if self._framed is None:
+            s = self.perimeter * np.arange(M) / M
+            z, dz, step = self._z(s), self._z(s, 1), self.perimeter / M
+        else:
+            z, dz, step, wz, dwz = self._framed.samples(M)
         u, wu = np.polynomial.legendre.leggauss(int(n_radial))
         u = 0.5 * (u + 1.0)
         wu = 0.5 * wu
@@ -573,24 +845,30 @@ class ContactContour(RichDisplay):
             lam = 1.0 - (1.0 - u) ** 2
             dlam = 2.0 * (1.0 - u)
             r = z - c
-            jac = (np.conj(r) * dz).imag  # (f - c) x f'
+            if self._framed is None:
+                jac = (np.conj(r) * dz).imag  # (f - c) x f'
+            else:  # det W (w - w_c) x w': no cancellation between the long and the short axis
+                cw = complex(*self._framed.to_w(self._star_center))
+                jac = self._framed.det * (np.conj(wz - cw) * dwz).imag
             pts = c + lam[:, None] * r[None, :]
             vals = np.asarray(F(pts.real, pts.imag), dtype=float) * np.ones(pts.shape)
             inner = (vals * (lam * dlam * wu)[:, None]).sum(axis=0)
-            return float(np.sum(inner * jac) * self.perimeter / M)
+            return float(np.sum(inner * jac) * step)
         c1 = self.centroid[0]
         x1 = z.real
         pts_x = c1 + u[:, None] * (x1 - c1)[None, :]
         pts_y = np.broadcast_to(z.imag[None, :], pts_x.shape)
         vals = np.asarray(F(pts_x, pts_y), dtype=float) * np.ones(pts_x.shape)
         G = (x1 - c1) * (vals * wu[:, None]).sum(axis=0)
-        return float(np.sum(G * dz.imag) * self.perimeter / M)
+        return float(np.sum(G * dz.imag) * step)
 
     def boundary_integral(self, g: Callable, of: str = "x", n: int | None = None) -> float:
         """``oint_{Gamma_0} g ds`` by the trapezoidal rule in arc length (spectral for smooth g).
 
         ``of="x"``: ``g(x1, x2)`` a vectorised function of the point; ``of="s"``: ``g(s)``
-        (e.g. ``contour.b1``).
+        (e.g. ``contour.b1``).  An elongated contour (round frame, see :func:`contact_contour`):
+        ``oint g ds = oint g |x'(sigma)| dsigma`` by Gauss-Legendre on the panels that resolve the
+        speed ``|x'(sigma)|`` near the tips (``n``: at least that many nodes).
         """
         if not callable(g):
             raise TypeError(f"g must be a vectorised function, got {g!r}")
@@ -599,6 +877,15 @@ class ContactContour(RichDisplay):
         M = int(n) if n is not None else max(2 * len(self.nodes), 128)
         if M < 8:
             raise ValueError(f"n must be >= 8, got {n!r}")
+        if self._framed is not None:
+            sig, wts, sq = self._framed.arc.quadrature(M if n is not None else 0)
+            jac = self._framed.speed(sig) * wts
+            if of == "s":
+                vals = np.asarray(g(sq), dtype=float) * np.ones(len(sq))
+            else:
+                p = self._framed.x(sig)
+                vals = np.asarray(g(p.real, p.imag), dtype=float) * np.ones(len(sq))
+            return float(np.sum(vals * jac))
         s = self.perimeter * np.arange(M) / M
         if of == "s":
             vals = np.asarray(g(s), dtype=float) * np.ones(M)
@@ -642,7 +929,9 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     n : int | None
         Number of equally spaced arc-length nodes of the trigonometric interpolant (even,
         >= 16); then no accuracy is enforced (read ``.accuracy``).  Default: adaptive, doubling
-        until the Fourier tail is below ``tol`` and the self-checks pass to 1e-9.
+        until the Fourier tail is below ``tol`` and the self-checks pass to 1e-9.  For an elongated
+        contour (aspect ratio above 3) the interpolant is that of the round image ``w`` (module
+        docstring); ``.nodes`` still holds ``n`` points at equal arc length of Gamma_0.
     tol : float
         Target relative size of the Fourier tail (adaptive mode).
 
@@ -655,12 +944,12 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     ValueError
         delta0 <= 0; Phi not a polynomial in x1, x2 or with other free symbols; no contact
         (delta0 <= min Phi, the minimum is named); an unbounded region; several components
-        or a hole; a level set through a critical point of Phi (not smooth); a contour more
-        elongated than the supported aspect ratio 32 (longest/shortest principal axis of
-        omega_0) that the arc-length Fourier series cannot represent with at most 16384 nodes
-        (an ellipse needs about ``18 ratio^2``; see the module docstring).  Overall scale is
-        free: the region search runs in the natural frame of Phi at delta0, so e.g.
-        ``1e-70 (x1^2 + 4 x2^2)`` and ``1e30 (x1^2 + 4 x2^2)`` work alike.
+        or a hole; a level set through a critical point of Phi (not smooth); an aspect ratio
+        (longest/shortest principal axis of omega_0) above ``ASPECT_MAX = 1e100``, beyond the
+        double range.  Overall scale and elongation are free: the region search runs in the
+        natural frame of Phi at delta0 and an elongated contour is represented in its round frame
+        (module docstring), so ``1e-70 (x1^2 + 4 x2^2)``, ``1e30 (x1^2 + 4 x2^2)`` and
+        ``1e-30 x1^2 + 1e30 x2^2`` (aspect ratio 1e30) work alike.
 
     Examples
     --------
@@ -680,13 +969,19 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     if P.deg < 2 and P.deg >= 1:
         raise ValueError(f"the contact area {{delta0 - Phi > 0}} is unbounded: Phi = {expr} is linear "
                          "(a half-plane); the punch must rise in every direction")
-    poly, _, best, aspect = region(P, d0, expr)
-    if aspect > ASPECT_HARD:
+    poly, _, best, aspect, fr, curve_u = region(P, d0, expr)
+    if not aspect <= ASPECT_MAX:
         raise too_elongated(expr, d0, aspect)
-    # the spectral work in x = ell u, Phi = d0 Phi~ (ell the size of the region): arc length scales by ell
-    ell = float(np.max(np.abs(poly)))
-    Ps = transformed(P, Frame(ell * np.eye(2), ell, d0))
-    polys = poly / ell
+    if aspect <= ASPECT_DIRECT:
+        # the spectral work in x = ell u, Phi = d0 Phi~ (ell the size of the region): arc length scales by ell
+        ell = float(np.max(np.abs(poly)))
+        frame, polys, det = Frame(ell * np.eye(2), ell, d0), poly / ell, ell * ell
+    else:
+        # elongated: the spectral work in the round frame x = W w (step 0 of the module docstring)
+        frame, polys, det = round_frame(curve_u, fr)
+        kap = float(np.max(np.abs(polys)))
+        frame, polys, det = Frame(frame.A * kap, frame.ell * kap, d0), polys / kap, det * kap * kap
+    Ps = transformed(P, frame)
     res = _nodes_by_reference(Ps, 1.0, polys, n, tol)
     acc = _accuracy(Ps, 1.0, *res) if res is not None else None
     if acc is None or (n is None and not _acceptable(acc, 1e-9)):
@@ -696,13 +991,17 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
             if acc is None or acc_alt.speed_error < acc.speed_error:
                 res, acc = alt, acc_alt
     if acc is None or (not _acceptable(acc, 1e-6) if n is None else abs(acc.turning_number - 1) > 1e-3):
-        if aspect > ASPECT_MAX:
-            raise too_elongated(expr, d0, aspect)
         raise RuntimeError(
             f"the spectral contour of Phi = {expr} at delta0 = {short(d0)} is inaccurate ({acc}): the contour "
             f"has features too small for {_NMAX} arc-length nodes; try a larger n"
         )
-    Z, L = res[0] * ell, res[1] * ell
+    if aspect <= ASPECT_DIRECT:
+        return _direct_contour(expr, d0, P, res[0] * ell, res[1] * ell, best, acc)
+    return _framed_contour(expr, d0, P, Ps, frame.A, det, res[0], res[1], best, acc)
+
+
+def _direct_contour(expr, d0, P, Z, L, best, acc) -> ContactContour:
+    """Gamma_0 by its arc-length Fourier series in x (aspect ratio up to ``ASPECT_DIRECT``)."""
     N = len(Z)
     Zhat = np.fft.fft(Z)
     k, c = _sym_coeffs(Zhat)
@@ -725,6 +1024,38 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
         Phi=expr, delta0=d0, perimeter=float(L), area=area, centroid=(cx, cy),
         nodes=np.column_stack([x, y]), min_point=(best[1], best[2]), min_value=best[0],
         accuracy=acc, _k=k, _c=c, _poly=P, _star_center=star,
+    )
+
+
+def _framed_contour(expr, d0, P, Pw, W, det, Zw, Lw, best, acc) -> ContactContour:
+    """Gamma_0 as ``x = W w(sigma)`` (elongated): w by its arc-length Fourier series in the round frame.
+
+    Area and centroid by Green's theorem in w (spectral) and the map: ``|omega_0| = det W |w(omega_0)|``,
+    the centroid is ``W`` times the centroid in w; star-shapedness is affine invariant, so it is
+    tested in w.  The perimeter is :attr:`_ArcLength.length` (Jacobian ``|W w'|`` on panels).
+    """
+    N = len(Zw)
+    Zhat = np.fft.fft(Zw)
+    k, c = _trim(*_sym_coeffs(Zhat))
+    fc = _FramedCurve(W, det, k, c, Lw, Pw)
+    dZ = _uniform_eval(Zhat, Lw, deriv=1)
+    x, y, dx, dy = Zw.real, Zw.imag, dZ.real, dZ.imag
+    ds = Lw / N
+    area_w = 0.5 * float(np.sum(x * dy - y * dx)) * ds
+    cw = (0.5 * float(np.sum(x * x * dy)) * ds / area_w, -0.5 * float(np.sum(y * y * dx)) * ds / area_w)
+    cen = fc.apply(complex(*cw))
+    star = None
+    for cand_x, cand_w in (((cen.real, cen.imag), cw), ((best[1], best[2]), tuple(fc.to_w((best[1], best[2]))))):
+        cross = (np.conj(Zw - complex(*cand_w)) * dZ).imag
+        if P.value(*cand_x) < d0 and cross.min() > 1e-3 * cross.max():
+            star = (float(cand_x[0]), float(cand_x[1]))
+            break
+    L = fc.arc.length
+    nodes = fc.z(L * np.arange(N) / N)
+    return ContactContour(
+        Phi=expr, delta0=d0, perimeter=L, area=det * area_w, centroid=(float(cen.real), float(cen.imag)),
+        nodes=np.column_stack([nodes.real, nodes.imag]), min_point=(best[1], best[2]), min_value=best[0],
+        accuracy=acc, _k=k, _c=c, _poly=P, _star_center=star, _framed=fc,
     )
 
 
