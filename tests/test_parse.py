@@ -113,6 +113,8 @@ def test_no_sympify_eval_or_nsimplify_in_the_source():
     for path in sorted(SRC.rglob("*.py")):
         for k, line in enumerate(path.read_text().splitlines(), 1):
             code = line.split("#")[0]
+            if re.match(r"\s*def eval\(cls", code):  # sympy's Function.eval protocol, not an evaluator
+                continue
             if pattern.search(code) and not re.search(r"['\"].*\b(sympify|eval)\b.*['\"]", code):
                 bad.append(f"{path.relative_to(SRC)}:{k}: {line.strip()}")
     assert not bad, "\n".join(bad)

@@ -77,7 +77,7 @@ def test_contact_elastic_constants_and_model(tmp_path):
 
 def test_two_term_section_for_a_compressible_sphere():
     text = report_latex(load_derivation(ROOT / "derivations" / "sphere.toml"))
-    assert "two-term model (I.10)--(I.12)" in text and r"\tag{I.11}" in text
+    assert "the two-term model" in text and "(I.10)" in text and r"\tag{I.11}" in text
 
 
 def test_latex_numbers_keep_their_magnitude():

@@ -12,6 +12,9 @@
 using SpecialFunctions  # erf
 
 function boundary_layer_q(v, h, B)
-    value = ((h < v) ? (v .* erf(sqrt(B) .* sqrt(-h + v)) + sqrt(-h + v) .* exp(-B .* (-h + v)) ./ (sqrt(pi) * sqrt(B))) : (0.0))
+    t0 = sqrt(B)
+    t1 = -h + v
+    t2 = sqrt(((t1 >= 0) ? (t1) : (NaN)))
+    value = ((h < v) ? (v .* erf(t0 .* t2) + t2 .* exp(-B .* t1) ./ (sqrt(pi) * t0)) : (0.0))
     return value
 end

@@ -10,5 +10,8 @@ function value = boundary_layer_q(v, h, B)
   %   B: B
   % Outputs: value
   % Vectorised: element-wise operators; arguments of equal sizes (or scalars).
-  value = ((h < v).*(v.*erf(sqrt(B).*sqrt(-h + v)) + sqrt(-h + v).*exp(-B.*(-h + v))./(sqrt(pi)*sqrt(B))) + (~(h < v)).*(0));
+  t0 = sqrt(B);
+  t1 = -h + v;
+  t2 = sqrt(t1);
+  value = ((h < v).*(v.*erf(t0.*t2) + t2.*exp(-B.*t1)./(sqrt(pi)*t0)) + (~(h < v)).*(0));
 end

@@ -13,7 +13,8 @@ function [force, contact_area_leading, contact_area] = force_law(delta_0, H, mu,
   %   nu: nu
   % Outputs: force, contact_area_leading, contact_area
   % Vectorised: element-wise operators; arguments of equal sizes (or scalars).
-  force = -4*pi*H.*delta_0.*mu.*nu.*(4*nu - 1)./(3*(2*nu - 1).^2) + pi*R.*delta_0.^2.*mu.*(1 - nu)./(H.*(1/2 - nu));
+  t0 = pi*H;
+  force = -4*delta_0.*mu.*nu.*t0.*(4*nu - 1)./(3*(2*nu - 1).^2) + pi*R.*delta_0.^2.*mu.*(1 - nu)./(H.*(1/2 - nu));
   contact_area_leading = 2*pi*R.*delta_0;
-  contact_area = -2*sqrt(2)*pi*H.*sqrt(R).*sqrt(delta_0).*h_s + 2*pi*R.*delta_0;
+  contact_area = -2*sqrt(2)*sqrt(R).*sqrt(delta_0).*h_s.*t0 + 2*pi*R.*delta_0;
 end

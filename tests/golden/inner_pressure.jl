@@ -14,6 +14,8 @@
 # Scalar; broadcast over arrays with inner_pressure.(...).
 
 function inner_pressure(x_1, x_2, delta_0, H, mu, R_1, R_2)
-    p = H .* mu .* (-1 ./ R_2 - 1 ./ R_1) / 4 + (7 // 2) * mu .* (delta_0 - x_2 .^ 2 ./ (2 * R_2) - x_1 .^ 2 ./ (2 * R_1)) ./ H
+    t0 = 1 ./ R_1
+    t1 = 1 ./ R_2
+    p = H .* mu .* (-t0 - t1) / 4 + (7 // 2) * mu .* (delta_0 - t0 .* x_1 .^ 2 / 2 - t1 .* x_2 .^ 2 / 2) ./ H
     return p
 end

@@ -29,3 +29,63 @@ def test_plots_without_matplotlib_name_the_extra(small_study, tmp_path, monkeypa
     with pytest.raises(ImportError, match=r"thinlayer\[plot\]"):
         small_study.plots(tmp_path)
     assert not any(tmp_path.iterdir())
+
+
+# ---------------------------------------------------------------------------------------------
+# readable in print (issue 17, item 6)
+# ---------------------------------------------------------------------------------------------
+def _figures(study):
+    from thinlayer.validation import plots
+
+    colour = {nu: f"C{k}" for k, nu in enumerate(sorted({r.nu for r in study.rows}))}
+    import matplotlib
+
+    cmap = matplotlib.colormaps["viridis"]
+    return {"errors": plots._errors_figure(study, colour),
+            "pressure": plots._pressure_figure(study, ["sphere"], cmap),
+            "contours": plots._contours_figure(study, ["sphere"]),
+            "edge_shift": plots._edge_shift_figure(study, colour)}
+
+
+def test_slope_lines_are_labelled_with_the_slope_drawn(small_study):
+    pytest.importorskip("matplotlib", reason="matplotlib (the optional 'plot' extra) is not installed")
+    import numpy as np
+
+    fig = _figures(small_study)["errors"]
+    seen = []
+    for ax in fig.axes:
+        lines = [ln for ln in ax.get_lines() if str(ln.get_gid()).startswith("slope")]
+        labels = [t.get_text() for t in ax.texts if t.get_gid() == "slope label"]
+        assert len(lines) == 1 and len(labels) == 1, (ax.get_title(), labels)
+        x, y = (np.asarray(v, float) for v in lines[0].get_data())
+        drawn = np.diff(np.log(y)) / np.diff(np.log(x))  # measured from the line itself
+        assert np.allclose(drawn, drawn[0])
+        assert labels[0].split()[:2] == ["slope", f"{round(drawn[0]):d}"], (labels[0], drawn[0])
+        assert abs(drawn[0] - round(drawn[0])) < 1e-9
+        seen.append(round(drawn[0]))
+    assert len(set(seen)) > 1  # the panels really differ (3, 2, 1): one legend for all would mislead
+
+
+def test_figures_are_readable_in_print_and_say_what_they_show(small_study):
+    pytest.importorskip("matplotlib", reason="matplotlib (the optional 'plot' extra) is not installed")
+    from matplotlib.text import Text
+
+    for name, fig in _figures(small_study).items():
+        w, _ = fig.get_size_inches()
+        assert w <= 7.0, f"{name}: {w} in wide; scaled to a 6.7 in text width its fonts shrink"
+        sizes = [t.get_fontsize() for t in fig.findobj(Text) if t.get_text().strip()]
+        assert sizes and min(sizes) >= 7.5, f"{name}: text of {min(sizes)} pt"
+        title = fig._suptitle.get_text() if fig._suptitle is not None else ""
+        assert title or all(ax.get_title() for ax in fig.axes), f"{name}: no title says what it shows"
+        legends = fig.legends + [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]
+        assert legends, f"{name}: no legend"
+        for leg in legends:
+            for h, t in zip(leg.legend_handles, leg.get_texts()):
+                visible_line = h.get_linestyle() not in ("None", "none", "", " ") and h.get_linewidth() > 0
+                visible_marker = getattr(h, "get_marker", lambda: "None")() not in ("None", "none", "", " ", None)
+                assert visible_line or visible_marker, f"{name}: legend entry {t.get_text()!r} shows nothing"
+        fig.canvas.draw()  # overlapping texts: titles of neighbouring panels must not collide
+        boxes = [ax.title.get_window_extent() for ax in fig.axes if ax.get_title()]
+        for i, a in enumerate(boxes):
+            for b in boxes[i + 1:]:
+                assert not a.overlaps(b), f"{name}: panel titles overlap"

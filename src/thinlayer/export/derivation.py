@@ -11,20 +11,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import sympy as sp
-
 try:  # Python >= 3.11
     import tomllib
 except ModuleNotFoundError:  # pragma: no cover
     import tomli as tomllib
 
-from ..asymptotics.inner import inner_pressure
-from ..asymptotics.moment_expansion import moment_expansion
-from ..layers.coefficients import kernel_coefficients
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
-from ..layers.moments import kernel_moment
 from ..punch import Punch
-from .report import SEPARATOR, ReportTextError, check_symbol_names, check_title
+from .report import ReportTextError, check_symbol_names, check_title
 
 
 class DerivationFileError(ValueError):
@@ -44,6 +38,7 @@ class Derivation:
     edge_shift_nus: tuple
     contact: dict | None = None
     validation: dict | None = None
+    units: dict | None = None
 
 
 #: the schema: table -> {key: (python types, what is valid)}; any other key is an error
@@ -65,6 +60,8 @@ SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
                 "parameters": ((dict,), "a table of numbers, e.g. {R_1 = 4, R_2 = 1}")},
     "validation": {"nu": ((list,), "a list of Poisson ratios"), "H_over_a": ((list,), "a list of H/a values"),
                    "shapes": ((list,), "a list of shape names")},
+    "units": {"length": ((str,), "a unit such as 'mm'"), "stress": ((str,), "a unit such as 'MPa' (of mu and E)"),
+              "force": ((str,), "a unit such as 'N'")},
 }
 _TOP_KEYS = set(SCHEMA)
 _REQUIRED = ("derivation", "layer", "punch")
@@ -133,6 +130,38 @@ def _validation_table(vt: Any) -> dict | None:
             out[key] = check(vt.get(key, default))
         except (TypeError, ValueError, ArithmeticError) as exc:
             raise DerivationFileError(f"[validation] {key} = {_short(vt.get(key))}: {exc}") from exc
+    return out
+
+
+#: a unit: letters with optional integer powers, joined by spaces, '*', '.' or '/' ("mm", "N/mm^2", "kg m/s^2")
+_UNIT = re.compile(r"[A-Za-z]{1,8}(\^-?[0-9])?([ *./][A-Za-z]{1,8}(\^-?[0-9])?){0,3}")
+
+
+def unit_latex(text: str) -> str:
+    r"""A unit of ``[units]`` (letters and digits only, :data:`_UNIT`) as math: ``\mathrm{N}/\mathrm{mm}^{2}``.
+
+    >>> unit_latex("N/mm^2"), unit_latex("kg m")
+    ('\\mathrm{N}/\\mathrm{mm}^{2}', '\\mathrm{kg}\\,\\mathrm{m}')
+    """
+    out = []
+    for m in re.finditer(r"([A-Za-z]+)(?:\^(-?[0-9]))?|([ *./])", text):
+        if m.group(1):
+            out.append(rf"\mathrm{{{m.group(1)}}}" + (f"^{{{m.group(2)}}}" if m.group(2) else ""))
+        else:
+            out.append("/" if m.group(3) == "/" else r"\,")
+    return "".join(out)
+
+
+def _units_table(ut: Any) -> dict | None:
+    """Validate ``[units]``: the units of lengths, of the moduli and of forces, for the report's numbers."""
+    if ut is None:
+        return None
+    out = {}
+    for key, val in ut.items():
+        if not _UNIT.fullmatch(val):
+            raise DerivationFileError(f"[units] {key} = {_short(val)}: a unit is letters with optional integer "
+                                      "powers joined by spaces, '*', '.' or '/', e.g. 'mm', 'MPa', 'N/mm^2'")
+        out[key] = unit_latex(val)
     return out
 
 
@@ -286,13 +315,79 @@ def _read_tables(path: Path) -> dict:
     return data
 
 
+#: a catalogue name: the stem of a file of the catalogue, e.g. ``sphere``
+_CATALOGUE_NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_-]{0,99}")
+
+
+def catalogue_folder() -> Path | None:
+    """The folder of the derivation catalogue: ``thinlayer/derivations`` in an installed wheel, else the
+    repository's top-level ``derivations/`` (a source checkout or an editable install); None if neither exists.
+    """
+    here = Path(__file__).resolve()
+    packaged = here.parents[1] / "derivations"
+    if packaged.is_dir():
+        return packaged
+    if here.parents[2].name == "src":  # src/thinlayer/export/derivation.py in a checkout
+        source = here.parents[3] / "derivations"
+        if source.is_dir():
+            return source
+    return None
+
+
+def catalogue() -> dict[str, Path]:
+    """The catalogue's derivation files by name (the file stem): ``{"sphere": .../sphere.toml, ...}``."""
+    folder = catalogue_folder()
+    return {} if folder is None else {f.stem: f for f in sorted(folder.glob("*.toml"))}
+
+
+def resolve_derivation(name_or_path: str | Path) -> Path:
+    """The derivation file a command line names: an existing file, else a catalogue entry.
+
+    ``sphere`` (a catalogue name), ``sphere.toml`` and ``derivations/sphere.toml`` (the examples of
+    ``thinlayer report --help``) all name the catalogue's ``sphere.toml`` when no such file exists in
+    the current folder; an existing file always wins.
+
+    Parameters
+    ----------
+    name_or_path : str or Path
+        A path to a TOML file or the name of a catalogue entry.
+
+    Returns
+    -------
+    Path
+        The file to load with :func:`load_derivation`.
+
+    Raises
+    ------
+    DerivationFileError
+        neither a file nor a catalogue name; the message lists the catalogue.
+
+    Examples
+    --------
+    >>> resolve_derivation("sphere").name
+    'sphere.toml'
+    """
+    path = Path(name_or_path)
+    if path.exists():
+        return path
+    cat = catalogue()
+    stem = path.stem if path.suffix == ".toml" else path.name
+    bare = path.parent in (Path(""), Path(".")) or path.parent.name == "derivations"
+    if bare and _CATALOGUE_NAME.fullmatch(stem) and stem in cat and path.suffix in ("", ".toml"):
+        return cat[stem]
+    names = ", ".join(cat) or "none installed"
+    raise DerivationFileError(f"{name_or_path}: does not exist, and it is no name of the derivation catalogue "
+                              f"({names})")
+
+
 def load_derivation(path: str | Path) -> Derivation:
     """Read and validate a derivation file.
 
     Parameters
     ----------
     path : str or Path
-        A TOML file with the tables ``[derivation]``, ``[layer]``, ``[punch]`` and optionally
+        A catalogue name such as ``sphere`` (:func:`resolve_derivation`) or a TOML file with the tables
+        ``[derivation]``, ``[layer]``, ``[punch]`` and optionally
         ``[coefficients]``, ``[inner]``, ``[edge_shift]``, ``[contact]``, ``[validation]``;
         the keys of each are those of :data:`SCHEMA`.
 
@@ -307,7 +402,7 @@ def load_derivation(path: str | Path) -> Derivation:
         one line starting with the file's name, naming the table, the key and what is valid
         (unknown keys, wrong types, values out of range, contradictions between tables).
     """
-    path = Path(path)
+    path = resolve_derivation(path) if not Path(path).is_dir() else Path(path)
     try:
         return _load(path)
     except DerivationFileError as exc:
@@ -340,7 +435,8 @@ def _load(path: Path) -> Derivation:
     layer_nu = data["layer"].get("nu")
     contact = _contact_table(data.get("contact"), layer, punch, None if layer_nu == "symbolic" else layer_nu)
     validation = _validation_table(data.get("validation"))
-    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation)
+    units = _units_table(data.get("units"))
+    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation, units)
 
 
 def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: bool = False) -> str:
@@ -365,203 +461,14 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: b
         expansion (2.24)-(2.31), (4.1), boundary layer (3.15)-(3.25), force law (1.8), edge shift,
         contact solution, validation and errata.
     """
-    from .report import Document, errata_section
+    from .report import derivation_document
 
     check_symbol_names((q.name for q in der.punch.expr.free_symbols), "punch")
-    doc = Document(der.title)
-    _kernel_sections(doc, der)
-    _inner_sections(doc, der)
-    _boundary_layer_sections(doc, der.layer, der.punch)
-    _two_term_section(doc, der)
-    if der.edge_shift_nus:
-        _edge_shift_section(doc, der.edge_shift_nus)
-    if der.contact is not None:
-        _contact_section(doc, der)
-    if der.validation is not None:
-        _validation_section(doc, der.validation, figure_dir, force)
-    errata_section(doc)
-    return doc.latex()
+    return derivation_document(der, figure_dir, force)
 
 
-def _kernel_sections(doc: Any, der: Derivation) -> None:
-    """Kernel (2.3), coefficients (2.20), (4.2) (tabulated when numeric), moments (2.21) and (2.22)."""
-    layer = der.layer
-    doc.section("Layer kernel (2.3), (2.4)").math(rf"\mathcal{{L}}(u) = {sp.latex(layer.L())} \tag{{2.3}}")
-    if layer.base == "bonded" and not layer.has_compressible_expansion:
-        _incompressible_sections(doc, der)
-        return
-    co = kernel_coefficients(layer, der.coefficient_order)
-    doc.section("Coefficients (2.20), (4.2)").math(co.latex())
-    if not layer.symbolic_coefficients and layer.parameter is None:  # numbers: tabulate them
-        rows = [[str(n), f"{float(co.m[n]):.12g}", f"{float(co.M[n]):.12g}"]
-                for n in range(1, der.coefficient_order + 1)]
-        doc.table("rrr", ["$n$", "$m_n$ (2.20)", "$M_n$ (4.2)"], rows)
-    doc.section("Kernel moments (2.21) and the moment expansion (2.22)")
-    mom = []
-    for n in range(min(3, der.coefficient_order) + 1):
-        for k in range(n + 1):
-            val = sp.factor(kernel_moment(layer, 2 * k, 2 * n - 2 * k))
-            mom.append(rf"\mu_{{{2 * k},{2 * n - 2 * k}}} = {sp.latex(val)} \tag{{2.21}}")
-    doc.math(SEPARATOR.join(mom)).math(moment_expansion(layer, min(2, der.coefficient_order)).latex())
 
-
-def _incompressible_sections(doc: Any, der: Derivation) -> None:
-    """At nu = 1/2: the data (I.1), the thin-layer operator (I.2), the obstacle problem (I.3)-(I.5) and its solution.
-
-    Closed forms for the sphere (I.11), the elliptic paraboloid (I.6)-(I.8) and any axisymmetric punch (I.9); the
-    edge correction (I.12).
-    """
-    from ..asymptotics.incompressible import (
-        incompressible_axisymmetric,
-        incompressible_ellipse,
-        obstacle_problem,
-        thin_layer_operator,
-        two_term_edge_shift,
-        two_term_sphere,
-    )
-    from ..layers.coefficients import incompressible_coefficients
-
-    layer, punch = der.layer, der.punch
-    doc.section("Incompressible layer: Maclaurin data (I.1) and thin-layer operator (I.2)").text(
-        "At $\\nu = 1/2$ the coefficient $\\mathcal{A}$ of (2.4) vanishes: the compressible expansion (2.20)--(3.25) "
-        "does not exist, and the leading operator is of second order.")
-    doc.math(incompressible_coefficients(der.coefficient_order).latex()).math(thin_layer_operator(layer).latex())
-    doc.section("Punch and the obstacle problem (I.3)--(I.5)").math(punch.latex())
-    doc.math(obstacle_problem(layer, punch).latex())
-    kind = punch.name
-    if kind.startswith("paraboloid"):
-        doc.section("Solution for the sphere (I.11)").math(two_term_sphere(layer).latex())
-    elif kind == "elliptic paraboloid":
-        doc.section("Solution for the elliptic paraboloid (I.6)--(I.8)").math(incompressible_ellipse().latex())
-    elif _axisymmetric(punch):
-        doc.section("Solution for an axisymmetric punch (I.9)").math(incompressible_axisymmetric(punch).latex())
-    h = float(two_term_edge_shift(layer, dps=15))
-    doc.section("Edge correction (I.12)").text(
-        f"The model's edge lies $h H$ outside the true contact edge, $h = {h:.10f}$ at $\\nu = 1/2$ "
-        "(the edge layer of width $H$ that the model neglects); thinlayer.solve reports the corrected radius "
-        "$c - hH$ and estimates the model's force error by $2hH/c$.")
-
-
-def _axisymmetric(punch: Punch) -> bool:
-    from .. import symbols as S
-
-    e = punch.expr
-    return sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0
-
-
-def _two_term_section(doc: Any, der: Derivation) -> None:
-    """The two-term model of the sphere (I.10)-(I.12), for a bonded layer with symbolic nu or 1/4 < nu < 1/2."""
-    from ..asymptotics.incompressible import two_term_sphere
-
-    layer = der.layer
-    nu = layer.numeric_nu
-    if not (der.punch.name.startswith("paraboloid") and layer.base == "bonded" and layer.has_compressible_expansion
-            and (nu is None or 0.25 < nu < 0.5)):
-        return
-    doc.section("Nearly incompressible layer: the two-term model (I.10)--(I.12)").text(
-        "Near $\\nu = 1/2$ the compressible expansion needs $\\lambda^2 = (a/H)^2/m_1 \\gg 1$ (I.13); the two-term "
-        "model (I.10), $-\\Delta p + k^2 p = f$ with $f = \\vartheta (\\delta_0 - \\Phi)/(c_1 H^3)$ and "
-        "$k^2 = 1/(m_1 H^2)$, holds in both regimes. For the sphere, in terms of the contact radius $c$:")
-    doc.math(two_term_sphere(layer).latex())
-
-
-def _inner_sections(doc: Any, der: Derivation) -> None:
-    """The punch, the inner expansion (2.24)-(2.31), (4.1) and, for an ellipse, the contact area (3.1)."""
-    layer, punch = der.layer, der.punch
-    if layer.base == "bonded" and not layer.has_compressible_expansion:
-        return  # nu = 1/2: the obstacle problem (I.3) replaces the inner expansion
-    doc.section("Punch and inner expansion (2.24)--(2.31), (4.1)").math(punch.latex())
-    doc.math(inner_pressure(layer, punch, der.inner_order).latex())
-    if punch.name == "elliptic paraboloid":
-        from ..asymptotics.contour import ellipse_contour
-
-        doc.section("Leading contact area (3.1)").math(ellipse_contour().latex())
-
-
-def _boundary_layer_sections(doc: Any, layer: LayerKernel, punch: Punch) -> None:
-    """Boundary layer (3.15)-(3.25) and force law (1.8): frictionless base or compressible bonded layer."""
-    from ..asymptotics.force_law import force_law
-
-    if layer.base == "frictionless":
-        from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
-
-        doc.section("Boundary layer and edge shift (frictionless base)").text(
-            "The kernel does not depend on $\\nu$; $m_1 = 0$, so Alexandrov's (3.20)--(3.21) give "
-            "$B = 1/(2\\mathcal{A})$, $C = B/\\mathcal{A}$, and the force has no correction of relative order "
-            "$(H/a)^2$: the first correction is of order $(H/a)^3$ (second-order boundary layer, not derived "
-            "here; measured by the direct solver).")
-        doc.table("rr", ["$h^*$ exact (Wiener--Hopf)", "$h^*$ (3.25)"],
-                  [[f"{float(edge_shift_exact(layer)):.10f}", f"{float(edge_shift_alexandrov(layer)):.10f}"]])
-        doc.section("Force and contact area").math(force_law(layer, punch).latex())
-    if _compressible_bonded(layer):
-        from .report import alexandrov_generic_latex
-
-        doc.section("Boundary layer (3.15)--(3.25)").text(
-            "Alexandrov's approximation (3.19) with $B$, $C$ fitted to $\\mathcal{A}$ (3.20) and $m_1$ (3.21); "
-            "the solution in terms of $\\mathcal{A}$, $B$, $C$ (values per $\\nu$ in the edge-shift table):")
-        doc.math(alexandrov_generic_latex())
-        doc.section("Force and contact area with their first corrections in $H$").text(
-            "Inner terms $p_0 + p_1$ plus the boundary layer's force defect; $a$ is the contact half-width.")
-        doc.math(force_law(layer, punch).latex())
-
-
-def _edge_shift_section(doc: Any, nus: tuple) -> None:
-    """B, C (3.20)-(3.21) and the edge shift h*: exact (Wiener-Hopf) and Alexandrov's (3.25), per nu."""
-    from ..asymptotics.boundary_layer import alexandrov_parameters
-    from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
-
-    rows = []
-    for v in nus:
-        B, C = alexandrov_parameters(BondedLayer(v)).numeric()
-        rows.append([f"{v:g}", f"{float(B):.8f}", f"{float(C):.8f}", f"{float(edge_shift_exact(v)):.10f}",
-                     f"{float(edge_shift_alexandrov(v)):.10f}"])
-    doc.section("Edge shift of the contact area").text(
-        "The contour of the contact area lies at the distance $h^* H$ inside $\\Gamma_0$: exact "
-        "Wiener--Hopf value and Alexandrov's approximation (3.25).")
-    doc.table("rrrrr", ["$\\nu$", "$B$", "$C$", "$h^*$ exact", "$h^*$ (3.25)"], rows)
-
-
-def _contact_section(doc: Any, der: Derivation) -> None:
-    """The contact solution for the numeric parameters of ``[contact]`` (:func:`thinlayer.solve`)."""
-    from ..contact.solve import solve
-
-    c = der.contact
-    ans = solve(c.get("layer", der.layer), der.punch, delta0=c.get("delta0"), force=c.get("force"), H=c["H"],
-                mu=c.get("mu"), E=c.get("E"), parameters=c["parameters"], nu=c.get("nu"),
-                model=c.get("model", "auto"), tol=c.get("tol", 0.05))
-    doc.section("Contact solution for numeric parameters").text(
-        f"Model: {ans.model} (thinlayer.solve chooses the first model whose error estimates are within the "
-        f"tolerance {100 * ans.tol:g}\\,\\%; otherwise the direct numerical solver). The estimates are relative.")
-    doc.math(ans.detail.latex() if ans.model == "compressible" else ans.latex())
-
-
-def _validation_section(doc: Any, v: dict, figure_dir: str | Path | None, force: bool = False) -> None:
-    """The validation table against the direct numerics (and its plots with ``figure_dir``)."""
-    from ..validation import validation_study
-
-    study = validation_study(v["nu"], v["H_over_a"], v["shapes"], progress=False)
-    doc.section("Validation against the direct numerical solution").text(
-        "Asymptotic results (thinlayer.solve) against the direct numerical solution of the full "
-        "contact problem (thinlayer.numerics); relative errors, observed orders and the edge "
-        "shift from the numerical contact radius. Plots: run thinlayer validate with the option plots.")
-    doc.text("{\\footnotesize\n" + study.latex() + "\n}")
-    if figure_dir is not None:
-        figs = _validation_figures(study, Path(figure_dir), force)
-        for fig in figs:
-            doc.text(rf"\begin{{center}}\includegraphics[width=0.8\linewidth]{{{Path(figure_dir).name}/{fig}}}"
-                     r"\end{center}")
-
-
-def _validation_figures(study, folder: Path, force: bool = False) -> list[str]:
-    """The study's plots as PDF files in ``folder``; [] (tables only) when matplotlib is missing."""
-    try:
-        paths = study.plots(folder, formats=("pdf",), force=force)
-    except ImportError:
-        return []
-    return [p.name for p in paths if p.suffix == ".pdf"]
-
-
-def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force: bool = False,
+def write_report(der: Derivation, out_dir: str | Path, pdf: bool | None = False, force: bool = False,
                  temp_root: str | Path | None = None) -> Path:
     """Write ``<out_dir>/<name>.tex`` (and the PDF and its log with ``pdf=True``) without losing any file.
 
@@ -578,8 +485,10 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force:
         The derivation to report.
     out_dir : str or Path
         The output folder (created if missing).
-    pdf : bool
-        Whether to compile the PDF too (needs pdflatex).
+    pdf : bool or None
+        Whether to compile the PDF too (needs pdflatex); ``None``: when pdflatex is installed (else the .tex
+        only: :func:`thinlayer.export.report.pdf_hint` says how to get the PDF).  With ``True`` and no
+        pdflatex the .tex is written and then ``NoLatexEngineError`` (an ``OSError``) is raised.
     force : bool
         Whether to overwrite existing files.
     temp_root : str or Path, optional
@@ -591,8 +500,10 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force:
         The .tex file.
     """
     from ..validation.output import output_lock, refuse_existing
-    from .report import check_writable, compile_pdf, latex_engine, pdf_outputs, write_tex
+    from .report import check_writable, compile_pdf, latex_available, latex_engine, pdf_outputs, write_tex
 
+    missing_engine = bool(pdf) and not latex_available()
+    pdf = latex_available() if pdf is None else bool(pdf) and not missing_engine
     out = Path(out_dir)
     tex = out / f"{der.name}.tex"
     figures = out / f"{der.name}-figures" if der.validation is not None else None
@@ -609,12 +520,12 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool = False, force:
     if out.exists() and not out.is_dir():
         raise NotADirectoryError(f"--out {out} is a file, not a folder")
     check()
-    if pdf:
-        latex_engine()  # fail before writing anything when no engine is installed
     with output_lock(out, der.name):
         check()  # again, now that no concurrent run can write these files
         text = report_latex(der, figures, force=force)
         write_tex(text, tex, force)
         if pdf:
             compile_pdf(tex, temp_root)
+    if missing_engine:
+        latex_engine()  # NoLatexEngineError, after the .tex is written
     return tex

@@ -37,9 +37,15 @@ language    files                  function
 
 All functions take ``double``/``f64`` arguments in the order of :attr:`GeneratedCode.arguments`;
 outputs come in the order of :attr:`GeneratedCode.outputs`.  Every file starts with a comment
-that lists both, with the sympy symbol behind each argument.  Code is generated without common
-subexpression elimination (sympy's Julia, Octave and Rust generators do not support it); the
-expressions of thinlayer are short enough.
+that lists both, with the sympy symbol behind each argument.
+
+Common subexpressions (``sympy.cse``) are computed once, as locals ``t0, t1, ...`` at the top of the
+function body in every language (sympy's own ``cse`` option covers C only).  Floats are printed
+without rounding noise: each is the shortest decimal within four units in the last place of its
+double (``3.4999999999999996`` is ``3.5``); exact numbers stay exact (``1.0/4.0`` in C).  An even
+root whose argument may be negative (the boundary layer's ``sqrt(v - h)`` outside the contact) is
+taken of ``NaN`` there in the numpy module and in Julia, which evaluate it before the branch is
+chosen: numpy would warn "invalid value in sqrt", Julia would throw; the results are unchanged.
 
 What can be generated
 ---------------------

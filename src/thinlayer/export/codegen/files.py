@@ -22,6 +22,9 @@ from .printers import (
     OctaveGen,
     RustGen,
     RustPrinter,
+    clean_numbers,
+    common_subexpressions,
+    guard_roots,
     real_branches,
 )
 from .spec import Spec
@@ -143,9 +146,15 @@ def compiled_files(language: str, fname: str, syms: Sequence[sp.Symbol], out_ids
     """
     if language in ("fortran", "rust", "julia"):
         exprs = [real_branches(e) for e in exprs]
+    exprs = [clean_numbers(e) for e in exprs]
+    if language == "julia":  # Julia's sqrt throws on a negative number; its ?: is evaluated after the locals
+        exprs = [guard_roots(e) for e in exprs]
     gen = _code_generator(language, any(e.has(sp.erf) for e in exprs))
     gen.header_lines = tuple(header)
     _unsupported(gen.printer, exprs, language)
+    taken = [s.name for s in syms] + list(out_ids) + [fname, f"{fname}_result", VECTOR_OUT]
+    local_vars, exprs = common_subexpressions(exprs, taken, case_insensitive=language == "fortran")
+    gen.locals = tuple(local_vars)
 
     seq = list(syms)
     if language in ("c", "fortran"):
@@ -157,7 +166,7 @@ def compiled_files(language: str, fname: str, syms: Sequence[sp.Symbol], out_ids
             body = exprs[0]
     else:  # named results: Rust, Julia and Octave return them (a tuple when there are several)
         body = [sp.Eq(sp.Symbol(o, real=True), e, evaluate=False) for o, e in zip(out_ids, exprs)]
-    routine = gen.routine(fname, body, seq, None)
+    routine = gen.routine(fname, body, seq, [s for s, _ in local_vars])
     if language == "fortran" and several:
         for a in routine.arguments:  # the output column (1:n, 1:1) becomes a rank-1 array (1:n)
             if isinstance(a, OutputArgument):
@@ -193,18 +202,21 @@ def python_module(fname: str, syms: Sequence[sp.Symbol], arg_ids: Sequence[str],
         ``{"<fname>.py": source text}``.
     """
     printer = NumPyModulePrinter({"fully_qualified_modules": True})
+    constant = [not e.free_symbols for e in exprs]
+    exprs = [guard_roots(clean_numbers(e)) for e in exprs]  # numpy evaluates every branch of a Piecewise
     _unsupported(printer, exprs, "python")
-    body = []
-    for o, e in zip(out_ids, exprs):
+    local_vars, exprs = common_subexpressions(exprs, [*arg_ids, *out_ids, fname])
+    body = [f"    {s.name} = {printer.doprint(v)}" for s, v in local_vars]
+    for o, e, const in zip(out_ids, exprs, constant):
         code = printer.doprint(e)
-        if not e.free_symbols and arg_ids:  # a constant still broadcasts like the arguments
+        if const and arg_ids:  # a constant still broadcasts like the arguments
             code = f"{code} + numpy.zeros(numpy.broadcast({', '.join(arg_ids)}).shape)"
         body.append(f"    {o} = {code}")
     modules = set(printer.module_imports) - {"numpy"}
     if modules:
         raise NotImplementedError(f"the numpy printer needs module(s) {sorted(modules)}; the standalone "
                                   f"module may import numpy and math only")
-    uses_erf = any(e.has(sp.erf) for e in exprs)
+    uses_erf = any(e.has(sp.erf) for e in [*exprs, *(v for _, v in local_vars)])
     # a raw docstring: a symbol name like \xi in it is no escape sequence
     doc = ['r"""' + header[0], *[ln.replace('"""', "'''") for ln in header[1:]], '"""']
     lines = [ln.rstrip() for ln in doc]

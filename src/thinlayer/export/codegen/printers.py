@@ -2,9 +2,15 @@
 
 See :mod:`thinlayer.export.codegen`, *Printer fixes*: strict C99 constants, standard Fortran types and
 rank-1 output arrays, a Rust printer independent of sympy's version-specific number handling (and an
-``erf`` helper, which Rust's std lacks), Julia's Euler number, and the numpy module's ``erf``.
+``erf`` helper, which Rust's std lacks), Julia's Euler number, and the numpy module's ``erf``.  Also the
+preparation of the outputs: floats without rounding noise (:func:`clean_numbers`), even roots that are
+safe outside their branch (:func:`guard_roots`) and common subexpressions as locals
+(:func:`common_subexpressions`, written by every generator through :class:`_Locals`).
 """
 from __future__ import annotations
+
+import math
+from collections.abc import Sequence
 
 import sympy as sp
 from sympy.printing.fortran import FCodePrinter
@@ -12,6 +18,101 @@ from sympy.printing.julia import JuliaCodePrinter
 from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.rust import RustCodePrinter
 from sympy.utilities.codegen import C99CodeGen, FCodeGen, JuliaCodeGen, OctaveCodeGen, RustCodeGen
+
+
+def clean_float(x: float, ulps: int = 4) -> sp.Float:
+    """The shortest decimal within ``ulps`` units in the last place of ``x``, as a sympy Float.
+
+    Rounding noise of a floating-point computation (``3.4999999999999996``, a 30-digit Float made from a
+    double) is printed as the number it stands for (``3.5``); a number that needs all 17 digits keeps them.
+
+    >>> clean_float(3.4999999999999996), clean_float(0.14519285684593675), clean_float(1 / 3)
+    (3.50000000000000, 0.1451928568459367, 0.3333333333333333)
+    """
+    x = float(x)
+    if x == 0 or not math.isfinite(x):
+        return sp.Float(x)
+    tol = ulps * math.ulp(x)
+    for digits in range(1, 18):
+        text = f"{x:.{digits}g}"
+        if abs(float(text) - x) <= tol:
+            return sp.Float(text, max(digits, 15))
+    return sp.Float(repr(x), 17)
+
+
+def clean_numbers(expr: sp.Expr) -> sp.Expr:
+    """Every Float of ``expr`` by :func:`clean_float`; exact numbers (Rational, pi, sqrt(2)) stay exact."""
+    floats = {f: clean_float(f) for f in expr.atoms(sp.Float)}
+    return expr.xreplace(floats) if floats else expr
+
+
+class NanIfNegative(sp.Function):
+    """``x`` where ``x >= 0``, NaN elsewhere: the argument of an even root in branch-safe code.
+
+    The real square root of a negative number is NaN in C, Fortran and Rust, but numpy warns ("invalid
+    value encountered in sqrt") and Julia throws a DomainError.  numpy evaluates every branch of a
+    ``Piecewise`` (``numpy.select``) and common subexpressions are computed before any branch is chosen,
+    so the root of the boundary layer's ``v - h`` (3.24) is taken outside the contact too.  ``sqrt(NaN)``
+    is NaN without a warning in both, the value is the same (NaN) and the chosen branch never sees it.
+    """
+
+    nargs = 1
+
+    @classmethod
+    def eval(cls, x):
+        if x.is_nonnegative:
+            return x
+        return None
+
+
+def guard_roots(expr: sp.Expr) -> sp.Expr:
+    """Every even root ``b**(p/2)`` whose base may be negative as ``NanIfNegative(b)**(p/2)``."""
+    def even_root(e):
+        return (isinstance(e, sp.Pow) and e.exp.is_Rational and not e.exp.is_Integer and e.exp.q % 2 == 0
+                and not e.base.is_nonnegative and not e.base.is_number)
+
+    return expr.replace(even_root, lambda e: sp.Pow(NanIfNegative(e.base), e.exp))
+
+
+def common_subexpressions(exprs: Sequence[sp.Expr], taken: Sequence[str], case_insensitive: bool = False
+                          ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[sp.Expr]]:
+    """The outputs with their common subexpressions as locals (``sympy.cse``): ``(locals, outputs)``.
+
+    The locals are real numbers named ``t0, t1, ...`` (another prefix when an argument, output or
+    function is named like that); a boolean subexpression (a comparison of a ``Piecewise``) is put
+    back in place, since the typed languages cannot store it in a ``double``.
+
+    Parameters
+    ----------
+    exprs : sequence of sympy.Expr
+        The outputs, in terms of the argument symbols.
+    taken : sequence of str
+        The identifiers the function already uses.
+    case_insensitive : bool
+        Whether the language ignores case (Fortran).
+
+    Returns
+    -------
+    tuple
+        The locals in evaluation order and the outputs in terms of arguments and locals.
+    """
+    def key(name: str) -> str:
+        return name.lower() if case_insensitive else name
+
+    used = {key(n) for n in taken}
+    prefix = next(p for p in ("t", "tmp", "cse", "cse_tmp", "thinlayer_cse")
+                  if not any(u.startswith(key(p)) and u[len(p):].isdigit() for u in used))
+    names = sp.numbered_symbols(prefix, real=True)
+    pairs, reduced = sp.cse(list(exprs), symbols=names, optimizations=None)
+    kept: list[tuple[sp.Symbol, sp.Expr]] = []
+    inline: dict = {}
+    for sym, val in pairs:
+        val = val.xreplace(inline)
+        if isinstance(val, sp.logic.boolalg.Boolean) and not isinstance(val, sp.Expr):
+            inline[sym] = val
+        else:
+            kept.append((sym, val))
+    return kept, [e.xreplace(inline) for e in reduced]
 
 
 def real_branches(expr: sp.Expr) -> sp.Expr:
@@ -115,6 +216,10 @@ class JuliaPrinter(JuliaCodePrinter):
     def _print_Exp1(self, expr):
         return "Base.MathConstants.e"
 
+    def _print_NanIfNegative(self, expr):
+        x = self._print(expr.args[0])
+        return f"(({x} >= 0) ? ({x}) : (NaN))"
+
 
 class NumPyModulePrinter(NumPyPrinter):
     """numpy printer for the standalone module: ``erf`` is the module's ``_erf`` (numpy has none)."""
@@ -122,12 +227,53 @@ class NumPyModulePrinter(NumPyPrinter):
     def _print_erf(self, expr):
         return f"_erf({self._print(expr.args[0])})"
 
+    def _print_NanIfNegative(self, expr):
+        x = self._print(expr.args[0])
+        return f"numpy.where(numpy.greater_equal({x}, 0), {x}, numpy.nan)"
+
 
 def _comment_block(lines: list[str], prefix: str) -> list[str]:
     return [(prefix + " " + ln).rstrip() + "\n" for ln in lines]
 
 
-class CGen(C99CodeGen):
+class _Locals:
+    """A generator whose function body starts with the common subexpressions ``locals``.
+
+    ``locals`` holds ``(symbol, value)`` pairs in evaluation order (:func:`common_subexpressions`); the
+    routine is built with their symbols as ``global_vars`` (so that they are no arguments), which the
+    generators below declare as nothing.  Each language writes one assignment per local (:meth:`_local`)
+    after the constants it needs (``pi`` in C and Fortran), each constant declared once.
+    """
+
+    locals: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
+    _print_settings: dict = {"human": False, "strict": False}
+
+    def _declare_globals(self, routine):
+        return []
+
+    def _local(self, text: str) -> str:
+        return text + "\n"
+
+    def _constant(self, name, value) -> str:
+        raise NotImplementedError
+
+    def _local_lines(self) -> tuple[list[str], list[str]]:
+        """``(constant declarations, assignments)`` of the locals."""
+        decl, code = [], []
+        for sym, val in self.locals:
+            constants, _, text = self._printer_method_with_settings("doprint", dict(self._print_settings), val,
+                                                                    assign_to=sym)
+            decl += [self._constant(n, v) for n, v in sorted(constants, key=str)]
+            code.append(self._local(text))
+        return list(dict.fromkeys(decl)), code
+
+    def _call_printer(self, routine):
+        decl, code = self._local_lines()
+        rest = [ln for ln in super()._call_printer(routine) if ln not in decl]
+        return decl + code + rest
+
+
+class CGen(_Locals, C99CodeGen):
     """C99 generator whose files start with thinlayer's header comment (:attr:`header_lines`)."""
 
     header_lines: tuple[str, ...] = ()
@@ -136,17 +282,37 @@ class CGen(C99CodeGen):
         lines = [ln.replace("*/", "* /") for ln in self.header_lines]  # a symbol named a*/b
         return ["/*\n"] + _comment_block(lines, " *") + [" */\n", "\n"]
 
+    def _constant(self, name, value) -> str:
+        return f"double const {name} = {value};\n"
 
-class FortranGen(FCodeGen):
+    def _local(self, text: str) -> str:
+        return f"const double {text}\n"
+
+
+class FortranGen(_Locals, FCodeGen):
     """Fortran generator whose files start with thinlayer's header comment (:attr:`header_lines`)."""
 
     header_lines: tuple[str, ...] = ()
+    _print_settings = {"human": False, "source_format": "free", "standard": 95, "strict": False}
 
     def _get_header(self):
         return _comment_block(self.header_lines, "!") + ["\n"]
 
+    def _constant(self, name, value) -> str:
+        return f"double precision, parameter :: {name} = {value}\n"
 
-class RustGen(RustCodeGen):
+    def _declare_locals(self, routine):
+        return [f"double precision :: {self._get_symbol(s)}\n" for s, _ in self.locals]
+
+    def _call_printer(self, routine):
+        # every declaration before the first statement: the locals' constants and the results' constants
+        decl, code = self._local_lines()
+        rest = FCodeGen._call_printer(self, routine)
+        more = [ln.replace("REAL*8", "double precision") for ln in rest if "::" in ln]
+        return list(dict.fromkeys(decl + more)) + code + [ln for ln in rest if "::" not in ln]
+
+
+class RustGen(_Locals, RustCodeGen):
     """Rust generator: thinlayer's header, a ``preamble`` (the erf helper) and ``pub fn``."""
 
     header_lines: tuple[str, ...] = ()
@@ -154,6 +320,12 @@ class RustGen(RustCodeGen):
 
     def _get_header(self):
         return _comment_block(self.header_lines, "//") + ["\n"]
+
+    def _constant(self, name, value) -> str:
+        return f"const {name}: f64 = {value};\n"
+
+    def _local(self, text: str) -> str:
+        return f"let {text}\n"
 
     def _preprocessor_statements(self, prefix):
         return list(self.preamble)
@@ -163,7 +335,7 @@ class RustGen(RustCodeGen):
                 f"pub {self.get_prototype(routine)} {{\n"]
 
 
-class JuliaGen(JuliaCodeGen):
+class JuliaGen(_Locals, JuliaCodeGen):
     """Julia generator: thinlayer's header and a ``preamble`` (``using SpecialFunctions``)."""
 
     header_lines: tuple[str, ...] = ()
@@ -175,14 +347,20 @@ class JuliaGen(JuliaCodeGen):
     def _preprocessor_statements(self, prefix):
         return list(self.preamble)
 
+    def _constant(self, name, value) -> str:
+        return f"{name} = {value}\n"
 
-class OctaveGen(OctaveCodeGen):
+
+class OctaveGen(_Locals, OctaveCodeGen):
     """Octave/MATLAB generator whose file starts with thinlayer's header comment."""
 
     header_lines: tuple[str, ...] = ()
 
     def _get_header(self):
         return _comment_block(self.header_lines, "%")
+
+    def _constant(self, name, value) -> str:
+        return f"  {name} = {value};  % constant\n"
 
 
 # Error function for Rust, whose std has none.  Derived for thinlayer from two textbook identities

@@ -1,0 +1,181 @@
+"""A report that reads like a paper (issue 17, items 1 and 3).
+
+Typeset math everywhere (no ASCII math in the .tex), one normalisation policy for formulas
+(thinlayer.export._normal), numbers to six significant digits, units from the derivation file,
+numbered and captioned tables and figures, one tag for lines that share an equation number, the
+paper cited by its title, and the .tex written without a LaTeX engine.
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from thinlayer import BondedLayer, FrictionlessLayer, Punch, force_law, inner_pressure, kernel_coefficients
+from thinlayer import symbols as S
+from thinlayer.export._normal import normal_latex, normal_terms
+from thinlayer.export.derivation import DerivationFileError, load_derivation, report_latex, write_report
+from thinlayer.export.report import PAPER, NoLatexEngineError
+
+ROOT = Path(__file__).resolve().parents[2]
+FAST = ["elliptic_paraboloid", "frictionless_sphere", "fourth_degree_paraboloid", "incompressible_sphere",
+        "quartic_punch"]
+FLOAT_NU = """[derivation]
+name = "floatnu"
+title = "Float nu"
+[layer]
+nu = 0.49
+[coefficients]
+order = 3
+[punch]
+kind = "paraboloid"
+[edge_shift]
+nu = [0.45, 0.49]
+[contact]
+delta0 = 0.1
+H = 0.005
+mu = 1.0
+model = "compressible"
+tol = 10.0
+parameters = {R = 10}
+"""
+
+#: ASCII math that a typeset report never holds (the filer's list, issue 17)
+ASCII = [r"(?<!\\)sigma_", r"(?<!\\)Lambda\^", r"\\textasciicircum", r"- -", r"\+ -", r"- \+", r"\+ ?0(?![.\d])",
+         r"\(1 ?\+ ?0\)", r"\\left\(0\\right\)", r"\d{13,}", r"\d+\.\d{12,}", r"(?<![\\\w])nu(?![\w}])",
+         r"\btests/"]
+
+
+def _body(tex: str) -> str:
+    """The document without its preamble, the title (user text) and the errata paragraphs of other papers."""
+    body = tex.split(r"\maketitle", 1)[1]
+    paras = re.split(r"(?=\\paragraph\{)", body)
+    keep = [p for p in paras if not p.startswith(r"\paragraph{") or re.match(r"\\paragraph\{\(\d+\.\d+\)", p)]
+    return "".join(keep)
+
+
+def _check_typeset(tex: str, where: str) -> None:
+    body = _body(tex)
+    for pat in ASCII:
+        m = re.search(pat, body)
+        assert m is None, f"{where}: ASCII math {pat!r}: ...{body[max(m.start() - 80, 0):m.end() + 40]}..."
+
+
+@pytest.mark.parametrize("name", FAST)
+def test_catalogue_reports_are_typeset(name):
+    tex = report_latex(load_derivation(ROOT / "derivations" / f"{name}.toml"))
+    _check_typeset(tex, name)
+    assert PAPER in tex  # the paper is cited by its title
+
+
+def test_float_nu_report_has_no_float_noise(tmp_path):
+    f = tmp_path / "floatnu.toml"
+    f.write_text(FLOAT_NU)
+    tex = report_latex(load_derivation(f))
+    _check_typeset(tex, "nu = 0.49")
+    assert "49/100" not in tex and r"\frac{49}{100}" not in tex and r"\nu = 0.49" in tex
+
+
+def test_ascii_check_can_fail():
+    with pytest.raises(AssertionError):
+        _check_typeset(r"\maketitle with p = -sigma_33 > 0", "bad")
+    with pytest.raises(AssertionError):
+        _check_typeset(r"\maketitle $x = 50.9999999999999534141711235719$", "bad")
+    with pytest.raises(AssertionError):
+        _check_typeset(r"\maketitle $6.28 - -2.69$", "bad")
+
+
+# ---------------------------------------------------------------------------------------------
+# the normalisation policy
+# ---------------------------------------------------------------------------------------------
+def _exprs():
+    kc = kernel_coefficients(BondedLayer(), 4)
+    out = [kc.A_expr] + [kc.m_expr(n) for n in range(1, 5)] + [kc.M_expr(n) for n in range(1, 5)]
+    ip = inner_pressure(BondedLayer(), Punch.elliptic_paraboloid())
+    out += [*ip.scaled_terms, ip.pressure]
+    law = force_law(BondedLayer(), Punch.elliptic_paraboloid())
+    out += [law.P0, sp.cancel(law.P1 / law.P0), law.contact_area, law.coefficient]
+    out += [FrictionlessLayer().L(), BondedLayer().L()]
+    return out
+
+
+@pytest.mark.parametrize("k", range(18))
+def test_normal_terms_add_up_to_the_expression(k):
+    e = _exprs()[k]
+    total = sp.Add(*[t.value() for t in normal_terms(e)])
+    assert sp.simplify(total - e) == 0
+
+
+def _frac_args(tex: str) -> list[str]:
+    """The numerator and denominator of every \\frac (brace-matched)."""
+    out = []
+    for m in re.finditer(r"\\frac\{", tex):
+        i = m.end()
+        for _ in range(2):
+            depth, j = 1, i
+            while depth:
+                depth += {"{": 1, "}": -1}.get(tex[j], 0)
+                j += 1
+            out.append(tex[i:j - 1])
+            i = j + 1
+    return out
+
+
+def test_policy_signs_and_no_nested_fractions():
+    kc = kernel_coefficients(BondedLayer(), 4)
+    for e in [kc.A_expr, *[kc.m_expr(n) for n in range(1, 5)], *[kc.M_expr(n) for n in range(1, 5)]]:
+        tex = normal_latex(e)
+        assert not any(r"\frac" in a for a in _frac_args(tex)), tex
+        assert r"2 \nu - 1" not in tex and r"\nu - 1" not in tex and r"\frac{1}{2} - \nu" not in tex, tex
+    assert r"1 - 2 \nu" in normal_latex(kc.A_expr) and r"1 - \nu" in normal_latex(kc.A_expr)
+    # the same factor, whichever sign it came with
+    assert normal_latex((S.nu - 1) / (2 * S.nu - 1)) == normal_latex((1 - S.nu) / (1 - 2 * S.nu))
+    assert normal_latex((1 - S.nu) / (sp.Rational(1, 2) - S.nu)) == normal_latex(2 * (1 - S.nu) / (1 - 2 * S.nu))
+    # square roots joined, floats short, no zero term
+    R1, d0 = sp.Symbol("R_1", positive=True), S.delta0
+    assert normal_latex(sp.sqrt(2) * sp.sqrt(R1) * sp.sqrt(d0)) == r"\sqrt{2 R_{1} \delta_{0}}"
+    assert normal_latex(sp.Float("50.9999999999999534141711235719", 30) * S.mu / S.H) == r"\frac{51 \mu}{H}"
+
+
+# ---------------------------------------------------------------------------------------------
+# units, captions, tags, the paper
+# ---------------------------------------------------------------------------------------------
+def test_units_are_validated_strictly(tmp_path):
+    base = (ROOT / "derivations" / "quartic_punch.toml").read_text()
+    for bad, msg in (("[units]\nlenght = 'mm'\n", "unknown key"), ("[units]\nlength = '\\\\input{x}'\n", "a unit is"),
+                     ("[units]\nlength = 3\n", "expected")):
+        f = tmp_path / "u.toml"
+        f.write_text(base + bad)
+        with pytest.raises(DerivationFileError, match=msg):
+            load_derivation(f)
+
+
+def test_sphere_report_carries_units_captions_and_one_tag_per_group():
+    der = load_derivation(ROOT / "derivations" / "sphere.toml")
+    assert der.units == {"length": r"\mathrm{mm}", "stress": r"\mathrm{MPa}", "force": r"\mathrm{N}"}
+    import dataclasses
+
+    tex = report_latex(dataclasses.replace(der, validation=None))
+    assert r"\,\mathrm{N}" in tex and r"\,\mathrm{mm}^{2}" in tex and r"\,\mathrm{MPa}" in tex
+    tables = tex.count(r"\begin{table}")
+    assert tables >= 2 and tex.count(r"\caption{") == tables
+    for tag in ("2.20", "4.2", "2.21"):
+        assert tex.count(rf"\tag{{{tag}}}") == 1, tag
+    assert "Plots: run" not in tex and "contact_area" not in tex and "contact\\_area" not in tex
+
+
+def test_without_latex_the_tex_is_written_and_the_pdf_step_says_how(tmp_path, monkeypatch):
+    monkeypatch.setenv("PATH", str(tmp_path / "empty"))
+    der = load_derivation(ROOT / "derivations" / "quartic_punch.toml")
+    tex = write_report(der, tmp_path / "a", pdf=None)  # automatic: skipped without an engine
+    assert tex.is_file() and not tex.with_suffix(".pdf").exists()
+    from thinlayer.export.report import pdf_hint
+
+    hint = pdf_hint(tex)
+    assert "\n" not in hint and "pdflatex" in hint and "apt-get install" in hint
+    with pytest.raises(NoLatexEngineError, match="pdflatex"):  # asked for: one clear error, the .tex written
+        write_report(der, tmp_path / "b", pdf=True)
+    assert (tmp_path / "b" / "quartic_punch.tex").is_file()
+    assert isinstance(NoLatexEngineError("x"), OSError)  # the command line's exit code 2

@@ -1,0 +1,81 @@
+"""The wheel: every module and the derivation catalogue ship in it, and its CLI runs outside the repository.
+
+The wheel is built from a copy of the project (``pip wheel --no-deps``, with the build backend of
+pyproject.toml), installed into a temporary virtual environment (``--system-site-packages`` so that
+sympy, numpy, ... need no download) and checked to be the one imported: ``thinlayer.__file__`` lies in
+that environment, not in the repository's ``src``.  Then ``thinlayer report sphere`` (a catalogue name)
+runs in a temporary folder.  About 25 s on two cores, so it runs in the normal suite.
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+CATALOGUE = sorted((ROOT / "derivations").glob("*.toml"))
+
+
+def _run(cmd: list[str], cwd: Path, timeout: float = 300, env: dict | None = None) -> subprocess.CompletedProcess:
+    res = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env,
+                         stdin=subprocess.DEVNULL)
+    what = f"{' '.join(cmd)} failed ({res.returncode})"
+    assert res.returncode == 0, f"{what}:\n{res.stdout[-2000:]}\n{res.stderr[-2000:]}"
+    return res
+
+
+@pytest.fixture(scope="module")
+def wheel(tmp_path_factory) -> Path:
+    """A wheel built from a copy of the project (the repository's own folder gets no build/ left behind)."""
+    copy = tmp_path_factory.mktemp("project")
+    ignore = shutil.ignore_patterns("__pycache__", "*.egg-info", "*.pyc")
+    for name in ("pyproject.toml", "README.md"):
+        shutil.copy(ROOT / name, copy / name)
+    for name in ("src", "derivations"):
+        shutil.copytree(ROOT / name, copy / name, ignore=ignore)
+    out = tmp_path_factory.mktemp("dist")
+    _run([sys.executable, "-m", "pip", "wheel", "--no-deps", "--quiet", "--wheel-dir", str(out), str(copy)], copy)
+    (whl,) = out.glob("thinlayer-*.whl")
+    return whl
+
+
+def test_wheel_holds_every_module_and_the_catalogue(wheel):
+    names = set(zipfile.ZipFile(wheel).namelist())
+    src = ROOT / "src"
+    modules = {p.relative_to(src).as_posix() for p in (src / "thinlayer").rglob("*.py") if "__pycache__" not in p.parts}
+    assert modules and not modules - names, f"modules missing from the wheel: {sorted(modules - names)}"
+    assert CATALOGUE, "the repository has no derivations/*.toml"
+    with zipfile.ZipFile(wheel) as z:
+        for f in CATALOGUE:
+            packed = f"thinlayer/derivations/{f.name}"
+            assert packed in names, f"{packed} is missing from the wheel"
+            assert z.read(packed) == f.read_bytes(), f"{packed} differs from derivations/{f.name}"
+
+
+def test_installed_wheel_reports_a_catalogue_derivation_outside_the_repository(wheel, tmp_path):
+    env_dir = tmp_path / "venv"
+    _run([sys.executable, "-m", "venv", "--system-site-packages", str(env_dir)], tmp_path)
+    py = env_dir / "bin" / "python"
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+    # --ignore-installed: the repository's editable install is visible through the system site-packages
+    _run([str(py), "-m", "pip", "install", "--quiet", "--no-deps", "--ignore-installed", str(wheel)], tmp_path,
+         env=env)
+    where = _run([str(py), "-c", "import thinlayer; print(thinlayer.__file__)"], tmp_path, env=env).stdout.strip()
+    assert Path(where).resolve().is_relative_to(env_dir.resolve()), f"imported {where}, not the wheel's copy"
+    assert not Path(where).resolve().is_relative_to(ROOT.resolve())
+    work = tmp_path / "elsewhere"
+    work.mkdir()
+    res = _run([str(env_dir / "bin" / "thinlayer"), "report", "sphere", "--out", "out"], work, env=env)
+    tex = work / "out" / "sphere.tex"
+    assert tex.is_file(), res.stdout + res.stderr
+    text = tex.read_text()
+    assert r"\begin{document}" in text and r"\end{document}" in text
+    # the --help example names derivations/<file>.toml: outside the repository it is the catalogue's
+    res = _run([str(env_dir / "bin" / "thinlayer"), "report", "derivations/elliptic_paraboloid.toml", "--out", "out"],
+               work, env=env)
+    assert (work / "out" / "elliptic_paraboloid.tex").is_file()
