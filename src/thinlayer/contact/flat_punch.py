@@ -1,0 +1,288 @@
+r"""Flat-ended cylindrical punch: the stiffness ``kappa(a/H)`` by the model that holds (F.1).
+
+``P = 4 mu a w0 kappa(a/H)/(1 - nu)`` (F.1).  Three models, each with its own error estimate:
+
+``"exact"``
+    the Fredholm equation of the second kind (F.6)-(F.7) (:func:`thinlayer.numerics.flat_punch.flat_punch_kappa`),
+    any ``0 < a/H <= 200``, about 1e-10 (estimate: the change against 0.7 times the nodes); a few ms up to
+    ``a/H = 20``, 0.12 s at 200.
+``"thin"``
+    the thin-layer asymptotics (F.10)-(F.15) in their effective-radius form
+    (:func:`thinlayer.asymptotics.flat_punch.thin_flat_punch`), estimate (F.16); microseconds per value.
+``"thick"``
+    the thick-layer series (F.18) through ``(a/H)^12`` (:func:`thinlayer.asymptotics.flat_punch.thick_flat_punch`),
+    estimate (F.19); ``a/H < 0.8`` only.
+
+``"auto"`` takes the cheapest whose estimate is within ``max_error`` (thick, then thin), else the exact solver.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .._checks import check_bounded, check_choice, parse_nu, positive
+from ..asymptotics.flat_punch import thick_flat_punch, thin_flat_punch
+from ..display import RichDisplay
+from ..layers.kernels import LayerKernel
+from ..numerics.flat_punch import MAX_A_OVER_H, check_numeric_layer, flat_punch_kappa
+
+__all__ = ["FLAT_PUNCH_MODELS", "FlatPunchResult", "flat_punch_contact", "flat_punch_stiffness"]
+
+#: the values of ``model``
+FLAT_PUNCH_MODELS = ("exact", "thin", "thick", "auto")
+#: most values of a/H in one call of the exact model (each is one solve: 0.12 s at a/H = 200)
+MAX_EXACT_POINTS = 2000
+#: most values of a/H in one call of the asymptotic models (each is a formula)
+MAX_POINTS = 10_000_000
+
+
+def _check_max_error(max_error: Any) -> float:
+    v = positive(max_error, "max_error")
+    if v > 1.0:
+        raise ValueError(f"max_error is a relative error in (0, 1], got {max_error!r}")
+    return v
+
+
+def _as_ratios(a_over_H: Any, limit: int) -> tuple[np.ndarray, bool]:
+    """``a/H`` as a float array (and whether it was a scalar): finite, positive, at most ``limit`` values."""
+    if isinstance(a_over_H, bool):
+        raise TypeError("a_over_H must be a positive number or an array of them, got a bool")
+    if isinstance(a_over_H, (str, bytes)) or np.asarray(a_over_H).dtype.kind in "USOb":
+        raise TypeError(f"a_over_H must be a positive number or an array of numbers, got {a_over_H!r}")
+    try:
+        x = np.asarray(a_over_H, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"a_over_H must be a positive number or an array of them, got {a_over_H!r}") from None
+    check_bounded(x.size, "the number of a/H values", limit, "each value is one solve of the exact model "
+                                                             "(0.12 s at a/H = 200); the asymptotic models take any "
+                                                             "array")
+    if x.size == 0:
+        raise ValueError("a_over_H is empty: give at least one value")
+    bad = ~np.isfinite(x) | (x <= 0)
+    if np.any(bad):
+        raise ValueError(f"a_over_H must be finite and positive, got {float(x[bad].flat[0])!r}")
+    return x, x.ndim == 0
+
+
+def _refuse(what: str, x: np.ndarray, est: np.ndarray, max_error: float, hint: str) -> None:
+    bad = est > max_error
+    if np.any(bad):
+        i = int(np.argmax(np.where(bad, est, -np.inf)))
+        raise ValueError(f"the {what} at a/H = {x.flat[i]:.6g} has an estimated relative error "
+                         f"{est.flat[i]:.1e} > max_error = {max_error:g}: {hint}")
+
+
+def _thin(layer: LayerKernel, x: np.ndarray, max_error: float) -> tuple[np.ndarray, np.ndarray]:
+    model = thin_flat_punch(layer)
+    est = model.error_estimate(x)
+    _refuse("thin-layer model (F.12)-(F.16)", x, est, max_error,
+            "the layer is not thin enough; use model='exact' (or 'auto')")
+    return model(x), est
+
+
+def _thick(layer: LayerKernel, x: np.ndarray, max_error: float) -> tuple[np.ndarray, np.ndarray]:
+    model = thick_flat_punch(layer)
+    est = model.error_estimate(x)
+    _refuse("thick-layer series (F.18)", x, est, max_error,
+            "it converges only for a/H < 0.8; use model='exact' (or 'auto')")
+    return model(x), est
+
+
+def _exact(layer: LayerKernel, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    if np.any(x > MAX_A_OVER_H):
+        i = int(np.argmax(x))
+        raise ValueError(f"the exact model is limited to a/H <= {MAX_A_OVER_H:g} (0.12 s at 200), got a/H = "
+                         f"{x.flat[i]:.6g}: use model='thin' (error below 5e-5 there) or 'auto'")
+    res = [flat_punch_kappa(layer, float(v)) for v in x.ravel()]
+    return (np.array([r.kappa for r in res]).reshape(x.shape),
+            np.array([r.error for r in res]).reshape(x.shape))
+
+
+def _models(layer: LayerKernel, x: np.ndarray, model: str,
+            max_error: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(kappa, estimate, model index)`` for every a/H (index into FLAT_PUNCH_MODELS)."""
+    if model == "exact":
+        k, e = _exact(layer, x)
+        return k, e, np.zeros(x.shape, dtype=int)
+    if model == "thin":
+        k, e = _thin(layer, x, max_error)
+        return k, e, np.ones(x.shape, dtype=int)
+    if model == "thick":
+        k, e = _thick(layer, x, max_error)
+        return k, e, np.full(x.shape, 2)
+    # auto: thick, then thin, then exact, per value
+    kappa = np.full(x.shape, np.nan)
+    est = np.full(x.shape, np.inf)
+    which = np.zeros(x.shape, dtype=int)
+    if layer.has_thickness:
+        tk = thick_flat_punch(layer)
+        e = tk.error_estimate(x)  # inf beyond a/H = 0.8
+        use = e <= max_error
+        kappa[use], est[use], which[use] = tk(x[use]), e[use], 2
+        th = thin_flat_punch(layer)
+        e = th.error_estimate(x)
+        use = ~np.isfinite(kappa) & (e <= max_error)
+        kappa[use], est[use], which[use] = th(x[use]), e[use], 1
+    rest = ~np.isfinite(kappa)
+    if np.any(rest):
+        check_bounded(int(np.count_nonzero(rest)), "the number of a/H values for the exact model",
+                      MAX_EXACT_POINTS, "each is one solve (0.12 s at a/H = 200)")
+        k, e = _exact(layer, x[rest])
+        kappa[rest], est[rest], which[rest] = k, e, 0
+    return kappa, est, which
+
+
+def flat_punch_stiffness(layer: LayerKernel, a_over_H: Any, model: str = "exact", *,
+                         max_error: float = 1e-2) -> Any:
+    """The stiffness ``kappa(a/H)`` of a flat-ended cylindrical punch, ``P = 4 mu a w0 kappa/(1 - nu)`` (F.1).
+
+    Parameters
+    ----------
+    layer : LayerKernel
+        ``BondedLayer(nu)`` (numeric nu), ``IncompressibleLayer()``, ``FrictionlessLayer()`` or ``HalfSpace()``
+        (kappa = 1; exact model only).
+    a_over_H : float or array_like
+        Punch radius over layer thickness (> 0); an array gives an array (the exact model solves each value).
+    model : str
+        ``"exact"`` (default), ``"thin"``, ``"thick"`` or ``"auto"`` (the module docstring).
+    max_error : float
+        Largest accepted estimated relative error of the asymptotic models (``"thin"``, ``"thick"`` refuse
+        beyond it; ``"auto"`` falls back to the exact solver).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``kappa`` (1 for the half-space, ``-> 1`` as ``a/H -> 0``).
+
+    Raises
+    ------
+    ValueError
+        One line: an estimated error above ``max_error`` (naming a/H and the estimate), ``a/H > 200`` for the
+        exact model, a layer the model does not cover.
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer
+    >>> layer = BondedLayer(0.3)
+    >>> round(flat_punch_stiffness(layer, 1.0), 6)
+    2.483525
+    >>> round(float(flat_punch_stiffness(layer, 30.0, "thin")), 4)
+    58.1975
+    """
+    layer = check_numeric_layer(layer)
+    model = check_choice(model, FLAT_PUNCH_MODELS, "model")
+    tol = _check_max_error(max_error)
+    x, scalar = _as_ratios(a_over_H, MAX_EXACT_POINTS if model == "exact" else MAX_POINTS)
+    kappa, _, _ = _models(layer, x, model, tol)
+    return float(kappa) if scalar else kappa
+
+
+@dataclass(frozen=True)
+class FlatPunchResult(RichDisplay):
+    """Force and depth of a flat-ended cylindrical punch on a layer, by one model (F.1).
+
+    Attributes
+    ----------
+    layer : LayerKernel
+        The layer.
+    model : str
+        ``"exact"``, ``"thin"`` or ``"thick"`` (the one used).
+    radius, H, mu, nu : float
+        float
+        Punch radius ``a``, thickness, shear modulus, Poisson ratio.
+    w0, force : float
+        float
+        Indentation depth and total force, ``P = 4 mu a w0 kappa/(1 - nu)``.
+    kappa, error : float
+        float
+        The stiffness factor and its estimated relative error.
+    """
+
+    layer: LayerKernel
+    model: str
+    radius: float
+    H: float
+    mu: float
+    nu: float
+    w0: float
+    force: float
+    kappa: float
+    error: float
+
+    equation = "F.1"
+
+    @property
+    def stiffness(self) -> float:
+        """``dP/dw0 = 4 mu a kappa/(1 - nu)``."""
+        return 4.0 * self.mu * self.radius * self.kappa / (1.0 - self.nu)
+
+    def latex(self) -> str:
+        return (rf"P = \frac{{4\mu a w_0 \kappa}}{{1 - \nu}} = {self.force:.10g},\quad w_0 = {self.w0:.10g},\quad "
+                rf"\kappa({self.radius / self.H:.6g}) = {self.kappa:.10g}\ (\text{{{self.model}}}) \tag{{F.1}}")
+
+    def text_lines(self) -> list[str]:
+        return [f"FlatPunchResult: flat-ended cylinder on {self.layer}, {self.model} model   (F.1)",
+                f"  a = {self.radius:.6g}, H = {self.H:.6g}, mu = {self.mu:.6g}, nu = {self.nu:.6g}",
+                f"  w0 = {self.w0:.10g}, P = {self.force:.10g}",
+                f"  kappa(a/H = {self.radius / self.H:.6g}) = {self.kappa:.12g}  (+- {self.error:.1e} relative)"]
+
+
+def flat_punch_contact(layer: LayerKernel, radius: float, H: float, *, w0: float | None = None,
+                       force: float | None = None, mu: float = 1.0, nu: float | None = None,
+                       model: str = "auto", max_error: float = 1e-2) -> FlatPunchResult:
+    """Force for a given depth, or depth for a given force, of a flat-ended cylinder on a layer (F.1).
+
+    Parameters
+    ----------
+    layer : LayerKernel
+        ``BondedLayer(nu)``, ``IncompressibleLayer()``, ``FrictionlessLayer(nu)`` or ``HalfSpace()``.
+    radius, H : float
+        float
+        Punch radius ``a`` and layer thickness (both > 0).
+    w0, force : float, optional
+        float
+        Indentation depth or total force (> 0): exactly one of them.
+    mu : float
+        Shear modulus.
+    nu : float, optional
+        Poisson ratio, for layers that do not fix one (``FrictionlessLayer()``, ``HalfSpace()``).
+    model, max_error
+        As in :func:`flat_punch_stiffness` (default ``"auto"``).
+
+    Returns
+    -------
+    FlatPunchResult
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer
+    >>> res = flat_punch_contact(BondedLayer(0.3), radius=2.0, H=1.0, w0=0.01)
+    >>> res.model, round(res.force, 8)
+    ('exact', 0.49751363)
+    >>> back = flat_punch_contact(BondedLayer(0.3), radius=2.0, H=1.0, force=res.force)
+    >>> round(back.w0, 12)
+    0.01
+    """
+    layer = check_numeric_layer(layer)
+    a = positive(radius, "radius")
+    Hv = positive(H, "H")
+    mu_v = positive(mu, "mu")
+    nu_v = parse_nu(layer.poisson_ratio(nu), floats="float", upper_closed=True, symbols=False)
+    nu_v = float(nu_v)
+    if (w0 is None) == (force is None):
+        raise ValueError("give exactly one of w0 (indentation depth) and force (total force)")
+    check_choice(model, FLAT_PUNCH_MODELS, "model")
+    tol = _check_max_error(max_error)
+    x = np.asarray(a / Hv)
+    kappa, est, which = _models(layer, x, model, tol)
+    k = float(kappa)
+    factor = 4.0 * mu_v * a / (1.0 - nu_v)  # P = factor w0 kappa (F.1)
+    if w0 is not None:
+        w = positive(w0, "w0")
+        P = factor * w * k
+    else:
+        P = positive(force, "force")
+        w = P / (factor * k)
+    return FlatPunchResult(layer, FLAT_PUNCH_MODELS[int(which)], a, Hv, mu_v, nu_v, w, P, k, float(est))
