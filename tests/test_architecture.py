@@ -41,7 +41,7 @@ RANK = {
 #: asymptotic stages in the paper's order: each imports only earlier ones
 STAGES = [
     "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "composite",
-    "incompressible", "solution",
+    "incompressible", "thick_layer", "flat_punch", "solution",
 ]
 
 #: modules whose import must not load scipy (the symbolic pipeline)

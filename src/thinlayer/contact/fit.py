@@ -1,0 +1,339 @@
+r"""Fitting indentation curves: Young's modulus (optionally the thickness and the contact point) by least squares.
+
+:func:`fit` fits ``force = P(delta - d_c; E, H)`` to a measured curve of a sphere (paraboloid of radius ``R``)
+on a layer, by :func:`scipy.optimize.least_squares` with the analytic Jacobian.  The model ``P`` is
+
+* ``"any-thickness"`` (default): :func:`thinlayer.contact.any_thickness.force_any_thickness`, valid for every
+  ``a/H`` (its estimate <= 1e-3 against the direct solver);
+* ``"hertz"``: the half-space, ``P = (4/3) E/(1 - nu^2) R^{1/2} delta^{3/2}`` (what a thickness-blind fit does);
+* ``"dimitriadis2002"`` or ``"garcia2018"``: Hertz times a published thick-layer series in
+  ``chi = sqrt(R delta)/H`` (printed coefficients, :data:`thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES`).
+
+The parameters are ``log E`` (and ``log H``: both stay positive) and the contact point ``d_c`` (the depth is
+``delta - d_c``; points before contact carry zero force).  Standard errors come from the Jacobian at the
+solution, ``cov = s^2 (J^T J)^{-1}`` with ``s^2 = sum r^2/(n - p)`` (residuals in force units), mapped to
+``E`` and ``H`` by the chain rule.
+"""
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .._checks import check_choice, positive
+from ..display import RichDisplay
+from .any_thickness import BASES, any_thickness_law
+
+__all__ = ["FIT_MODELS", "FitResult", "fit"]
+
+FIT_MODELS = ("any-thickness", "hertz", "dimitriadis2002", "garcia2018")
+#: a condition number of the scaled Jacobian above this means the data cannot separate the parameters
+MAX_CONDITION = 1e10
+#: more points than this are refused before any work (1e6 points fit in about 10 s)
+MAX_POINTS = 10_000_000
+
+
+@dataclass(frozen=True, eq=False)
+class FitResult(RichDisplay):
+    """The result of :func:`fit`: estimates, standard errors, the residual and the model.
+
+    Attributes
+    ----------
+    E, E_se : float
+        Young's modulus and its standard error.
+    H, H_se : float
+        Thickness (fitted, or as given with ``H_se = 0``).
+    offset, offset_se : float
+        Contact point ``d_c`` (fitted, or 0 with ``offset_se = 0``).
+    residual_rms : float
+        Root-mean-square force residual.
+    residuals : numpy.ndarray
+        ``model - force`` at each point.
+    model, base : str
+        The force model and the base.
+    nu, R : float
+        Poisson ratio and sphere radius.
+    n_points : int
+    fitted : tuple of str
+        The fitted parameters (``"E"``, ``"H"``, ``"offset"``).
+    covariance : numpy.ndarray
+        Covariance of the fitted parameters in ``(log E, log H, offset)`` order (those fitted).
+    condition : float
+        Condition number of the column-scaled Jacobian.
+    chi_max : float
+        The largest ``sqrt(R delta)/H`` of the data (the thickness regime it probes).
+    """
+
+    E: float
+    E_se: float
+    H: float
+    H_se: float
+    offset: float
+    offset_se: float
+    residual_rms: float
+    residuals: np.ndarray = field(repr=False)
+    model: str = "any-thickness"
+    base: str = "bonded"
+    nu: float = 0.5
+    R: float = 1.0
+    n_points: int = 0
+    fitted: tuple = ()
+    covariance: np.ndarray = field(default=None, repr=False)
+    condition: float = math.nan
+    chi_max: float = math.nan
+    equation = "T.7"
+
+    @property
+    def mu(self) -> float:
+        """Shear modulus ``E/(2(1 + nu))``."""
+        return self.E / (2 * (1 + self.nu))
+
+    def predict(self, delta: Any) -> np.ndarray:
+        """The fitted model's force at the (raw, uncorrected) depths ``delta``."""
+        shape = _shape_function(self.model, self.R, self.nu, self.base)
+        P, _, _ = shape(np.asarray(delta, dtype=float) - self.offset, self.H)
+        return self.E * P
+
+    def as_dict(self) -> dict[str, Any]:
+        """The numbers as a JSON-ready dictionary."""
+        return {"model": self.model, "base": self.base, "nu": self.nu, "R": self.R, "E": self.E, "E_se": self.E_se,
+                "H": self.H, "H_se": self.H_se, "offset": self.offset, "offset_se": self.offset_se,
+                "residual_rms": self.residual_rms, "n_points": self.n_points, "fitted": list(self.fitted),
+                "condition": self.condition, "chi_max": self.chi_max}
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        lines = [f"FitResult ({self.model} model, {self.base} base, nu = {self.nu:.6g}, R = {self.R:.6g}), "
+                 f"{self.n_points} points, chi_max = {self.chi_max:.3g}",
+                 f"  E      = {self.E:.8g} +- {self.E_se:.2g}"]
+        if "H" in self.fitted:
+            lines.append(f"  H      = {self.H:.8g} +- {self.H_se:.2g}")
+        else:
+            lines.append(f"  H      = {self.H:.8g} (given)")
+        if "offset" in self.fitted:
+            lines.append(f"  offset = {self.offset:.8g} +- {self.offset_se:.2g}")
+        lines.append(f"  residual rms = {self.residual_rms:.4g}")
+        return lines
+
+    def latex(self) -> str:
+        return (rf"E = {self.E:.6g} \pm {self.E_se:.2g},\quad H = {self.H:.6g},\quad "
+                rf"\text{{{self.model}}},\ \nu = {self.nu:.4g}")
+
+
+def _series_coefficients(model: str, base: str) -> tuple[float, ...]:
+    from ..asymptotics.thick_layer import PUBLISHED_SERIES
+
+    key = {"dimitriadis2002": f"dimitriadis2002-{'bonded' if base == 'bonded' else 'nonbonded'}",
+           "garcia2018": "garcia2018-sphere"}[model]
+    if model == "garcia2018" and base != "bonded":
+        raise ValueError("the Garcia & Garcia (2018) series is for a bonded layer; use base='bonded' or another model")
+    return (1.0, *PUBLISHED_SERIES[key]["coefficients"])
+
+
+def _shape_function(model: str, R: float, nu: float, base: str):
+    """``g(delta, H) -> (P/E, d log P/d log delta, d log P/d log H)`` of one model (zero force for delta <= 0)."""
+    K = 4.0 / 3.0 / (1.0 - nu * nu) * math.sqrt(R)  # P_Hertz/E/delta^{3/2}
+    if model == "any-thickness":
+        law = any_thickness_law(nu, base)
+
+        def g(delta: np.ndarray, H: float):
+            pos = delta > 0
+            d = np.where(pos, delta, 1.0)
+            ld = np.log(d)
+            lp, dlp = law.log_force_ratio(0.5 * (ld + math.log(R)) - math.log(H))
+            P = np.where(pos, K * np.exp(1.5 * ld + lp), 0.0)
+            return P, np.where(pos, 1.5 + 0.5 * dlp, 0.0), np.where(pos, -dlp, 0.0)
+
+        return g
+    coef = np.array((1.0,) if model == "hertz" else _series_coefficients(model, base))
+    dcoef = coef[1:] * np.arange(1, coef.size)
+
+    def g(delta: np.ndarray, H: float):
+        pos = delta > 0
+        d = np.where(pos, delta, 0.0)
+        chi = np.sqrt(R * d) / H
+        S = np.polynomial.polynomial.polyval(chi, coef)
+        dS = chi * np.polynomial.polynomial.polyval(chi, dcoef) if dcoef.size else np.zeros_like(chi)
+        P = K * d**1.5 * S
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dl = np.where(S > 0, dS / S, 0.0)
+        return P, np.where(pos, 1.5 + 0.5 * dl, 0.0), np.where(pos, -dl, 0.0)
+
+    return g
+
+
+def _points(delta: Any, force: Any) -> tuple[np.ndarray, np.ndarray]:
+    try:
+        d = np.asarray(delta, dtype=float).ravel()
+        f = np.asarray(force, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise ValueError("delta and force must be sequences of numbers") from None
+    if d.size != f.size:
+        raise ValueError(f"delta and force must have the same length, got {d.size} and {f.size}")
+    if d.size > MAX_POINTS:
+        raise ValueError(f"{d.size} points exceed the limit {MAX_POINTS}; subsample the curve")
+    if not (np.all(np.isfinite(d)) and np.all(np.isfinite(f))):
+        raise ValueError("delta and force must be finite (no nan or inf); drop the bad rows first")
+    return d, f
+
+
+def _radius(punch: Any) -> float:
+    if isinstance(punch, numbers.Real) and not isinstance(punch, bool):
+        return positive(punch, "punch (the sphere radius R)")
+    from ..punch import Punch
+    from .any_thickness import sphere_radius
+
+    if not isinstance(punch, Punch):
+        raise TypeError(f"punch must be the sphere radius R (a number) or Punch.paraboloid(R), got {punch!r}")
+    R = sphere_radius(punch)
+    if R is None:
+        raise ValueError(f"fit() needs a sphere (paraboloid of revolution) Phi = r^2/(2R); got Phi = {punch.expr}")
+    return R
+
+
+def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5, base: str = "bonded", *,
+        fit_H: bool = False, fit_offset: bool = False, model: str = "any-thickness", E0: float | None = None,
+        sigma: Any = None) -> FitResult:
+    r"""Estimate Young's modulus (and optionally H and the contact point) from a force-indentation curve.
+
+    Parameters
+    ----------
+    delta, force : array_like
+        Indentation depths and forces (same length, consistent units).
+    punch : float or Punch
+        The sphere radius ``R`` or ``Punch.paraboloid(R)``.
+    H : float
+        Layer thickness (the starting value when ``fit_H``).
+    nu : float
+        Poisson ratio, ``-1 < nu <= 1/2``.
+    base : str
+        ``"bonded"`` or ``"frictionless"``.
+    fit_H, fit_offset : bool
+        Also fit the thickness, the contact point ``d_c`` (force at depth ``delta - d_c``).
+    model : str
+        ``"any-thickness"`` (default), ``"hertz"``, ``"dimitriadis2002"`` or ``"garcia2018"``.
+    E0 : float, optional
+        Starting value of E (default: from the points by the model with the given H).
+    sigma : array_like, optional
+        Standard deviation of each force (weights ``1/sigma``); default equal weights.
+
+    Returns
+    -------
+    FitResult
+
+    Raises
+    ------
+    ValueError
+        One line naming what is missing: fewer points than parameters plus one, no positive force, no point in
+        contact, or data that cannot separate the parameters (singular Jacobian).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from thinlayer.contact.any_thickness import force_any_thickness
+    >>> d = np.linspace(0.01, 1.0, 50)
+    >>> P = force_any_thickness(d, R=10.0, H=2.0, E=3.0, nu=0.5)
+    >>> r = fit(d, P, punch=10.0, H=2.0, nu=0.5)
+    >>> round(r.E, 8), bool(r.E_se < 1e-8)
+    (3.0, True)
+    """
+    d, f = _points(delta, force)
+    if punch is None:
+        raise TypeError("fit() needs punch= (the sphere radius R or Punch.paraboloid(R))")
+    R = _radius(punch)
+    if H is None:
+        raise TypeError("fit() needs H= (the layer thickness, or its starting value with fit_H=True)")
+    H0 = positive(H, "H")
+    check_choice(base, BASES, "base")
+    check_choice(model, FIT_MODELS, "model")
+    if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not -1 < float(nu) <= 0.5:
+        raise ValueError(f"nu must be a number in (-1, 1/2], got {nu!r}")
+    nu = float(nu)
+    names = ["E"] + (["H"] if fit_H else []) + (["offset"] if fit_offset else [])
+    p = len(names)
+    if d.size < p + 1:
+        raise ValueError(f"{d.size} points cannot determine {p} parameter(s) ({', '.join(names)}) with an error "
+                         f"estimate: give at least {p + 1} points")
+    if not np.any(f > 0):
+        raise ValueError("no positive force in the data: the curve carries no information on E (is the force "
+                         "column right, and in contact?)")
+    if not np.any(d > 0):
+        raise ValueError("no positive depth in the data: the sphere never touches the layer")
+    if sigma is None:
+        w = np.ones_like(f)
+    else:
+        s = np.broadcast_to(np.asarray(sigma, dtype=float), f.shape)
+        if not (np.all(np.isfinite(s)) and np.all(s > 0)):
+            raise ValueError("sigma must be positive and finite")
+        w = 1.0 / s
+    shape = _shape_function(model, R, nu, base)
+    P1, _, _ = shape(d, H0)
+    if not np.any(P1 > 0):
+        raise ValueError("no point is in contact with the starting contact point: check the depth column")
+    if E0 is None:
+        sel = (P1 > 0) & (f > 0)
+        E0 = float(np.median(f[sel] / P1[sel])) if sel.any() else 1.0
+    else:
+        E0 = positive(E0, "E0")
+    fscale = float(np.max(np.abs(f * w)))
+
+    def unpack(x):
+        E = math.exp(x[0])
+        HH = math.exp(x[1]) if fit_H else H0
+        dc = x[-1] * dscale if fit_offset else 0.0
+        return E, HH, dc
+
+    dscale = float(np.max(np.abs(d))) or 1.0
+
+    def resid(x):
+        E, HH, dc = unpack(x)
+        P, _, _ = shape(d - dc, HH)
+        return (E * P - f) * w / fscale
+
+    def jac(x):
+        E, HH, dc = unpack(x)
+        dd = d - dc
+        P, gd, gH = shape(dd, HH)
+        EP = E * P * w / fscale
+        cols = [EP]
+        if fit_H:
+            cols.append(EP * gH)
+        if fit_offset:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                cols.append(np.where(dd > 0, -EP * gd / np.where(dd > 0, dd, 1.0), 0.0) * dscale)
+        return np.column_stack(cols)
+
+    from scipy import optimize
+
+    x0 = [math.log(E0)] + ([math.log(H0)] if fit_H else []) + ([0.0] if fit_offset else [])
+    sol = optimize.least_squares(resid, x0, jac=jac, method="lm", xtol=1e-14,
+                                 ftol=1e-14, gtol=1e-14, max_nfev=2000)
+    E, HH, dc = unpack(sol.x)
+    J = jac(sol.x)
+    r = sol.fun
+    colnorm = np.linalg.norm(J, axis=0)
+    if np.any(colnorm == 0):
+        bad = names[int(np.argmin(colnorm))]
+        raise ValueError(f"the data do not determine {bad}: the model does not depend on it at these points")
+    sv = np.linalg.svd(J / colnorm, compute_uv=False)
+    cond = float(sv[0] / sv[-1]) if sv[-1] > 0 else math.inf
+    if cond > MAX_CONDITION:
+        raise ValueError(f"the data cannot separate {', '.join(names)} (singular Jacobian, condition {cond:.2g}): "
+                         "fit fewer parameters (e.g. give H) or measure deeper indentations")
+    dof = d.size - p
+    s2 = float(r @ r) / dof
+    cov_scaled = np.linalg.inv(J.T @ J) * s2
+    # back to physical units: residuals were divided by fscale (w included), the offset scaled by dscale
+    scale = np.array([1.0] + ([1.0] if fit_H else []) + ([dscale] if fit_offset else []))
+    cov = cov_scaled * np.outer(scale, scale)
+    se = np.sqrt(np.diag(cov))
+    E_se = E * se[0]
+    H_se = HH * se[1] if fit_H else 0.0
+    off_se = se[-1] if fit_offset else 0.0
+    resid_force = (r * fscale / w)
+    chi_max = float(math.sqrt(R * max(float(np.max(d - dc)), 0.0)) / HH)
+    return FitResult(E, E_se, HH, H_se, dc, off_se, float(np.sqrt(np.mean(resid_force**2))), resid_force, model,
+                     base, nu, R, int(d.size), tuple(names), cov, cond, chi_max)

@@ -1,0 +1,156 @@
+"""``thinlayer fit curve.csv --R ... --H ... --nu ...``: Young's modulus from a force-indentation curve.
+
+:func:`add_fit_parser` adds the subcommand to the ``thinlayer`` parser, :func:`cmd_fit` runs it.  The CSV has
+a depth column and a force column (default the first two; ``--columns`` picks others, by index or header
+name); a header row, blank lines and ``#`` comments are skipped; comma, semicolon, tab or blanks separate the
+fields.  Every value is parsed as a finite number (never evaluated): a bad cell is a one-line error naming its
+row and column.  The result goes to stdout (text, or ``--json``), and with ``--out FILE`` to a file, which is
+never replaced unless ``--overwrite`` is given.
+"""
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import json
+import math
+import re
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = ["add_fit_parser", "cmd_fit", "read_curve"]
+
+#: the largest CSV accepted (bytes), checked before reading
+MAX_BYTES = 200 * 2**20
+
+_SPLIT = re.compile(r"[,;\t ]+")
+
+
+def _finite(text: str) -> float:
+    try:
+        val = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not math.isfinite(val):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
+    return val
+
+
+def _number(cell: str, row: int, col: int, path: str) -> float:
+    s = cell.strip()
+    try:
+        val = float(s)
+    except ValueError:
+        raise ValueError(f"{path}: row {row}, column {col}: {s[:40]!r} is not a number") from None
+    if not math.isfinite(val):
+        raise ValueError(f"{path}: row {row}, column {col}: {s[:40]!r} is not a finite number")
+    return val
+
+
+def _fields(line: str) -> list[str]:
+    if "," in line or ";" in line or "\t" in line:
+        return [f for f in next(csv.reader([line], delimiter="," if "," in line else ";" if ";" in line else "\t"))]
+    return _SPLIT.split(line.strip())
+
+
+def read_curve(path: str | Path, columns: str = "0,1") -> tuple[np.ndarray, np.ndarray]:
+    """``(delta, force)`` from a CSV file: two columns chosen by index or by header name (``"depth,force"``).
+
+    Raises
+    ------
+    ValueError
+        One line naming the file, and the row and column of a cell that is not a finite number.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise ValueError(f"{path}: no such file")
+    size = p.stat().st_size
+    if size > MAX_BYTES:
+        raise ValueError(f"{path}: {size} bytes exceed the limit of {MAX_BYTES} bytes; subsample the curve")
+    sel = [c.strip() for c in columns.split(",")]
+    if len(sel) != 2 or not all(sel):
+        raise ValueError(f"--columns must name two columns, depth and force (indices or header names), got {columns!r}")
+    text = p.read_text(encoding="utf-8", errors="strict")
+    rows = [(i + 1, _fields(line)) for i, line in enumerate(io.StringIO(text))
+            if line.strip() and not line.lstrip().startswith("#")]
+    if not rows:
+        raise ValueError(f"{path}: no data rows")
+    first = rows[0][1]
+    header = None
+    try:
+        [float(c) for c in first]
+    except ValueError:
+        header = [c.strip() for c in first]
+        rows = rows[1:]
+    idx = []
+    for c in sel:
+        if c.lstrip("-").isdigit():
+            idx.append(int(c))
+        elif header is not None and c in header:
+            idx.append(header.index(c))
+        else:
+            raise ValueError(f"{path}: no column {c!r}" + (f" (header: {', '.join(header)})" if header else
+                                                             " (the file has no header: give indices)"))
+    d, f = [], []
+    for line_no, cells in rows:
+        try:
+            dv, fv = (_number(cells[j], line_no, j, str(path)) for j in idx)
+        except IndexError:
+            raise ValueError(f"{path}: row {line_no} has {len(cells)} field(s), column {max(idx)} needed") from None
+        d.append(dv)
+        f.append(fv)
+    return np.array(d), np.array(f)
+
+
+def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentParser:
+    """Add ``fit`` to the ``thinlayer`` subcommands; the handler is :func:`cmd_fit` (``func`` default)."""
+    s = subparsers.add_parser(
+        "fit", formatter_class=formatter_class, help="Young's modulus from a force-indentation curve (any thickness)",
+        description="Least-squares fit of E (optionally H and the contact point) to a sphere's force-indentation\n"
+                    "curve on a layer of any thickness (thinlayer.fit).  JSON keys: file, model, base, nu, R, E, "
+                    "E_se,\nH, H_se, offset, offset_se, residual_rms, n_points, fitted, condition, chi_max.",
+        epilog="examples:\n  thinlayer fit curve.csv --R 5e-6 --H 3e-6 --nu 0.5 --json\n"
+               "  thinlayer fit curve.csv --columns depth,force --R 10 --H 2 --nu 0.3 --fit-offset --model hertz")
+    s.add_argument("csv", help="CSV file: a depth column and a force column (same length units as --R, --H)")
+    s.add_argument("--R", type=_finite, required=True, help="sphere radius (> 0)")
+    s.add_argument("--H", type=_finite, required=True, help="layer thickness (> 0; the starting value with --fit-H)")
+    s.add_argument("--nu", type=_finite, required=True, help="Poisson ratio in (-1, 1/2]")
+    s.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
+                   help="the base under the layer (default bonded)")
+    s.add_argument("--model", choices=("any-thickness", "hertz", "dimitriadis2002", "garcia2018"),
+                   default="any-thickness", help="force model (default any-thickness)")
+    s.add_argument("--fit-H", action="store_true", help="also fit the thickness")
+    s.add_argument("--fit-offset", action="store_true", help="also fit the contact point (depth offset)")
+    s.add_argument("--columns", default="0,1", help="depth and force columns: indices or header names (default 0,1)")
+    s.add_argument("--out", type=Path, help="also write the result (text, or JSON with --json) to this file")
+    s.add_argument("--overwrite", action="store_true", help="replace --out if it exists")
+    s.add_argument("--json", action="store_true", help="machine-readable JSON output (keys above)")
+    s.add_argument("--quiet", action="store_true", help="no 'wrote ...' message")
+    s.set_defaults(func=cmd_fit)
+    return s
+
+
+def cmd_fit(args: argparse.Namespace) -> int:
+    """Run ``thinlayer fit``; returns the exit code (0).  Bad input raises ValueError/TypeError (one line)."""
+    from ..contact.fit import fit
+    from ..validation.output import atomic_write, refuse_existing
+
+    if args.out is not None:
+        refuse_existing([args.out], args.overwrite)
+    delta, force = read_curve(args.csv, args.columns)
+    res = fit(delta, force, punch=args.R, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
+              fit_offset=args.fit_offset, model=args.model)
+    out = {"file": str(args.csv), **res.as_dict()}
+    bad = [k for k, v in out.items() if isinstance(v, float) and not math.isfinite(v)]
+    if bad:
+        raise ValueError(f"the fit's {bad[0]} is not a finite number: the data cannot determine the parameters")
+    text = json.dumps(out, indent=2, allow_nan=False) if args.json else str(res)
+    print(text)
+    if args.out is not None:
+        atomic_write(args.out, text + "\n")
+        if not args.quiet:
+            print(f"wrote {args.out}", file=sys.stderr)
+    return 0
