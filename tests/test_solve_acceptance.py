@@ -7,7 +7,7 @@ spectral solver for the sphere, the 2D FFT solver otherwise; 1.4 times the modes
 itself is direct).  The relative difference of the force, the contact area and (sphere) the contact radius
 must lie inside the estimate that solve() states, plus the reference's own estimate.  The model that
 ``"auto"`` chooses is part of each test's id (found at collection with ``model="asymptotic"``, which
-refuses exactly where ``"auto"`` falls back to the direct solver).
+refuses exactly where ``"auto"`` goes on to the any-thickness law (T.7), then to the direct solver).
 """
 from __future__ import annotations
 
@@ -44,6 +44,10 @@ def _model(layer, punch, delta0, H) -> str:
     try:
         return tl.solve(layer, punch, delta0=delta0, H=H, mu=1.0, model="asymptotic").model
     except ValidityError:
+        pass
+    try:  # "auto" tries the any-thickness law (T.7) before the direct solver
+        return tl.solve(layer, punch, delta0=delta0, H=H, mu=1.0, model="any-thickness").model
+    except ValueError:
         return "direct"
 
 

@@ -38,7 +38,8 @@ def test_every_poisson_ratio_up_to_one_half_and_both_bases():
                       (tl.FrictionlessLayer(0.3), {}), (tl.FrictionlessLayer(), {"nu": 0.3}),
                       (tl.FrictionlessLayer(0.5), {})]:
         ans = tl.solve(layer, SPHERE, delta0=0.1, H=0.05, mu=1.0, **kw)
-        assert ans.force > 0 and ans.contact_radius > 0 and ans.model in ("compressible", "incompressible", "direct")
+        assert ans.force > 0 and ans.contact_radius > 0
+        assert ans.model in ("compressible", "incompressible", "any-thickness")
     with pytest.raises(ValueError, match="disagrees"):
         tl.solve(tl.FrictionlessLayer(0.3), SPHERE, delta0=0.1, H=0.05, mu=1.0, nu=0.4)
     with pytest.raises(ValueError, match="symbolic"):
@@ -83,12 +84,16 @@ def test_asymptotic_refuses_naming_every_model():
 
 def test_auto_says_which_model_and_why():
     ans = tl.solve(tl.BondedLayer(0.49), SPHERE, delta0=0.1, H=0.28, mu=1.0)
-    assert ans.model == "direct" and "direct:" in ans.reason
+    assert ans.model == "any-thickness" and "any-thickness: any-thickness law for the sphere" in ans.reason
     assert ans.reason.startswith("compressible: the asymptotic force")
     assert "compressible: compressible" not in ans.reason
     text = str(ans)
-    assert "direct model" in text and "force" in text and "contact radius" in text
+    assert "any-thickness model" in text and "force" in text and "contact radius" in text
     assert set(ans.as_dict()) >= {"model", "reason", "force", "contact_radius", "max_pressure", "error_estimate"}
+    # an axisymmetric quartic beyond the thick-layer series' range: the law does not cover it, the direct solver does
+    quartic = tl.Punch("x_1**4 + 2*x_1**2*x_2**2 + x_2**4")
+    ans = tl.solve(tl.BondedLayer(0.3), quartic, delta0=0.5, H=0.5, mu=1.0)
+    assert ans.model == "direct" and "any-thickness: the thick-layer expansion needs" in ans.reason
 
 
 def test_pressure_is_vectorised_and_zero_outside():
@@ -104,3 +109,20 @@ def test_pressure_is_vectorised_and_zero_outside():
 def test_2d_direct_refuses_a_grid_beyond_the_limit():
     with pytest.raises(ValidityError, match="cells to resolve H"):
         tl.solve(tl.BondedLayer(0.3), ELLIPSE, delta0=0.1, H=0.001, mu=1.0, model="direct")
+
+
+def test_half_width_is_twice_area_over_perimeter_for_elongated_contacts():
+    # H/a uses a = 2|omega|/|Gamma| (the paper's scale), not the radius of the equal-area disc
+    import mpmath
+
+    for layer, H, model in ((tl.BondedLayer(0.3), 0.02, "compressible"), (tl.BondedLayer(0.5), 0.01, "incompressible")):
+        ans = tl.solve(layer, tl.Punch.elliptic_paraboloid(40, 2.5), delta0=0.01, H=H, mu=1.0, model=model, tol=1.0)
+        a, b = ans.semi_axes
+        perimeter = mpmath.quad(lambda t: mpmath.sqrt((a * mpmath.sin(t)) ** 2 + (b * mpmath.cos(t)) ** 2),
+                                [0, mpmath.pi / 2]) * 4
+        expected = float(mpmath.pi * a * b * 2 / perimeter)
+        if model == "compressible":  # the scale of the expansion: the rigid overlap {Phi < delta0} (omega_0, Gamma_0)
+            c = tl.contact_contour(ans.punch.expr, 0.01)
+            expected = 2 * c.area / c.perimeter
+        assert ans.half_width == pytest.approx(expected, rel=1e-9)
+        assert ans.half_width < 0.9 * math.sqrt(ans.contact_area / math.pi)  # axes 4:1: ratio 0.84
