@@ -39,6 +39,8 @@ _PUBLIC = {
     **dict.fromkeys(["obstacle_problem", "regime", "thin_layer_operator", "two_term_sphere"],
                     "thinlayer.asymptotics.incompressible"),
     **dict.fromkeys(["Indentation", "solve"], "thinlayer.contact.solve"),
+    **dict.fromkeys(["any_thickness_law", "force_any_thickness"], "thinlayer.contact.any_thickness"),
+    "fit": "thinlayer.contact.fit",
     **dict.fromkeys(["solve_2d", "solve_axisymmetric"], "thinlayer.numerics"),
     **dict.fromkeys(["MissingArgumentError", "checked_lambdify"], "thinlayer.results"),
 }
@@ -58,6 +60,8 @@ __all__ = [
     "thin_layer_operator", "obstacle_problem", "two_term_sphere", "regime",
     # the user's question: force, contact size and pressure by the model that holds; the direct solvers
     "solve", "Indentation", "solve_axisymmetric", "solve_2d",
+    # any thickness (T.1)-(T.8) and fitting measured curves
+    "force_any_thickness", "any_thickness_law", "fit",
     # errors and tools
     "IncompressibleLayerError", "PunchError", "MissingArgumentError", "checked_lambdify",
     # modules

@@ -384,8 +384,48 @@ def _nearly_incompressible_result(args, punch):
         raise BadInput(f"incompressible: {exc}") from exc
 
 
+def _cmd_codegen_any_thickness(args) -> int:
+    """``codegen any-thickness``: the law (T.7) of one (nu, base) as a numpy module or a C file."""
+    from ..contact.any_thickness import any_thickness_source
+
+    langs = [x.strip() for x in args.lang.split(",") if x.strip()] if args.lang != "all" else ["python", "c"]
+    bad = [x for x in langs if x not in ("python", "c")]
+    if bad or not langs:
+        raise BadInput(f"--lang {args.lang!r}: the any-thickness law is generated in python (numpy) and c")
+    if args.nu in (None, "symbolic"):
+        raise BadInput("any-thickness: give --nu, a number in (-1, 1/2] (the law is tabulated per nu)")
+    from ..parse import parse_number
+
+    nu = float(parse_number(args.nu, "--nu"))
+    name = args.name or "thinlayer_any_thickness"
+    sources = {lang: any_thickness_source(nu, args.base, lang) for lang in langs}
+    if args.out is None:
+        if args.json:
+            _print([{"language": lang, "source": src} for lang, src in sources.items()], True)
+        else:
+            for src in sources.values():
+                print(src)
+        return EXIT_OK
+    from ..validation.output import atomic_write, output_lock, refuse_existing
+
+    out_dir = Path(args.out)
+    targets = {lang: out_dir / f"{name}.{'py' if lang == 'python' else 'c'}" for lang in langs}
+    refuse_existing(targets.values(), args.overwrite)
+    with output_lock(out_dir, name):
+        refuse_existing(targets.values(), args.overwrite)
+        written = [str(atomic_write(targets[lang], src)) for lang, src in sources.items()]
+    if args.json:
+        _print({"files": written}, True)
+    elif not args.quiet:
+        print("wrote " + ", ".join(written))
+    return EXIT_OK
+
+
 def _cmd_codegen(args) -> int:
     from .codegen import LANGUAGES, generate
+
+    if args.result == "any-thickness":
+        return _cmd_codegen_any_thickness(args)
 
     langs = list(LANGUAGES) if args.lang == "all" else [x.strip() for x in args.lang.split(",") if x.strip()]
     bad = [x for x in langs if x not in (*LANGUAGES, "matlab")]
@@ -491,8 +531,10 @@ def _add_solve(sub: Any, fmt: type) -> None:
     s.add_argument("--E", type=_finite, default=None, help="Young's modulus (> 0); or give --mu")
     s.add_argument("--delta0", type=_finite, help="indentation (> 0)")
     s.add_argument("--force", type=_finite, help="total force P instead of --delta0 (inverse problem)")
-    s.add_argument("--model", choices=("auto", "asymptotic", "compressible", "two-term", "incompressible", "direct"),
-                   default="auto", help="auto (default): the first model within --tol, else the direct solver; "
+    s.add_argument("--model", choices=("auto", "asymptotic", "compressible", "two-term", "incompressible",
+                                       "any-thickness", "direct"),
+                   default="auto", help="auto (default): the first model within --tol, then any-thickness, else the "
+                                        "direct solver; "
                                         "asymptotic: refuse instead of solving directly; or one model")
     s.add_argument("--tol", type=_tolerance, default=0.05,
                    help="largest relative error estimate accepted (default 0.05)")
@@ -520,7 +562,9 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                                    "parameters), 'incompressible' (nu = 1/2: force, contact size, pressure of "
                                    "the sphere (I.11),\nthe elliptic paraboloid (I.6)-(I.8), an axisymmetric punch "
                                    "(I.9)), 'two-term' (the sphere near nu = 1/2 (I.11);\nBessel functions: Julia "
-                                   "and Octave).\nWithout --out the code is printed. JSON keys: a list of "
+                                   "and Octave), 'any-thickness' (the sphere at any H/a (T.7), one nu: numpy module "
+                                   "or C).\n"
+                                   "Without --out the code is printed. JSON keys: a list of "
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
                        epilog="examples:\n  thinlayer codegen inner --kind elliptic_paraboloid --nu 3/10 --lang c\n"
                               "  thinlayer codegen force --kind paraboloid --lang all --out gen\n"
@@ -528,9 +572,13 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                               "  thinlayer codegen composite --kind paraboloid --param R=2 --nu 0.3 "
                               "--delta0 0.25 --H 0.02 --lang python\n"
                               "  thinlayer codegen incompressible --kind elliptic_paraboloid --lang c,python\n"
-                              "  thinlayer codegen two-term --kind paraboloid --nu 0.45 --lang julia")
-    g.add_argument("result", choices=("inner", "force", "coefficients", "composite", "incompressible", "two-term"),
+                              "  thinlayer codegen two-term --kind paraboloid --nu 0.45 --lang julia\n"
+                              "  thinlayer codegen any-thickness --nu 0.45 --lang python,c --out gen")
+    g.add_argument("result", choices=("inner", "force", "coefficients", "composite", "incompressible", "two-term",
+                                      "any-thickness"),
                    help="what to generate")
+    g.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
+                   help="base of the layer (any-thickness; default bonded)")
     g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
     g.add_argument("--out", help="write the files into this folder (created) instead of printing")
     _add_overwrite(g, help="overwrite existing files in --out (default: refuse, before anything is written)")
@@ -578,9 +626,12 @@ def build_parser() -> argparse.ArgumentParser:
                "130 Ctrl-C, 143 SIGTERM, 141 output pipe closed")
     ap.add_argument("--version", action="version", version=f"thinlayer {_version()}")
     sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
+    from .fit_cli import add_fit_parser
+
     for add in (_add_report, _add_coefficients, _add_inner, _add_solve, _add_errata, _add_codegen):
         add(sub, fmt)
     add_validate(sub, fmt)
+    add_fit_parser(sub, fmt)
     return ap
 
 
