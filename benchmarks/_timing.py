@@ -184,6 +184,19 @@ def print_summary(rows: list[Row]) -> None:
     print(", ".join(f"{n} {v}" for v, n in counts.items() if n) or "no rows")
 
 
+MARKDOWN_HEADER = ("| benchmark | measured | target | side by side (peer/this) | result |\n"
+                   "|---|---:|---|---|---|")
+
+
+def markdown_table(rows: list[Row]) -> str:
+    """The rows as a Markdown table (the README's performance table is this output of ``run.py --readme``)."""
+    lines = [MARKDOWN_HEADER]
+    for row in rows:
+        cells = (row.name, _fmt_value(row.value, row.unit), row.target, _fmt_peer(row), row.verdict())
+        lines.append("| " + " | ".join(c.replace("|", "/") for c in cells) + " |")
+    return "\n".join(lines)
+
+
 def main(run: Callable[[], list]) -> None:
     """Print one benchmark module's rows as the table of run.py."""
     print_header()

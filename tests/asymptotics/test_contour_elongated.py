@@ -15,7 +15,6 @@ arc length):
 from __future__ import annotations
 
 import math
-import time
 
 import mpmath
 import numpy as np
@@ -416,16 +415,12 @@ def test_solve_on_an_elongated_quartic():
 # bounded work
 # --------------------------------------------------------------------------------------------
 def test_elongation_costs_nothing():
-    """Aspect ratios 1, 1e6 and 1e30: the same node count, a bounded number of panels, similar time."""
-    times, nodes = [], []
+    """Aspect ratios 1, 1e6 and 1e30: the same node count, a bounded number of panels (times: bench_contour.py)."""
+    nodes = []
     for a in (1.0, 1e-12, 1e-60):
         Phi = sp.Float(a, 17) * x1**2 + x2**2
-        contact_contour(Phi, 1)
-        t = time.perf_counter()
         c = contact_contour(Phi, 1)
-        times.append(time.perf_counter() - t)
         nodes.append(len(c.nodes))
         s = np.linspace(0, c.perimeter, 10_000)
         assert np.all(np.isfinite(c.curvature(s)))
     assert nodes[1] == nodes[2] <= 2 * nodes[0]
-    assert max(times[1:]) < 10 * times[0] + 0.5

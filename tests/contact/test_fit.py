@@ -4,7 +4,6 @@ The synthetic data come from the direct solver (independent of the law being fit
 data from the law itself only where the optimiser and the standard errors are under test.
 """
 import math
-import time
 
 import numpy as np
 import pytest
@@ -100,12 +99,10 @@ def test_refusals():
         fit(dd, PP, punch=1.0, H=1.0, nu=0.3, fit_H=True)
 
 
-def test_fit_speed():
+def test_fit_of_1000_points_with_thickness_and_offset():
     rng = np.random.default_rng(0)
     d = np.linspace(-0.05, 2.0, 1000)
     P = force_any_thickness(d - 0.02, 10.0, 1.5, E=3.0, nu=0.45) + rng.normal(0, 0.01, d.size)
     fit(d, P, punch=10.0, H=1.0, nu=0.45, fit_H=True, fit_offset=True)  # the law of nu = 0.45, cached
-    t0 = time.perf_counter()
-    r = fit(d, P, punch=10.0, H=1.0, nu=0.45, fit_H=True, fit_offset=True)
-    assert time.perf_counter() - t0 < 2.0  # benchmark target 0.5 s (benchmarks/bench_any_thickness.py)
+    r = fit(d, P, punch=10.0, H=1.0, nu=0.45, fit_H=True, fit_offset=True)  # time: benchmarks/bench_any_thickness.py
     assert abs(r.E / 3.0 - 1) < 5 * r.E_se / 3.0 + 1e-3 and math.isfinite(r.H_se)

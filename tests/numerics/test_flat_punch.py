@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import math
 import os
-import time
 
 import numpy as np
 import pytest
@@ -174,23 +173,22 @@ def test_bad_inputs_one_line(call, match):
 
 
 def test_work_is_bounded_before_it_starts():
-    t0 = time.perf_counter()
     with pytest.raises(WorkLimitError, match="a_over_H = 1000 exceeds the limit 200"):
         flat_punch_kappa(BondedLayer(0.3), 1000.0)
     with pytest.raises(WorkLimitError, match="a_over_H = 100 exceeds the limit 60"):
         flat_punch_kappa(BondedLayer(0.3), 100.0, method="nystrom")
     with pytest.raises(WorkLimitError, match="n \\(nodes\\) = 5000 exceeds the limit 400"):
         flat_punch_kappa(BondedLayer(0.3), 1.0, n=5000)
-    assert time.perf_counter() - t0 < 0.5
     with pytest.raises(TypeError, match="LayerKernel"):
         flat_punch_kappa("bonded", 1.0)
 
 
-def test_speed_target():
-    """kappa to 1e-5 (here ~1e-11) in under a second for a/H <= 20 (benchmarks/bench_flat_punch.py has the timings)."""
-    t0 = time.perf_counter()
+def test_default_accuracy_at_a_over_H_20():
+    """The default nodes reach the 1e-5 target with room (the time is in benchmarks/bench_flat_punch.py)."""
     st = flat_punch_kappa(BondedLayer(0.2), 19.5)
-    assert time.perf_counter() - t0 < 1.0 and st.error < 1e-9
+    assert st.error < 1e-9
+    fine = flat_punch_kappa(BondedLayer(0.2), 19.5, n=min(2 * st.nodes, 400))  # an independent refinement
+    assert abs(fine.kappa / st.kappa - 1) < 1e-9
 
 
 # --------------------------------------------------------------------------- refinement study (slow)
