@@ -186,6 +186,10 @@ def _cmd_report(args) -> int:
     else:
         if not args.quiet:
             print(f"wrote {tex}" + (f" and {pdf}" if pdf else ""))
+            from .report import latex_available, pdf_hint
+
+            if not args.pdf and not latex_available():
+                print(pdf_hint(tex))
     return EXIT_OK
 
 
