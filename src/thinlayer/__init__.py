@@ -27,7 +27,8 @@ _PUBLIC = {
                      "IncompressibleLayerError", "LayerKernel"], "thinlayer.layers.kernels"),
     "kernel_coefficients": "thinlayer.layers.coefficients",
     "kernel_moment": "thinlayer.layers.moments",
-    **dict.fromkeys(["Punch", "PunchError"], "thinlayer.punch"),
+    **dict.fromkeys(["FlatPunch", "Punch", "PunchError"], "thinlayer.punch"),
+    "flat_punch_stiffness": "thinlayer.contact.flat_punch",
     "moment_expansion": "thinlayer.asymptotics.moment_expansion",
     "inner_pressure": "thinlayer.asymptotics.inner",
     **dict.fromkeys(["contact_contour", "ellipse_contour"], "thinlayer.asymptotics.contour"),
@@ -50,8 +51,8 @@ _MODULES = {"errata": "thinlayer.errata", "symbols": "thinlayer.symbols"}
 __all__ = [
     # layers: the kernel L(u) (2.3)-(2.4)
     "BondedLayer", "FrictionlessLayer", "HalfSpace", "IncompressibleLayer", "GenericLayer", "LayerKernel",
-    # the punch (1.1)
-    "Punch",
+    # the punch (1.1); the flat-ended cylinder (F.1)
+    "Punch", "FlatPunch",
     # the stages, in the paper's order
     "kernel_coefficients", "kernel_moment", "moment_expansion", "inner_pressure",
     "contact_contour", "ellipse_contour", "alexandrov_solution", "boundary_layer_exact",
@@ -62,6 +63,8 @@ __all__ = [
     "solve", "Indentation", "solve_axisymmetric", "solve_2d",
     # any thickness (T.1)-(T.8) and fitting measured curves
     "force_any_thickness", "any_thickness_law", "fit",
+    # the flat-ended cylinder's stiffness kappa(a/H) (F.1)-(F.19)
+    "flat_punch_stiffness",
     # errors and tools
     "IncompressibleLayerError", "PunchError", "MissingArgumentError", "checked_lambdify",
     # modules

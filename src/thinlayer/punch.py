@@ -149,6 +149,14 @@ class Punch(RichDisplay):
         return cls((S.x1**2 + S.x2**2) / (2 * r), scaling=scaling, name="paraboloid of revolution")
 
     @classmethod
+    def flat(cls, a) -> "FlatPunch":
+        """Flat-ended cylinder of radius ``a`` (not a polynomial: a :class:`FlatPunch`), (F.1).
+
+        ``thinlayer.solve`` answers it by the flat-punch models of :mod:`thinlayer.contact.flat_punch`.
+        """
+        return FlatPunch(a)
+
+    @classmethod
     def fourth_degree(cls, R=None, K=None) -> "Punch":
         """Fourth-degree paraboloid ``Phi = (x1^2 + x2^2)/(2R) + (x1^2 + x2^2)^2/K^3`` (section 5)."""
         r = sp.Symbol("R", positive=True) if R is None else as_expr(R)
@@ -222,5 +230,50 @@ class Punch(RichDisplay):
                 f"  degree {self.degree}, parameters: {pars}"]
 
 
+@dataclass(frozen=True, init=False)
+class FlatPunch(RichDisplay):
+    """A rigid flat-ended cylinder of radius ``a``: ``u3 = w0`` on the disc ``r < a``, a fixed contact (F.1).
+
+    Not a polynomial punch: the contact is the disc whatever the depth, and the pressure is singular at its
+    edge like ``(a^2 - r^2)^(-1/2)`` (F.8).  ``radius`` is a positive finite float; a string is read by the
+    restricted grammar (``"1/2"``, ``"2.5e-3"``), never evaluated.
+
+    Examples
+    --------
+    >>> from thinlayer import Punch
+    >>> Punch.flat("3/2")
+    FlatPunch: flat-ended cylinder of radius a = 1.5   (F.1)
+    """
+
+    radius: float
+    name: ClassVar[str] = "flat-ended cylinder"
+    axisymmetric: ClassVar[bool] = True
+    #: the pressure is unbounded at the edge r = a (F.8)
+    singular_edge: ClassVar[bool] = True
+
+    def __init__(self, a) -> None:
+        from .parse import parse_number
+
+        try:
+            value = float(parse_number(a, "the radius a of the flat punch"))
+        except (ValueError, TypeError) as exc:
+            raise PunchError(str(exc)) from None
+        if not (value > 0 and value < float("inf")):
+            raise PunchError(f"the radius a of the flat punch must be a positive finite number, got {a!r}")
+        object.__setattr__(self, "radius", value)
+
+    @property
+    def description(self) -> str:
+        """One phrase for result summaries."""
+        return f"flat-ended cylinder, radius a = {self.radius:.8g}"
+
+    def latex(self) -> str:
+        return rf"u_3 = w_0 \ 	ext{{on}}\ r < a,\quad a = {self.radius:.8g} 	ag{{F.1}}"
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return [f"FlatPunch: flat-ended cylinder of radius a = {self.radius:.8g}   (F.1)"]
+
+
 # re-exported helper, used by the inner expansion
-__all__ = ["Punch", "PunchError", "laplacian"]
+__all__ = ["FlatPunch", "Punch", "PunchError", "laplacian"]

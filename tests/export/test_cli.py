@@ -199,3 +199,28 @@ def test_report_without_latex_prints_how_to_get_the_pdf(tmp_path, monkeypatch, c
     assert len(out) == 2 and out[0].startswith("wrote ") and out[1].startswith("no PDF: pdflatex is not installed")
     assert _main(["report", "sphere", "--out", str(tmp_path / "b"), "--quiet"]) == 0
     assert capsys.readouterr().out == ""
+
+
+def test_flat_punch_commands(capsys):
+    # issue 14 item 5: kappa over a/H from the command line, and solve --flat; kappa(a/H) -> 1 (Boussinesq) as
+    # a/H -> 0, the exact model's value agrees with the thin-layer law inside the law's estimate at a/H = 50
+    import json as _json
+
+    from thinlayer.export.cli import main as _main
+
+    assert _main(["flat-punch", "--a-over-H", "1e-4", "50", "--nu", "3/10", "--model", "exact", "--json"]) == 0
+    rows = _json.loads(capsys.readouterr().out)["rows"]
+    assert abs(rows[0]["kappa"] - 1) < 1e-3 and rows[0]["model"] == "exact"
+    assert _main(["flat-punch", "--a-over-H", "50", "--nu", "0.3", "--model", "thin", "--json"]) == 0
+    thin = _json.loads(capsys.readouterr().out)["rows"][0]
+    assert abs(thin["kappa"] / rows[1]["kappa"] - 1) <= thin["error_estimate"]
+    assert _main(["solve", "--flat", "2", "--nu", "0.3", "--delta0", "0.01", "--H", "1e6", "--mu", "1", "--json"]) == 0
+    out = _json.loads(capsys.readouterr().out)
+    assert abs(out["force"] / (4 * 2 * 0.01 / 0.7) - 1) < 1e-5 and out["max_pressure"] is None
+    for argv in (["flat-punch", "--a-over-H", "0", "--nu", "0.3"], ["flat-punch", "--a-over-H", "1", "--nu", "0.7"],
+                 ["solve", "--flat", "-1", "--nu", "0.3", "--delta0", "0.01", "--H", "0.5", "--mu", "1"],
+                 ["solve", "--flat", "1", "--kind", "paraboloid", "--nu", "0.3", "--delta0", "0.01", "--H", "0.5",
+                  "--mu", "1"]):
+        assert _main(argv) == 2, argv
+        err = capsys.readouterr().err
+        assert len(err.strip().splitlines()) == 1 and "Traceback" not in err

@@ -17,6 +17,7 @@ r"""Flat-ended cylindrical punch: the stiffness ``kappa(a/H)`` by the model that
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -26,9 +27,10 @@ from .._checks import check_bounded, check_choice, parse_nu, positive
 from ..asymptotics.flat_punch import thick_flat_punch, thin_flat_punch
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
-from ..numerics.flat_punch import MAX_A_OVER_H, check_numeric_layer, flat_punch_kappa
+from ..numerics.flat_punch import MAX_A_OVER_H, check_numeric_layer, flat_punch_kappa, solve_flat_punch
 
-__all__ = ["FLAT_PUNCH_MODELS", "FlatPunchResult", "flat_punch_contact", "flat_punch_stiffness"]
+__all__ = ["FLAT_PUNCH_MODELS", "FlatPunchResult", "flat_punch_contact", "flat_punch_fields", "flat_punch_stiffness",
+           "stiffness_table"]
 
 #: the values of ``model``
 FLAT_PUNCH_MODELS = ("exact", "thin", "thick", "auto")
@@ -132,6 +134,18 @@ def _models(layer: LayerKernel, x: np.ndarray, model: str,
         k, e = _exact(layer, x[rest])
         kappa[rest], est[rest], which[rest] = k, e, 0
     return kappa, est, which
+
+
+def stiffness_table(layer: LayerKernel, a_over_H: Any, model: str = "auto", *,
+                    max_error: float = 1e-2) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """``(kappa, estimate, model used)`` for every value of ``a_over_H`` (arrays; see :func:`flat_punch_stiffness`)."""
+    layer = check_numeric_layer(layer)
+    model = check_choice(model, FLAT_PUNCH_MODELS, "model")
+    tol = _check_max_error(max_error)
+    x, _ = _as_ratios(a_over_H, MAX_EXACT_POINTS if model in ("exact", "auto") else MAX_POINTS)
+    x = np.atleast_1d(x)
+    kappa, est, which = _models(layer, x, model, tol)
+    return kappa, est, [FLAT_PUNCH_MODELS[int(w)] for w in which.ravel()]
 
 
 def flat_punch_stiffness(layer: LayerKernel, a_over_H: Any, model: str = "exact", *,
@@ -286,3 +300,78 @@ def flat_punch_contact(layer: LayerKernel, radius: float, H: float, *, w0: float
         P = positive(force, "force")
         w = P / (factor * k)
     return FlatPunchResult(layer, FLAT_PUNCH_MODELS[int(which)], a, Hv, mu_v, nu_v, w, P, k, float(est))
+
+
+# =============================================================================================
+# the flat punch at the front door: thinlayer.solve(layer, Punch.flat(a), ...)
+# =============================================================================================
+#: the name of each flat-punch model in an Indentation, and its equations (force, contact size)
+SOLVE_NAMES = {"exact": "direct", "thin": "thin-layer", "thick": "thick-layer"}
+EQUATIONS = {"direct": ("F.1, F.6-F.7", "F.1"), "thin-layer": ("F.1, F.10-F.16", "F.1"),
+             "thick-layer": ("F.1, F.18-F.19", "F.1")}
+
+
+class _FlatPressure:
+    """The contact pressure (F.8) from the exact solution, computed on first use (the laws give kappa only)."""
+
+    def __init__(self, layer, a: float, H: float, w0: float, mu: float, nu: float, n: int | None = None):
+        self.args = (layer, a, H, w0, mu, nu, n)
+        self.contact = None
+
+    def __call__(self, x1: np.ndarray, x2: np.ndarray) -> np.ndarray:
+        layer, a, H, w0, mu, nu, n = self.args
+        if self.contact is None:
+            self.contact = solve_flat_punch(layer, a, H, w0=w0, mu=mu, nu=nu if layer.numeric_nu is None else None,
+                                            n=n)
+        return self.contact.pressure_at(np.hypot(x1, x2))
+
+
+def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | None, force: float | None,
+                      mu: float, nu: float, choice: str, tol: float, n: int | None = None) -> dict[str, Any]:
+    """The flat punch's answer as the fields of :class:`~thinlayer.contact.solve.Indentation` (F.1).
+
+    ``choice`` is ``solve()``'s model: ``"auto"`` (the thick series, then the thin-layer law, within ``tol``,
+    else the exact solution), ``"asymptotic"`` (the same, refusing instead of the exact solution), or
+    ``"direct"``/``"any-thickness"`` (the exact Fredholm solution (F.6)-(F.7), any ``a/H <= 200``).  The contact is
+    the disc (its area and radius are exact); the pressure comes from the exact solution on first use.
+    """
+    nv = float(nu)
+    if layer.base == "frictionless" and layer.numeric_nu is None:
+        from ..layers.kernels import FrictionlessLayer
+
+        layer = FrictionlessLayer(nv)
+    if choice in ("compressible", "two-term", "incompressible"):
+        raise ValueError(f"model={choice!r} is a model of smooth punches; for the flat punch the thin-layer law "
+                         "(F.10)-(F.16) covers every nu: use model='auto', 'asymptotic', 'any-thickness' or 'direct'")
+    x = np.asarray(radius / H)
+    if choice == "asymptotic":
+        try:
+            kappa, est, which = _models(layer, x, "thick", tol)
+        except ValueError:
+            kappa, est, which = _models(layer, x, "thin", tol)  # refuses in one line beyond tol
+    elif choice == "auto":
+        kappa, est, which = _models(layer, x, "auto", tol)
+    elif n is not None:
+        st = flat_punch_kappa(layer, float(x), n)
+        kappa, est, which = np.asarray(st.kappa), np.asarray(st.error), np.asarray(0)
+    else:
+        kappa, est, which = _models(layer, x, "exact", tol)
+    model = SOLVE_NAMES[FLAT_PUNCH_MODELS[int(which)]]
+    k, e = float(kappa), max(float(est), 1e-16)
+    factor = 4.0 * mu * radius / (1.0 - nv)  # P = factor w0 kappa (F.1)
+    if w0 is not None:
+        w, P = w0, factor * w0 * k
+    else:
+        P, w = force, force / (factor * k)
+    if not (math.isfinite(P) and P > 0 and math.isfinite(w) and w > 0):
+        raise ValueError(f"the flat punch's force {P:.4g} at depth {w:.4g} is outside the double range: "
+                         "express mu and the force in other units")
+    why = {"direct": f"exact kappa(a/H = {float(x):.4g}) = {k:.10g} from the Fredholm equation (F.6)-(F.7)",
+           "thin-layer": f"thin-layer law (F.10)-(F.16) at a/H = {float(x):.4g}, estimate (F.16) {e:.2g}",
+           "thick-layer": f"thick-layer series (F.18) at a/H = {float(x):.4g}, estimate (F.19) {e:.2g}"}[model]
+    area = math.pi * radius * radius
+    return dict(layer=layer, punch=None, delta0=w, force=P, H=H, mu=mu, nu=nv, contact_area=area,
+                contact_radius=radius, semi_axes=None, model=model, reason=why,
+                error_estimate={"force": e, "contact_area": 0.0, "contact_radius": 0.0}, tol=tol,
+                detail=FlatPunchResult(layer, FLAT_PUNCH_MODELS[int(which)], radius, H, mu, nv, w, P, k, e),
+                _pressure=_FlatPressure(layer, radius, H, w, mu, nv, n), _extent=1.2 * radius)

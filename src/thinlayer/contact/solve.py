@@ -56,7 +56,7 @@ from ..asymptotics.incompressible import (
 from ..asymptotics.solution import DEFAULT_TOL, ValidityError, compressible_solution, numeric_punch
 from ..display import RichDisplay
 from ..layers.kernels import IncompressibleLayer, LayerKernel
-from ..punch import Punch
+from ..punch import FlatPunch, Punch
 
 __all__ = ["Indentation", "DirectComparison", "MODELS", "solve", "ELASTIC_HINT"]
 
@@ -182,9 +182,14 @@ class Indentation(RichDisplay):
 
     @cached_property
     def max_pressure(self) -> float:
-        """The largest contact pressure: sampled on a 161 x 161 grid over the contact, then polished locally."""
+        """The largest contact pressure: sampled on a 161 x 161 grid over the contact, then polished locally.
+
+        ``inf`` for the flat punch, whose pressure is singular at the edge (F.8).
+        """
         from scipy import optimize
 
+        if getattr(self.punch, "singular_edge", False):
+            return math.inf
         w = self._extent
         g = np.linspace(-w, w, 161)
         X1, X2 = np.meshgrid(g, g, indexing="ij")
@@ -202,6 +207,14 @@ class Indentation(RichDisplay):
         ``"direct"``, the comparison is with a refined direct solution (1.4 times the modes or cells).
         """
         refine = self.model == "direct"
+        if isinstance(self.punch, FlatPunch):  # the exact solution, refined when this answer is itself exact
+            n = options.get("n")
+            if n is None and refine:
+                from ..numerics.flat_punch import flat_punch_kappa
+
+                n = min(int(1.4 * flat_punch_kappa(self.layer, self.H_over_a ** -1, error_estimate=False).nodes), 400)
+            other = _flat(self.layer, self.punch, self.delta0, None, self.H, self.mu, self.nu, "direct", math.inf, n)
+            return DirectComparison(self, other)
         other = _direct(self.layer, self.punch, self.delta0, self.H, self.mu, self.nu, refine=refine,
                         previous=self.detail if refine else None, **options)
         return DirectComparison(self, other)
@@ -212,7 +225,8 @@ class Indentation(RichDisplay):
         est = self.error_estimate
         base = "" if self.layer.base == "bonded" else ", frictionless base"
         lines = [
-            f"Indentation ({self.model} model): {self.punch.name} Phi = {self.punch.expr}",
+            f"Indentation ({self.model} model): "
+            + getattr(self.punch, "description", f"{self.punch.name} Phi = {getattr(self.punch, 'expr', '')}"),
             f"  layer nu = {self.nu:.6g}{base}, H = {self.H:.6g}, mu = {self.mu:.6g} (E = {self.E:.6g}), "
             f"delta0 = {self.delta0:.8g}, H/a = {self.H_over_a:.3g}",
             f"  force           P = {self.force:.8g}   (+- {100 * est['force']:.2g} %)",
@@ -231,10 +245,14 @@ class Indentation(RichDisplay):
         """The equations of the force and of the contact size in the model used."""
         if self.model == "compressible":
             return "1.8", "3.25"
-        if self.model == "direct":
+        if self.model == "direct" and not isinstance(self.punch, FlatPunch):
             return "1.5-1.8", "1.5-1.8"
         if self.model == "any-thickness":
             return "T.7", "T.7"
+        if isinstance(self.punch, FlatPunch):
+            from .flat_punch import EQUATIONS
+
+            return EQUATIONS[self.model]
         if self.model == "two-term" or self.contact_radius is not None and self.semi_axes is None:
             return ("I.11", "I.12") if self.punch.name.startswith("paraboloid") else ("I.9", "I.12")
         return "I.8", "I.7"
@@ -254,7 +272,8 @@ class Indentation(RichDisplay):
         """The numbers as a JSON-ready dictionary."""
         return {"model": self.model, "reason": self.reason, "force": self.force, "delta0": self.delta0,
                 "contact_area": self.contact_area, "contact_radius": self.contact_radius,
-                "semi_axes": list(self.semi_axes) if self.semi_axes else None, "max_pressure": self.max_pressure,
+                "semi_axes": list(self.semi_axes) if self.semi_axes else None,
+                "max_pressure": self.max_pressure if math.isfinite(self.max_pressure) else None,
                 "H": self.H, "mu": self.mu, "E": self.E, "nu": self.nu, "H_over_a": self.H_over_a,
                 "error_estimate": dict(self.error_estimate), "tol": self.tol}
 
@@ -697,11 +716,16 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         raise TypeError("solve() needs the layer thickness H")
     HH = positive(H, "H")
     tol_v = _tol(tol)
-    pn = numeric_punch(punch, parameters)
     if (delta0 is None) == (force is None):
         raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     d0 = positive(delta0, "delta0") if delta0 is not None else None
     Pt = positive(force, "force") if force is not None else None
+    if isinstance(punch, FlatPunch):  # not a polynomial: the flat-punch models (F.1)-(F.19)
+        if options or parameters:
+            raise TypeError("the flat punch takes no parameters or options, got "
+                            f"{sorted({**(parameters or {}), **options})}")
+        return _flat(layer, punch, d0, Pt, HH, mm, nu_v, choice, tol_v, n)
+    pn = numeric_punch(punch, parameters)
     shape = _shape(pn)
     if layer.numeric_nu is None:
         layer = type(layer)(nu_v) if layer.base == "frictionless" else layer
@@ -770,6 +794,23 @@ def _asymptotic(name, layer, punch, shape, d0, Pt, H, mu, nu, tol, options) -> I
         raise ValidityError(f"solve(): the {name} model's force {ans.force:.4g} is not a positive finite number",
                             "force", math.inf, tol, "direct")
     return ans
+
+
+def _flat(layer, punch, d0, Pt, H, mu, nu, choice, tol, n=None) -> Indentation:
+    """The flat-ended cylinder (F.1): exact Fredholm solution, thin-layer law or thick series."""
+    from .flat_punch import flat_punch_fields
+
+    if nu == 0.5 and layer.base == "bonded" and layer.has_compressible_expansion:
+        layer = IncompressibleLayer()
+    try:
+        fields = flat_punch_fields(layer, punch.radius, H, d0, Pt, mu, nu, choice, tol, n)
+    except ValueError as exc:
+        if choice == "asymptotic" or "max_error" in str(exc):
+            raise ValidityError(f"solve(): {exc}".replace("max_error", "tol"), "force", math.inf, tol,
+                                "direct") from None
+        raise
+    fields["punch"] = punch
+    return Indentation(**fields)
 
 
 def _any_thickness(layer, punch, d0, Pt, H, mu, nu, tol) -> Indentation:

@@ -246,7 +246,14 @@ def _cmd_solve(args) -> int:
     from ..contact.solve import solve
 
     layer = _solve_layer(args.layer, args.nu)
-    punch = _punch(args)
+    if args.flat is not None:
+        from ..punch import FlatPunch
+
+        if args.kind is not None or args.punch is not None or args.param:
+            raise BadInput("--flat A is the flat-ended cylinder of radius A: leave out --kind, --punch and --param")
+        punch = FlatPunch(args.flat)
+    else:
+        punch = _punch(args)
     if (args.delta0 is None) == (args.force is None):
         raise BadInput("give exactly one of --delta0 (indentation) and --force (total force P)")
     if (args.mu is None) == (args.E is None):
@@ -526,7 +533,8 @@ def _add_solve(sub: Any, fmt: type) -> None:
                                    "remainder.",
                        epilog="examples:\n  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 "
                               "--H 0.1 --E 2 --json\n  thinlayer solve --layer frictionless --nu 0.5 --punch "
-                              "'x_1**2/8 + x_2**2/2' --force 100 --H 0.05 --mu 1")
+                              "'x_1**2/8 + x_2**2/2' --force 100 --H 0.05 --mu 1\n"
+                              "  thinlayer solve --flat 1 --nu 0.3 --delta0 0.01 --H 0.5 --E 2.6")
     s.add_argument("--layer", choices=("bonded", "frictionless"), default="bonded",
                    help="the base under the layer: bonded (default) or frictionless")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
@@ -544,6 +552,8 @@ def _add_solve(sub: Any, fmt: type) -> None:
                    help="largest relative error estimate accepted (default 0.05)")
     s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
                    help="boundary layer of the compressible model's composite pressure (default exact)")
+    s.add_argument("--flat", type=_finite, metavar="A",
+                   help="a flat-ended cylinder of radius A instead of --kind/--punch (--delta0 is its depth w0)")
     _add_punch_args(s)
     _add_output_args(s)
     s.set_defaults(func=_cmd_solve)
@@ -631,11 +641,13 @@ def build_parser() -> argparse.ArgumentParser:
     ap.add_argument("--version", action="version", version=f"thinlayer {_version()}")
     sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
     from .fit_cli import add_fit_parser
+    from .flat_cli import add_flat_parser
 
     for add in (_add_report, _add_coefficients, _add_inner, _add_solve, _add_errata, _add_codegen):
         add(sub, fmt)
     add_validate(sub, fmt)
     add_fit_parser(sub, fmt)
+    add_flat_parser(sub, fmt)
     return ap
 
 
