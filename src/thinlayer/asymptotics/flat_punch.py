@@ -378,6 +378,29 @@ class ThinFlatPunch(RichDisplay):
         return (rf"\kappa \simeq \frac{{\pi (\lambda + {self.h_model:.6g})^4}}{{32 \cdot {self.c1:.6g}\,\lambda}}"
                 rf"\,\psi\!\left(\frac{{\lambda + {self.h_model:.6g}}}{{{math.sqrt(self.m1):.6g}}}\right) \tag{{F.15}}")
 
+    codegen_name = "flat_punch_kappa_thin"
+
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``(arguments, outputs)`` for code generation: ``kappa(a_over_H)`` of :meth:`resummed` ((F.12), (F.15)
+        with Bessel functions, (F.14)) and its ``error_estimate`` (F.16), with this layer's numbers as floats.
+        """
+        x = sp.Symbol("a_over_H", positive=True)
+        f = lambda v: sp.Float(v, 17)  # noqa: E731 - the layer's numbers, to double precision
+        inc = f(2.5) / x**2
+        if self.regime == "incompressible":
+            return (x,), {"kappa": sp.pi * (x + f(self.h)) ** 4 / (32 * f(self.c1) * x), "error_estimate": inc}
+        if self.regime == "compressible":
+            kappa = sp.pi * (x + f(self.h)) ** 2 / (4 * f(self.A) * x)
+            hs = self.h
+        else:  # (F.15): psi(z) = 8 (1 - 2 I_1(z)/(z I_0(z)))/z^2
+            xe = x + f(self.h_model)
+            z = xe / f(math.sqrt(self.m1))
+            psi_z = 8 * (1 - 2 * sp.besseli(1, z) / (z * sp.besseli(0, z))) / z**2
+            kappa = sp.pi * xe**4 * psi_z / (32 * f(self.c1) * x)
+            hs = self.h_model - math.sqrt(self.m1)
+        cubic = f(abs(self.m1) + hs * hs + 0.02) / x**3
+        return (x,), {"kappa": kappa, "error_estimate": sp.Piecewise((cubic, cubic < inc), (inc, True))}  # the min
+
     def text_lines(self) -> list[str]:
         lines = [f"ThinFlatPunch: {self.layer}, {self.regime}   (F.10)-(F.16)"]
         if self.regime != "incompressible":
@@ -552,6 +575,19 @@ class ThickFlatPunch(RichDisplay):
         xs = np.minimum(x, THICK_LIMIT)  # beyond the limit the estimate is inf (and the polynomial not evaluated)
         est = (np.abs(c[N] * xs**N) + np.abs(c[N - 1] * xs ** (N - 1))) / np.abs(self(xs))
         return np.where(x < THICK_LIMIT, est, np.inf)
+
+    codegen_name = "flat_punch_kappa_thick"
+
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``(arguments, outputs)`` for code generation: ``kappa(a_over_H)`` (F.18) and its ``error_estimate`` (F.19),
+        which is 1 (no accuracy) from ``a/H = 0.8`` on, where the series is not used.
+        """
+        x = sp.Symbol("a_over_H", positive=True)
+        c = [sp.Float(v, 17) for v in self.coefficients]
+        kappa = sp.Add(*[ck * x**k for k, ck in enumerate(c)])
+        N = self.order
+        est = (sp.Abs(c[N] * x**N) + sp.Abs(c[N - 1] * x ** (N - 1))) / sp.Abs(kappa)
+        return (x,), {"kappa": kappa, "error_estimate": sp.Piecewise((est, x < THICK_LIMIT), (1, True))}
 
     def latex(self) -> str:
         terms = " + ".join([f"{self.coefficients[k]:.6g}\\,\\lambda^{{{k}}}" for k in range(1, min(self.order, 4) + 1)])

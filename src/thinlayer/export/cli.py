@@ -333,7 +333,7 @@ def _codegen_result(args):
         if args.nu not in (None, "symbolic"):
             raise BadInput("coefficients are generated as functions of nu: leave out --nu")
         return kernel_coefficients(_layer("symbolic"), args.order or 3)
-    punch = _punch(args)
+    punch = _punch(args) if args.result != "flat-punch" else None
     if args.result == "inner":
         from ..asymptotics.inner import inner_pressure
 
@@ -348,6 +348,8 @@ def _codegen_result(args):
         return force_law(_layer(args.nu or "symbolic"), punch)
     if args.result in ("incompressible", "two-term"):
         return _nearly_incompressible_result(args, punch)
+    if args.result == "flat-punch":
+        return _flat_punch_law(args)
     from ..asymptotics.solution import compressible_solution as solve  # composite: numeric parameters
 
     if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
@@ -355,6 +357,16 @@ def _codegen_result(args):
     sol = solve(_layer(args.nu), punch, delta0=args.delta0, H=args.H, mu=args.mu,
                 parameters=_params(args.param), boundary_layer="alexandrov")
     return sol.composite
+
+
+def _flat_punch_law(args):
+    """``codegen flat-punch``: kappa(a/H) and its estimate of one layer, thin-layer law or thick series."""
+    from ..asymptotics.flat_punch import thick_flat_punch, thin_flat_punch
+
+    if args.nu in (None, "symbolic") and args.base == "bonded":
+        raise BadInput("flat-punch: give --nu (the laws are generated for one layer), or --base frictionless")
+    layer = _solve_layer(args.base, args.nu if args.nu not in (None, "symbolic") else "0")
+    return thin_flat_punch(layer) if args.law == "thin" else thick_flat_punch(layer)
 
 
 def _nearly_incompressible_result(args, punch):
@@ -577,7 +589,7 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                                    "the sphere (I.11),\nthe elliptic paraboloid (I.6)-(I.8), an axisymmetric punch "
                                    "(I.9)), 'two-term' (the sphere near nu = 1/2 (I.11);\nBessel functions: Julia "
                                    "and Octave), 'any-thickness' (the sphere at any H/a (T.7), one nu: numpy module "
-                                   "or C).\n"
+                                   "or C), 'flat-punch' (kappa(a/H) of a flat punch, --law thin|thick, one nu).\n"
                                    "Without --out the code is printed. JSON keys: a list of "
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
                        epilog="examples:\n  thinlayer codegen inner --kind elliptic_paraboloid --nu 3/10 --lang c\n"
@@ -589,8 +601,10 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                               "  thinlayer codegen two-term --kind paraboloid --nu 0.45 --lang julia\n"
                               "  thinlayer codegen any-thickness --nu 0.45 --lang python,c --out gen")
     g.add_argument("result", choices=("inner", "force", "coefficients", "composite", "incompressible", "two-term",
-                                      "any-thickness"),
+                                      "any-thickness", "flat-punch"),
                    help="what to generate")
+    g.add_argument("--law", choices=("thin", "thick"), default="thin",
+                   help="flat-punch: the thin-layer law (F.12)-(F.16) or the thick series (F.18) (default thin)")
     g.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
                    help="base of the layer (any-thickness; default bonded)")
     g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")

@@ -39,6 +39,7 @@ class Derivation:
     contact: dict | None = None
     validation: dict | None = None
     units: dict | None = None
+    flat_punch: dict | None = None
 
 
 #: the schema: table -> {key: (python types, what is valid)}; any other key is an error
@@ -48,14 +49,18 @@ SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
     "layer": {"model": ((str,), "'bonded' or 'frictionless'"),
               "nu": ((str, int, float), "'symbolic', an exact string like '3/10' or a number")},
     "coefficients": {"order": ((int,), "an integer from 1 to 30")},
-    "punch": {"kind": ((str,), "a catalogue name"), "expr": ((str,), "a polynomial in x_1, x_2 as a string")},
+    "punch": {"kind": ((str,), "a catalogue name, or 'flat' (a flat-ended cylinder, with [flat_punch])"),
+              "expr": ((str,), "a polynomial in x_1, x_2 as a string")},
+    "flat_punch": {"a_over_H": ((list,), "a list of punch radius over thickness values in (0, 200]"),
+                   "nu": ((list,), "a list of Poisson ratios in (-1, 1/2] (columns of the table)")},
     "inner": {"order": ((int,), "a positive integer (number of terms)")},
     "edge_shift": {"nu": ((list,), "a list of numbers in (-1, 1/2)")},
     "contact": {"delta0": ((int, float), "a number > 0"), "force": ((int, float), "a number > 0"),
                 "H": ((int, float), "a number > 0"), "mu": ((int, float), "a number > 0 (shear modulus)"),
                 "E": ((int, float), "a number > 0 (Young's modulus)"),
                 "nu": ((int, float), "a number in (-1, 1/2]"),
-                "model": ((str,), "'auto', 'asymptotic', 'compressible', 'two-term', 'incompressible' or 'direct'"),
+                "model": ((str,), "'auto', 'asymptotic', 'compressible', 'two-term', 'incompressible', "
+                                  "'any-thickness' or 'direct'"),
                 "tol": ((int, float), "a relative tolerance > 0, e.g. 0.05"),
                 "parameters": ((dict,), "a table of numbers, e.g. {R_1 = 4, R_2 = 1}")},
     "validation": {"nu": ((list,), "a list of Poisson ratios"), "H_over_a": ((list,), "a list of H/a values"),
@@ -267,13 +272,39 @@ _KINDS = {"elliptic_paraboloid": Punch.elliptic_paraboloid, "paraboloid": Punch.
           "fourth_degree": Punch.fourth_degree}
 
 
-def _punch_table(pu: dict) -> Punch:
-    """The punch of ``[punch]``: a catalogue ``kind`` or a polynomial ``expr``; its symbol names checked."""
+#: the default table of [flat_punch]: a/H from thick to thin, nu from 0 to incompressible
+FLAT_DEFAULT = {"a_over_H": [0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0], "nu": [0.0, 0.3, 0.45, 0.5]}
+
+
+def _flat_table(ft: Any, needed: bool) -> dict | None:
+    """``[flat_punch]``: the a/H values (<= 30, in (0, 200]) and the nu values (<= 8, in (-1, 1/2]) of the table."""
+    if ft is None:
+        return dict(FLAT_DEFAULT) if needed else None
+    out = {}
+    for key, lo, hi, most, closed in (("a_over_H", 0.0, 200.0, 30, True), ("nu", -1.0, 0.5, 8, True)):
+        vals = ft.get(key, FLAT_DEFAULT[key])
+        ok = (0 < len(vals) <= most and all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                                and lo < v <= hi for v in vals))
+        if not ok:
+            raise DerivationFileError(f"[flat_punch] {key} = {_short(vals)}: a list of 1 to {most} numbers in "
+                                      f"({lo:g}, {hi:g}]")
+        out[key] = [float(v) for v in vals]
+    return out
+
+
+def _punch_table(pu: dict) -> Punch | None:
+    """The punch of ``[punch]``: a catalogue ``kind`` or a polynomial ``expr``; its symbol names checked.
+
+    ``kind = "flat"`` (the flat-ended cylinder) gives ``None``: its report is the section of ``[flat_punch]``.
+    """
     if ("kind" in pu) == ("expr" in pu):
         raise DerivationFileError("[punch] needs exactly one of 'kind' (a catalogue punch) or 'expr' (a polynomial)")
+    if pu.get("kind") == "flat":
+        return None
     if "kind" in pu:
         if pu["kind"] not in _KINDS:
-            raise DerivationFileError(f"[punch] kind = {_short(pu['kind'])}: valid kinds are {sorted(_KINDS)}")
+            raise DerivationFileError(f"[punch] kind = {_short(pu['kind'])}: valid kinds are "
+                                      f"{sorted([*_KINDS, 'flat'])}")
         punch = _KINDS[pu["kind"]]()
     else:
         try:
@@ -433,10 +464,16 @@ def _load(path: Path) -> Derivation:
     if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and -1 < v < 0.5 for v in es) or len(es) > 50:
         raise DerivationFileError(f"[edge_shift] nu = {_short(es)}: a list of at most 50 numbers in (-1, 1/2)")
     layer_nu = data["layer"].get("nu")
+    if punch is None:
+        extra = [t for t in ("inner", "contact", "validation") if t in data]
+        if extra:
+            raise DerivationFileError(f"[{extra[0]}] is for a polynomial punch; with [punch] kind = 'flat' the report "
+                                      "is the table of [flat_punch] (thinlayer solve --flat for one contact)")
     contact = _contact_table(data.get("contact"), layer, punch, None if layer_nu == "symbolic" else layer_nu)
     validation = _validation_table(data.get("validation"))
     units = _units_table(data.get("units"))
-    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation, units)
+    flat = _flat_table(data.get("flat_punch"), punch is None)
+    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation, units, flat)
 
 
 def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: bool = False) -> str:
@@ -463,7 +500,8 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: b
     """
     from .report import derivation_document
 
-    check_symbol_names((q.name for q in der.punch.expr.free_symbols), "punch")
+    if der.punch is not None:
+        check_symbol_names((q.name for q in der.punch.expr.free_symbols), "punch")
     return derivation_document(der, figure_dir, force)
 
 

@@ -494,7 +494,9 @@ def derivation_document(der: Any, figure_dir: str | Path | None = None, force: b
         r"of that paper; (I.$n$) numbers the incompressible-layer extension of \texttt{thinlayer}. Every "
         r"formula is derived here, not copied: where the printed paper differs, the section Errata says so.")
     _kernel_part(doc, der)
-    if layer.base == "bonded" and not layer.has_compressible_expansion:
+    if der.punch is None:  # the flat-ended cylinder: its own section below
+        pass
+    elif layer.base == "bonded" and not layer.has_compressible_expansion:
         _incompressible_part(doc, der)
     else:
         _inner_part(doc, der)
@@ -506,6 +508,10 @@ def derivation_document(der: Any, figure_dir: str | Path | None = None, force: b
         _contact_part(doc, der)
     if der.validation is not None:
         _validation_part(doc, der.validation, figure_dir, force)
+    if getattr(der, "flat_punch", None) is not None:
+        from ._flat_section import flat_punch_part
+
+        flat_punch_part(doc, layer, der.flat_punch)
     errata_section(doc)
     return doc.latex()
 
