@@ -65,3 +65,34 @@ def test_cli_codegen_flat_punch(capsys):
     assert "flat_punch_kappa_thick" in capsys.readouterr().out
     assert main(["codegen", "flat-punch", "--lang", "c"]) == 2
     assert "give --nu" in capsys.readouterr().err
+
+
+def test_any_thickness_table_python_and_c_against_the_exact_solution(tmp_path):
+    # issue 15 item 3 for the flat punch: the exact kappa tabulated (F.6)-(F.7), checked half-way between nodes
+    import ctypes
+    import shutil
+    import subprocess
+
+    from thinlayer.contact.flat_punch import SOURCE_POINTS, SOURCE_RANGE, flat_punch_source
+    from thinlayer.numerics.flat_punch import flat_punch_kappa
+
+    layer = tl.BondedLayer(0.45)
+    grid = np.exp(np.linspace(np.log(SOURCE_RANGE[0]), np.log(SOURCE_RANGE[1]), SOURCE_POINTS))
+    mids = np.sqrt(grid[1:] * grid[:-1])[::9]
+    exact = np.array([flat_punch_kappa(layer, float(x)).kappa for x in mids])
+    ns: dict = {}
+    exec(compile(flat_punch_source(layer, "python"), "<generated>", "exec"), ns)
+    assert np.max(np.abs(ns["kappa"](mids) / exact - 1)) < 2e-7
+    assert np.isnan(ns["kappa"](250.0)) and np.isnan(ns["kappa"](-1.0))
+    small = flat_punch_kappa(layer, 2e-4).kappa  # below the table: the thick series (F.18)
+    assert abs(ns["kappa"](2e-4) / small - 1) < 1e-12
+    gcc = shutil.which("gcc")
+    if gcc is None:
+        pytest.skip("gcc not found: apt-get install gcc to compile the generated C")
+    (tmp_path / "k.c").write_text(flat_punch_source(layer, "c"))
+    lib = tmp_path / "libk.so"
+    subprocess.run([gcc, "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-O2", "-fPIC", "-shared", "-o",
+                    str(lib), str(tmp_path / "k.c"), "-lm"], check=True, capture_output=True)
+    f = ctypes.CDLL(str(lib)).thinlayer_flat_punch_kappa
+    f.restype, f.argtypes = ctypes.c_double, [ctypes.c_double]
+    np.testing.assert_allclose([f(float(x)) for x in mids], ns["kappa"](mids), rtol=1e-14)

@@ -408,20 +408,33 @@ def _nearly_incompressible_result(args, punch):
 
 
 def _cmd_codegen_any_thickness(args) -> int:
-    """``codegen any-thickness``: the law (T.7) of one (nu, base) as a numpy module or a C file."""
-    from ..contact.any_thickness import any_thickness_source
+    """``codegen any-thickness`` (the sphere's law (T.7)) or ``codegen flat-punch --law any-thickness`` (the
+    flat punch's exact kappa, tabulated) of one (nu, base) as a numpy module or a C file.
+    """
+    from ..parse import parse_number
 
     langs = [x.strip() for x in args.lang.split(",") if x.strip()] if args.lang != "all" else ["python", "c"]
     bad = [x for x in langs if x not in ("python", "c")]
     if bad or not langs:
-        raise BadInput(f"--lang {args.lang!r}: the any-thickness law is generated in python (numpy) and c")
-    if args.nu in (None, "symbolic"):
-        raise BadInput("any-thickness: give --nu, a number in (-1, 1/2] (the law is tabulated per nu)")
-    from ..parse import parse_number
+        raise BadInput(f"--lang {args.lang!r}: the any-thickness laws are generated in python (numpy) and c")
+    flat = args.result == "flat-punch"
+    if args.nu in (None, "symbolic") and not (flat and args.base == "frictionless"):
+        raise BadInput(f"{args.result}: give --nu, a number in (-1, 1/2] (the law is tabulated per nu)")
+    if flat:
+        from ..contact.flat_punch import flat_punch_source
+        from ..layers.kernels import IncompressibleLayer
 
-    nu = float(parse_number(args.nu, "--nu"))
-    name = args.name or "thinlayer_any_thickness"
-    sources = {lang: any_thickness_source(nu, args.base, lang) for lang in langs}
+        layer = _solve_layer(args.base, args.nu if args.nu not in (None, "symbolic") else "0")
+        if layer.base == "bonded" and layer.numeric_nu == 0.5:
+            layer = IncompressibleLayer()
+        name = args.name or "thinlayer_flat_punch"
+        sources = {lang: flat_punch_source(layer, lang) for lang in langs}
+    else:
+        from ..contact.any_thickness import any_thickness_source
+
+        nu = float(parse_number(args.nu, "--nu"))
+        name = args.name or "thinlayer_any_thickness"
+        sources = {lang: any_thickness_source(nu, args.base, lang) for lang in langs}
     if args.out is None:
         if args.json:
             _print([{"language": lang, "source": src} for lang, src in sources.items()], True)
@@ -447,7 +460,7 @@ def _cmd_codegen_any_thickness(args) -> int:
 def _cmd_codegen(args) -> int:
     from .codegen import LANGUAGES, generate
 
-    if args.result == "any-thickness":
+    if args.result == "any-thickness" or (args.result == "flat-punch" and args.law == "any-thickness"):
         return _cmd_codegen_any_thickness(args)
 
     langs = list(LANGUAGES) if args.lang == "all" else [x.strip() for x in args.lang.split(",") if x.strip()]
@@ -603,8 +616,9 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("result", choices=("inner", "force", "coefficients", "composite", "incompressible", "two-term",
                                       "any-thickness", "flat-punch"),
                    help="what to generate")
-    g.add_argument("--law", choices=("thin", "thick"), default="thin",
-                   help="flat-punch: the thin-layer law (F.12)-(F.16) or the thick series (F.18) (default thin)")
+    g.add_argument("--law", choices=("thin", "thick", "any-thickness"), default="thin",
+                   help="flat-punch: the thin-layer law (F.12)-(F.16), the thick series (F.18), or the exact kappa "
+                        "tabulated for 0.001 <= a/H <= 200 (python, c) (default thin)")
     g.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
                    help="base of the layer (any-thickness; default bonded)")
     g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
