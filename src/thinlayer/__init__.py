@@ -42,6 +42,7 @@ _PUBLIC = {
     **dict.fromkeys(["Indentation", "solve"], "thinlayer.contact.solve"),
     **dict.fromkeys(["any_thickness_law", "force_any_thickness"], "thinlayer.contact.any_thickness"),
     "fit": "thinlayer.contact.fit",
+    "force_arrays": "thinlayer.asymptotics.solution",
     **dict.fromkeys(["solve_2d", "solve_axisymmetric"], "thinlayer.numerics"),
     **dict.fromkeys(["MissingArgumentError", "checked_lambdify"], "thinlayer.results"),
 }
@@ -52,7 +53,7 @@ __all__ = [
     # layers: the kernel L(u) (2.3)-(2.4)
     "BondedLayer", "FrictionlessLayer", "HalfSpace", "IncompressibleLayer", "GenericLayer", "LayerKernel",
     # the punch (1.1); the flat-ended cylinder (F.1)
-    "Punch", "FlatPunch",
+    "Punch",
     # the stages, in the paper's order
     "kernel_coefficients", "kernel_moment", "moment_expansion", "inner_pressure",
     "contact_contour", "ellipse_contour", "alexandrov_solution", "boundary_layer_exact",
@@ -62,7 +63,7 @@ __all__ = [
     # the user's question: force, contact size and pressure by the model that holds; the direct solvers
     "solve", "Indentation", "solve_axisymmetric", "solve_2d",
     # any thickness (T.1)-(T.8) and fitting measured curves
-    "force_any_thickness", "any_thickness_law", "fit",
+    "force_any_thickness", "fit",
     # the flat-ended cylinder's stiffness kappa(a/H) (F.1)-(F.19)
     "flat_punch_stiffness",
     # errors and tools

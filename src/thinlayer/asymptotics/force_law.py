@@ -80,6 +80,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
+import mpmath
 import sympy as sp
 
 from .. import symbols as S
@@ -98,6 +99,7 @@ __all__ = [
     "h_star",
     "boundary_layer_force_defect",
     "error_estimate",
+    "error_estimate_arrays",
     "force_law",
 ]
 
@@ -437,17 +439,16 @@ class ForceLaw(RichDisplay):
         """
         d0, HH, mm = (_positive(x, nm) for x, nm in ((delta0, "delta0"), (H, "H"), (mu, "mu")))
         vals = self._numeric_values(parameters or {})
-        nu_free = {S.nu, S.kappa} & set().union(*(e.free_symbols for e in (self.coefficient, self.p1_factor)))
+        nu_free = {S.nu, S.kappa} & (_free(self.coefficient) | _free(self.p1_factor))
         if nu_free:
             raise ValueError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
         sub = {S.delta0: d0, S.H: HH, S.mu: mm, **vals}
         if nu is not None:
             sub[S.nu] = parse_number(nu, "nu") if isinstance(nu, str) else nu
-        th_expr = self.layer.vartheta.subs(sub)
-        if not th_expr.is_number:
+        if _free(self.layer.vartheta) - set(sub):
             raise ValueError(f"vartheta = {self.layer.vartheta} needs the Poisson ratio: pass nu= "
                              f"(the {self.layer.name} kernel does not fix it)")
-        th = float(th_expr)
+        th = _compiled_number(self.layer.vartheta, sub)
         A = float(self.layer.A)
         P0 = None
         if self.kind != "contour":  # P0 from its closed form: finite even where V alone overflows
@@ -463,20 +464,23 @@ class ForceLaw(RichDisplay):
             area0, per = c.area, c.perimeter
             V = c.integrate(lambda a, b: d0 - c.phi(a, b))
             J = c.boundary_integral(c.g, of="s")
-        coef = float(self.coefficient.subs(sub))
+        coef = _compiled_number(self.coefficient, sub)
         if P0 is None:
             P0 = th / (A * HH) * V
         return ForceValues(d0, HH, P0, coef * J, float(area0), float(per),
                            float(edge_shift), float(V), float(J))
 
     def _closed_numbers(self, sub):
-        def f(e):
-            return float(sp.N(e.subs(sub), 17))
-
-        free = (self.P0.free_symbols | self.area0.free_symbols) - set(sub)
+        """``P0, P1, |omega_0|, |Gamma_0|, V, J`` at the numbers ``sub``: the closed forms compiled once per set of
+        symbols (mpmath at 20 digits: no overflow where only the float result would leave the double range).
+        """
+        free = (_free(self.P0) | _free(self.area0)) - set(sub)
         if free:
             raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
-        return f(self.P0), f(self.P1), f(self.area0), f(self.perimeter), f(self.V), f(self.J)
+        keys = tuple(sorted(sub, key=str))
+        f = _compiled_closed_forms(self, keys)
+        with mpmath.workdps(20):
+            return tuple(float(v) for v in f(*(mpmath.mpf(float(sub[k])) for k in keys)))
 
     def indentation(self, force: Any, H: Any, mu: Any = 1.0, parameters: dict | None = None,
                     nu: Any = None, order: int = 1) -> float:
@@ -548,6 +552,68 @@ def _signed(tex: str) -> str:
 # ---------------------------------------------------------------------------------------------
 # the stage function
 # ---------------------------------------------------------------------------------------------
+def error_estimate_arrays(P0: Any, P1: Any, area0: Any, perimeter: Any, H: Any, edge_shift: float
+                          ) -> tuple[Any, Any]:
+    """:func:`error_estimate` (``order=1``) over numpy arrays: ``(force estimate, area estimate)``.
+
+    inf where the expansion does not apply (``P0 <= 0``, non-finite numbers, ``H/a > 1e100``).
+    """
+    import numpy as np
+
+    h2 = float(edge_shift) ** 2
+    with np.errstate(all="ignore"):
+        x2 = np.multiply(perimeter, 0.5 * np.asarray(H, dtype=float))
+        x2 /= area0  # H/a, a = 2|omega_0|/|Gamma_0|
+        bad = ~np.isfinite(x2)
+        bad |= x2 > 1e100
+        x2 *= x2
+        e1 = np.divide(P1, P0)
+        bad |= ~np.isfinite(e1)
+        bad |= ~(np.asarray(P0) > 0)
+        np.abs(e1, out=e1)
+        area = (_AREA_CURVATURE + h2) * x2
+        area += e1
+        area *= ERROR_FACTORS["contact_area"]
+        x2 *= 1.0 + h2
+        x2 += e1  # kappa^2
+        k = np.sqrt(x2)
+        force = k + 1.0
+        force *= x2
+        force *= k
+        force *= ERROR_FACTORS["force"]
+        force[bad] = np.inf
+        area[bad] = np.inf
+    return force, area
+
+
+@lru_cache(maxsize=1024)
+def _free(expr: sp.Expr) -> frozenset:
+    """``expr.free_symbols``, kept (sympy walks the tree at every call)."""
+    return frozenset(expr.free_symbols)
+
+
+@lru_cache(maxsize=256)
+def _compiled_expr(expr: sp.Expr, keys: tuple) -> Any:
+    return sp.lambdify(keys, expr, modules="mpmath")
+
+
+def _compiled_number(expr: sp.Expr, sub: dict) -> float:
+    """``float(expr.subs(sub))`` by a function of the symbols of ``sub`` compiled once (mpmath, 20 digits)."""
+    keys = tuple(sorted(sub, key=str))
+    with mpmath.workdps(20):
+        return float(_compiled_expr(expr, keys)(*(mpmath.mpf(float(sub[k])) for k in keys)))
+
+
+@lru_cache(maxsize=256)
+def _compiled_closed_forms(law: ForceLaw, keys: tuple) -> Any:
+    """The closed forms of a quadratic or radial-monomial law as one mpmath function of ``keys`` (cached)."""
+    return sp.lambdify(keys, [law.P0, law.P1, law.area0, law.perimeter, law.V, law.J], modules="mpmath")
+
+
+#: force laws kept for repeated solves (the symbolic law depends on the layer and the punch only)
+FORCE_LAW_CACHE = 256
+
+
 def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
     r"""Force--indentation law with its first correction in H (1.8), and the contact-area law (3.25).
 
@@ -570,6 +636,19 @@ def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
         punch = Punch(punch)
     if not layer.has_thickness:
         raise ValueError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
+    try:
+        return _force_law_cached(layer, punch)
+    except TypeError:  # an unhashable layer or punch: derive it afresh
+        return _force_law(layer, punch)
+
+
+@lru_cache(maxsize=FORCE_LAW_CACHE)
+def _force_law_cached(layer: LayerKernel, punch: Punch) -> ForceLaw:
+    return _force_law(layer, punch)
+
+
+def _force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
+    """The derivation of :func:`force_law` (module docstring)."""
     inner = inner_pressure(layer, punch, order=2)
     lap = punch.laplacian()
     p1 = inner.terms[1]

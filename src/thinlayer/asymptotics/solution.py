@@ -38,16 +38,17 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .. import symbols as S
 from .._checks import parse_nu
 from .._checks import positive as _positive
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
 from ..punch import Punch, PunchError
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
-from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, force_law
+from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, error_estimate_arrays, force_law
 
-__all__ = ["ContactSolution", "ValidityError", "compressible_solution", "numeric_punch", "MAX_FORCE_ORDER",
-           "DEFAULT_TOL"]
+__all__ = ["ContactSolution", "ForceArrays", "ValidityError", "compressible_solution", "force_arrays", "numeric_punch",
+           "MAX_FORCE_ORDER", "DEFAULT_TOL"]
 
 #: default tolerance of :func:`compressible_solution` on the relative error estimates
 DEFAULT_TOL = 0.05
@@ -418,6 +419,93 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     _check_validity(layer, pn, nu_value, vals, est, tol_v, mm)
     return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour,
                            est, tol_v)
+
+
+@dataclass(frozen=True)
+class ForceArrays:
+    """The compressible model's force (1.8) and contact area (3.25) over arrays of depths (:func:`force_arrays`).
+
+    Attributes
+    ----------
+    delta0 : numpy.ndarray
+        The depths (broadcast with ``H``).
+    force, contact_area : numpy.ndarray
+        ``P0 + P1`` and ``|omega_0| - h^* H |Gamma_0|``; NaN wherever ``valid`` is False.
+    force_leading : numpy.ndarray
+        ``P0`` (NaN where not valid).
+    error_estimate : dict
+        ``{"force": array, "contact_area": array}`` (relative; inf where the expansion does not apply).
+    valid : numpy.ndarray
+        Where both estimates are within ``tol`` and force and area are positive and finite.
+    """
+
+    delta0: Any
+    force: Any
+    force_leading: Any
+    contact_area: Any
+    error_estimate: dict
+    valid: Any
+    tol: float
+
+
+@lru_cache(maxsize=128)
+def _array_law(law: Any, keys: tuple) -> Any:
+    per = law.perimeter  # E(m) of an ellipse: its eccentricity does not depend on the depth, a number here
+    per = per.xreplace({e: e.evalf(20) for e in per.atoms(sp.elliptic_e) if e.args[0].is_number})
+    return sp.lambdify(keys, [law.P0, law.P1, law.area0, per], modules="numpy")
+
+
+def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 1.0, *, nu: Any = None,
+                 parameters: dict | None = None, tol: Any = DEFAULT_TOL) -> ForceArrays:
+    r"""The force law (1.8) with its first correction and the area law (3.25) over numpy arrays of ``delta0``.
+
+    For the punches with closed forms (quadratic, radial monomial): the symbolic law is derived once per
+    (layer, punch) and compiled once; ``delta0`` and ``H`` broadcast (``mu`` scalar).  Where the estimate of
+    :func:`thinlayer.asymptotics.force_law.error_estimate` exceeds ``tol``, or force or area are not positive and
+    finite (no contact, overflow), the values are NaN and ``valid`` is False: never an unflagged negative or
+    infinite force.  Equal to :func:`compressible_solution` point by point (to rounding).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from thinlayer import BondedLayer, Punch
+    >>> out = force_arrays(BondedLayer(0.3), Punch.paraboloid(10), np.array([1e-4, 0.1, 1.0]), H=0.02)
+    >>> out.valid.tolist(), bool(np.isnan(out.force[0]))        # 1e-4: contact too small for H = 0.02
+    ([False, True, True], True)
+    """
+    layer, nu_value = _check_layer(layer, nu)
+    tol_v = _check_tol(tol)
+    mm = _positive(mu, "mu")
+    pn = numeric_punch(punch, parameters)
+    law = force_law(layer, pn)
+    if law.kind == "contour":
+        raise ValueError("force_arrays needs a punch with a closed-form law (quadratic or (x1^2 + x2^2)^k); "
+                         "this one needs its contour at every depth: use compressible_solution per depth")
+    d0 = np.asarray(delta0, dtype=float)
+    HH = np.asarray(H, dtype=float)
+    if d0.size * max(HH.size, 1) > 50_000_000:
+        raise ValueError(f"force_arrays: {d0.size} depths x {HH.size} thicknesses is more than 5e7 values")
+    keys = [S.delta0, S.H, S.mu] + ([S.nu] if S.nu in (law.P0.free_symbols | law.P1.free_symbols) else [])
+    args = [d0, HH, mm] + ([nu_value] if len(keys) == 4 else [])
+    with np.errstate(all="ignore"):
+        P0, P1, area0, per = (np.asarray(v, dtype=float) for v in _array_law(law, tuple(keys))(*args))
+        h_ex, _ = _edge_shifts(layer.edge_shift_key)
+        est_f, est_a = error_estimate_arrays(P0, P1, area0, per, HH, h_ex)
+        force = P0 + P1
+        area = per * (-h_ex * HH)
+        area += area0
+        valid = est_f <= tol_v  # inf (and so False) wherever P0 <= 0 or a number is not finite
+        valid &= est_a <= tol_v
+        valid &= force > 0
+        valid &= area > 0
+        valid &= np.isfinite(force)
+        valid &= np.isfinite(area)
+        invalid = ~valid
+        force[invalid] = np.nan
+        area[invalid] = np.nan
+        P0 = np.where(valid, P0, np.nan)
+    return ForceArrays(np.broadcast_to(d0, valid.shape), force, P0, area, {"force": est_f, "contact_area": est_a},
+                       valid, tol_v)
 
 
 def _check_tol(tol: Any) -> float:

@@ -39,7 +39,7 @@ import math
 import numbers
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Any, ClassVar
 
 import numpy as np
@@ -84,6 +84,7 @@ class _Shape:
         return self.quadric is not None and math.isclose(self.quadric[0], self.quadric[1], rel_tol=1e-12)
 
 
+@lru_cache(maxsize=256)
 def _shape(punch: Punch) -> _Shape:
     e = sp.expand(punch.expr)
     axi = sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0
@@ -190,7 +191,7 @@ class Indentation(RichDisplay):
 
         if getattr(self.punch, "singular_edge", False):
             return math.inf
-        w = self._extent
+        w = self._extent.value if isinstance(self._extent, _LazyExtent) else self._extent
         g = np.linspace(-w, w, 161)
         X1, X2 = np.meshgrid(g, g, indexing="ij")
         P = self.pressure(X1, X2)
@@ -381,26 +382,45 @@ def _compressible(layer, punch, shape, delta0, force, H, mu, nu, tol, options) -
     if shape.quadric is not None and not shape.axisymmetric:
         shift = sol.edge_shift * H  # the contour moves inward by h* H along its normal (3.25)
         axes = tuple(math.sqrt(2 * sol.delta0 / k) - shift for k in shape.quadric[:2])
-    extent = _extent_of(punch, sol.delta0)
+    extent = _LazyExtent(punch, sol.delta0)  # needed by max_pressure only
     return Indentation(layer, punch, sol.delta0, sol.force, H, mu, nu, sol.contact_area, radius, axes,
                        "compressible", "", est, tol, sol, sol.pressure, extent)
 
 
+@lru_cache(maxsize=256)
+def _phi_numpy(punch: Punch) -> Callable:
+    return sp.lambdify((S.x1, S.x2), punch.expr, "numpy")
+
+
+class _LazyExtent:
+    """:func:`_extent_of` computed on first use (``Indentation.max_pressure`` is the only user)."""
+
+    def __init__(self, punch: Punch, delta0: float):
+        self.args = (punch, delta0)
+
+    @cached_property
+    def value(self) -> float:
+        return _extent_of(*self.args)
+
+
 def _extent_of(punch: Punch, delta0: float) -> float:
-    """A half-width of a square that holds {Phi < delta0}: bisection along 16 rays."""
-    f = sp.lambdify((S.x1, S.x2), punch.expr, "numpy")
-    R = 0.0
-    for t in np.linspace(0, 2 * np.pi, 16, endpoint=False):
-        c, s = math.cos(t), math.sin(t)
-        hi = 1.0
-        while float(f(hi * c, hi * s)) < delta0 and hi < 1e300:
-            hi *= 2.0
-        lo = 0.0
+    """A half-width of a square that holds {Phi < delta0}: bisection along 16 rays (all at once)."""
+    f = _phi_numpy(punch)
+    t = np.linspace(0, 2 * np.pi, 16, endpoint=False)
+    c, s = np.cos(t), np.sin(t)
+    hi = np.ones(16)
+    with np.errstate(over="ignore", invalid="ignore"):
+        for _ in range(1100):  # double until outside (or 1e300)
+            inside = (np.asarray(f(hi * c, hi * s), dtype=float) < delta0) & (hi < 1e300)
+            if not inside.any():
+                break
+            hi = np.where(inside, 2.0 * hi, hi)
+        lo = np.zeros(16)
         for _ in range(60):
             mid = 0.5 * (lo + hi)
-            lo, hi = (mid, hi) if float(f(mid * c, mid * s)) < delta0 else (lo, mid)
-        R = max(R, hi)
-    return 1.05 * R
+            inside = np.asarray(f(mid * c, mid * s), dtype=float) < delta0
+            lo, hi = np.where(inside, mid, lo), np.where(inside, hi, mid)
+    return 1.05 * float(hi.max())
 
 
 def _two_term_pressure(model, c: float, H: float, mu: float, R: float) -> Callable:
@@ -433,6 +453,12 @@ def _two_term_pressure(model, c: float, H: float, mu: float, R: float) -> Callab
     return p
 
 
+@lru_cache(maxsize=64)
+def _incompressible_ellipse(R1: float, R2: float):
+    return incompressible_ellipse(sp.Float(R1, 17), sp.Float(R2, 17))
+
+
+@lru_cache(maxsize=64)
 def _edge_h(layer: LayerKernel) -> float:
     return float(two_term_edge_shift(layer, dps=15))
 
@@ -474,7 +500,7 @@ def _two_term(layer, punch, shape, delta0, force, H, mu, nu, tol, incompressible
                            tol, v, lambda x1, x2: p_r(np.hypot(x1, x2)), 1.2 * c)
     if shape.quadric is not None:  # elliptic paraboloid at nu = 1/2 (I.6)-(I.8)
         k1, k2, ang = shape.quadric
-        model = incompressible_ellipse(sp.Float(1 / k1, 17), sp.Float(1 / k2, 17))
+        model = _incompressible_ellipse(1 / k1, 1 / k2)
 
         def at(d0):
             return model.evaluate(d0, H, mu)

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
+import mpmath
 import numpy as np
 import sympy as sp
 
@@ -151,13 +152,13 @@ class IncompressibleEllipse:
                 if val is None:
                     raise ValueError(f"{nm} is symbolic in this result: pass {nm}=<positive number>")
                 sub[sym] = positive(val, nm)
-        t = float(self.t.subs(sub))
-
-        def num(e):
-            return float(e.subs(t_sym, t).subs(sub))
-
-        return EllipseValues(math.sqrt(num(self.a2_t)), math.sqrt(num(self.b2_t)), num(self.C_t),
-                             num(self.force_t), t)
+        keys = tuple(sorted(sub, key=str))
+        t_of, rest = _ellipse_functions(self, keys)  # compiled once per result and set of symbols
+        with mpmath.workdps(20):
+            args = [mpmath.mpf(float(sub[k])) for k in keys]
+            t = float(t_of(*args))
+            a2, b2, C, P = (float(v) for v in rest(mpmath.mpf(t), *args))
+        return EllipseValues(math.sqrt(a2), math.sqrt(b2), C, P, t)
 
     def latex(self) -> str:
         return " \\\\\n".join([
@@ -168,6 +169,13 @@ class IncompressibleEllipse:
             latex_equation("C", sp.latex(self.C_t), "I.7"),
             latex_equation("P", sp.latex(self.force_t), "I.8"),
         ])
+
+
+@lru_cache(maxsize=128)
+def _ellipse_functions(result: IncompressibleEllipse, keys: tuple) -> tuple:
+    """``t(*keys)`` and ``(a^2, b^2, C, P)(t, *keys)`` of (I.6)-(I.8) as mpmath functions."""
+    return (sp.lambdify(keys, result.t, modules="mpmath"),
+            sp.lambdify((t_sym, *keys), [result.a2_t, result.b2_t, result.C_t, result.force_t], modules="mpmath"))
 
 
 @lru_cache(maxsize=1)

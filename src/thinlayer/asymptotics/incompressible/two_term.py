@@ -72,6 +72,12 @@ def _edge_shift_cached(nu_key: str, dps: int) -> mpmath.mpf:
         return -val / mpmath.pi
 
 
+@lru_cache(maxsize=64)
+def _edge_shift_float(layer: LayerKernel) -> float:
+    """``h(nu)`` (I.12) as a float, kept per layer for repeated evaluations."""
+    return float(two_term_edge_shift(layer, dps=15))
+
+
 def two_term_edge_shift(layer: LayerKernel | None = None, dps: int = 20) -> mpmath.mpf:
     """Edge correction ``h(nu)`` (I.12): the true contact edge lies ``h H`` inside the model's edge.
 
@@ -208,6 +214,32 @@ def _psi_chi(x: Any) -> tuple[np.ndarray, np.ndarray]:
     return psi, chi
 
 
+def _psi_chi_scalar(x: float) -> tuple[float, float]:
+    """:func:`_psi_chi` for one float, without array overhead (the same Horner sums, term by term)."""
+    if not (x >= 0 and math.isfinite(x)):
+        raise ValueError("x = k c must be finite and >= 0")
+    if x < _SERIES_CUT:
+        q = _ratio_series_list()
+        y = x * x
+        psi = 0.0
+        for coef in q[:0:-1]:  # np.polyval(q[1:][::-1], y): Horner from the highest power
+            psi = psi * y + coef
+        chi = 0.0
+        for coef in q[:1:-1]:
+            chi = chi * y + coef
+        return 2 * psi, -2 * chi
+    from scipy import special
+
+    ratio = x * float(special.ive(0, x)) / float(special.ive(1, x))
+    psi = (ratio - 2) / (x * x)
+    return psi, (0.25 - psi) / (x * x)
+
+
+@lru_cache(maxsize=1)
+def _ratio_series_list() -> list:
+    return [float(v) for v in _ratio_series()]
+
+
 @dataclass(frozen=True)
 class SphereValues:
     """Numbers of a sphere model: contact radius (model edge and corrected by (I.12)) and force."""
@@ -320,15 +352,17 @@ class TwoTermSphere:
             raise TypeError(f"evaluate needs a numeric nu, not the symbol {self.nu}: "
                             "build two_term_sphere(BondedLayer(0.49))")
         d0, RR, HH, mm = (positive(v, n) for v, n in ((delta0, "delta0"), (R, "R"), (H, "H"), (mu, "mu")))
-        f = self.lambdify()
+        c0, c1, th = float(self.c0), float(self.c1), float(self.vartheta / S.mu)
+        k = math.sqrt(c0 / c1) / HH
         lo, hi = math.sqrt(2 * RR * d0), 2 * math.sqrt(RR * d0)
 
-        def g(c: float) -> float:
-            return float(f(c, RR, HH, mm)[0]) - d0
+        def g(c: float) -> float:  # delta0(c) - delta0 of (I.11), the scalar form of lambdify()
+            return c * c * (1 - 2 * _psi_chi_scalar(k * c)[0]) / (2 * RR) - d0
 
         c = hi if g(hi) <= 0 else optimize.brentq(g, lo, hi, xtol=1e-15 * hi, rtol=1e-15)
-        P = float(f(c, RR, HH, mm)[1])
-        h = float(two_term_edge_shift(self.layer, dps=15)) if edge_correction else 0.0
+        c2 = c * c  # products, not powers: inf past the double range (as numpy), never OverflowError
+        P = 2 * math.pi * (th * mm / (2 * RR * c1 * (HH * HH * HH))) * (c2 * c2 * c2) * _psi_chi_scalar(k * c)[1]
+        h = _edge_shift_float(self.layer) if edge_correction else 0.0
         x = math.sqrt(float(self.c0) / float(self.c1)) * c / HH
         return SphereValues(float(self.nu), d0, RR, HH, mm, c, c - h * HH, P, x)
 
