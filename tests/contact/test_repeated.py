@@ -15,17 +15,24 @@ import pytest
 import sympy as sp
 
 import thinlayer as tl
+from thinlayer.asymptotics import contour as contour_mod
 from thinlayer.asymptotics import force_law as fl
+from thinlayer.asymptotics import solution as solution_mod
+from thinlayer.asymptotics.incompressible import leading as leading_mod
+from thinlayer.asymptotics.incompressible import two_term as two_term_mod
 from thinlayer.asymptotics.solution import force_arrays
 from thinlayer.contact import solve as solve_mod
 
 SPHERE = tl.Punch.paraboloid(10)
 ELLIPSE = tl.Punch.elliptic_paraboloid(40, 10)
+QUARTIC = tl.Punch("x_1**2/2 + x_2**2 + x_1**3/5 + x_1*x_2/10 + x_1**4 + x_2**4")
 
 
 def _clear():
     for f in (fl._force_law_cached, fl._compiled_closed_forms, fl._compiled_expr, solve_mod._shape,
-              solve_mod._phi_numpy, solve_mod._edge_h, solve_mod._incompressible_ellipse):
+              solve_mod._phi_numpy, solve_mod._edge_h, solve_mod._incompressible_ellipse,
+              contour_mod._polynomial_cached, contour_mod._gauss_legendre, solution_mod._is_axisymmetric,
+              solution_mod._array_law, leading_mod._ellipse_functions, two_term_mod._edge_shift_float):
         f.cache_clear()
 
 
@@ -33,6 +40,7 @@ def _clear():
     (tl.BondedLayer(0.3), SPHERE, 0.02, "compressible"), (tl.BondedLayer(0.3), ELLIPSE, 0.02, "compressible"),
     (tl.FrictionlessLayer(0.3), SPHERE, 0.02, "compressible"), (tl.BondedLayer(0.45), SPHERE, 0.005, "two-term"),
     (tl.BondedLayer(0.5), SPHERE, 0.005, "incompressible"), (tl.BondedLayer(0.5), ELLIPSE, 0.005, "incompressible"),
+    (tl.BondedLayer(0.3), QUARTIC, 0.01, "compressible"),
 ])
 def test_cached_answers_equal_fresh_ones(layer, punch, H, model):
     runs = [(0.1, H, 1.0), (0.13, 1.3 * H, 2.5), (0.07, 0.8 * H, 0.4)]
@@ -60,6 +68,29 @@ def test_layers_and_punches_never_share_a_cache_entry():
     p10 = tl.solve(tl.BondedLayer(0.3), R, delta0=0.1, H=0.02, mu=1.0, parameters={"R": 10}).force
     p11 = tl.solve(tl.BondedLayer(0.3), R, delta0=0.1, H=0.02, mu=1.0, parameters={"R": 11}).force
     assert p10 == pytest.approx(f[0], rel=1e-14) and p11 == pytest.approx(f[1], rel=1e-14)
+
+
+def test_cached_polynomial_terms_are_not_shared():
+    expr, terms = contour_mod._polynomial(QUARTIC)
+    terms.append((9, 9, 1.0))  # a caller's change of its list must not reach the next contour
+    assert (9, 9, 1.0) not in contour_mod._polynomial(QUARTIC)[1]
+    u, _ = contour_mod._gauss_legendre(8)
+    with pytest.raises(ValueError):
+        u[0] = 0.0
+
+
+@pytest.mark.parametrize("nu", [0.3, 0.45, 0.49])
+def test_two_term_scalar_evaluation_is_the_vectorised_law_to_the_last_bit(nu):
+    """The scalar evaluate() of the repeated solves and the array form lambdify() of (I.11) give the same doubles."""
+    model = two_term_mod.two_term_sphere(tl.BondedLayer(nu))
+    f = model.lambdify()
+    rng = np.random.default_rng(7)
+    for d0, R, H, mu in zip(rng.uniform(0.01, 1, 40), rng.uniform(1, 20, 40), 10 ** rng.uniform(-3, 0, 40),
+                            rng.uniform(0.5, 3, 40)):
+        v = model.evaluate(float(d0), float(R), float(H), float(mu))
+        depth, force = f(v.radius, float(R), float(H), float(mu))
+        assert float(force) == v.force
+        assert float(depth) == pytest.approx(d0, rel=1e-13)
 
 
 def _A_m1(nu: float) -> tuple[float, float]:

@@ -101,6 +101,7 @@ import numbers
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
+from functools import lru_cache
 from typing import ClassVar
 
 import numpy as np
@@ -837,7 +838,7 @@ class ContactContour(RichDisplay):
             z, dz, step = self._z(s), self._z(s, 1), self.perimeter / M
         else:
             z, dz, step, wz, dwz = self._framed.samples(M)
-        u, wu = np.polynomial.legendre.leggauss(int(n_radial))
+        u, wu = _gauss_legendre(int(n_radial))
         u = 0.5 * (u + 1.0)
         wu = 0.5 * wu
         if self._star_center is not None:
@@ -960,7 +961,7 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     2.0
     """
     d0 = _as_delta0(delta0)
-    expr, terms = as_polynomial(Phi)
+    expr, terms = _polynomial(Phi)
     if n is not None and (not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 16 or n % 2):
         raise ValueError(f"n (number of contour nodes) must be an even integer >= 16, got {n!r}")
     if not (isinstance(tol, (int, float)) and 0 < tol < 1):
@@ -998,6 +999,30 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     if aspect <= ASPECT_DIRECT:
         return _direct_contour(expr, d0, P, res[0] * ell, res[1] * ell, best, acc)
     return _framed_contour(expr, d0, P, Ps, frame.A, det, res[0], res[1], best, acc)
+
+
+def _polynomial(Phi) -> tuple[sp.Expr, list[tuple[int, int, float]]]:
+    """:func:`as_polynomial`, kept per punch (the contour of another depth needs the same terms)."""
+    try:
+        expr, terms = _polynomial_cached(Phi)
+    except TypeError:  # unhashable input: no cache
+        return as_polynomial(Phi)
+    return expr, list(terms)
+
+
+@lru_cache(maxsize=256)
+def _polynomial_cached(Phi) -> tuple[sp.Expr, tuple[tuple[int, int, float], ...]]:
+    expr, terms = as_polynomial(Phi)
+    return expr, tuple(terms)
+
+
+@lru_cache(maxsize=32)
+def _gauss_legendre(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss--Legendre nodes and weights on [-1, 1] (read-only arrays, computed once per n)."""
+    u, w = np.polynomial.legendre.leggauss(n)
+    u.flags.writeable = False
+    w.flags.writeable = False
+    return u, w
 
 
 def _direct_contour(expr, d0, P, Z, L, best, acc) -> ContactContour:

@@ -523,6 +523,7 @@ def _scaled(vals: ForceValues, mu: float, order: int) -> ForceValues:
                        vals.edge_shift if order else 0.0, vals.V, vals.J)
 
 
+@lru_cache(maxsize=256)
 def _is_axisymmetric(punch: Punch) -> bool:
     from .. import symbols as S
 

@@ -353,15 +353,16 @@ class TwoTermSphere:
                             "build two_term_sphere(BondedLayer(0.49))")
         d0, RR, HH, mm = (positive(v, n) for v, n in ((delta0, "delta0"), (R, "R"), (H, "H"), (mu, "mu")))
         c0, c1, th = float(self.c0), float(self.c1), float(self.vartheta / S.mu)
-        k = math.sqrt(c0 / c1) / HH
+        k = math.sqrt(c0 / c1)  # x = k c/H, rounded as lambdify() forms it: the same numbers to the last bit
         lo, hi = math.sqrt(2 * RR * d0), 2 * math.sqrt(RR * d0)
 
         def g(c: float) -> float:  # delta0(c) - delta0 of (I.11), the scalar form of lambdify()
-            return c * c * (1 - 2 * _psi_chi_scalar(k * c)[0]) / (2 * RR) - d0
+            return c * c * (1 - 2 * _psi_chi_scalar(k * c / HH)[0]) / (2 * RR) - d0
 
         c = hi if g(hi) <= 0 else optimize.brentq(g, lo, hi, xtol=1e-15 * hi, rtol=1e-15)
-        c2 = c * c  # products, not powers: inf past the double range (as numpy), never OverflowError
-        P = 2 * math.pi * (th * mm / (2 * RR * c1 * (HH * HH * HH))) * (c2 * c2 * c2) * _psi_chi_scalar(k * c)[1]
+        # numpy's powers (as lambdify(): the same rounding; inf past the double range, never OverflowError)
+        P = float(2 * math.pi * (th * mm / (2 * RR * c1 * np.power(HH, 3))) * np.power(c, 6)
+                  * _psi_chi_scalar(k * c / HH)[1])
         h = _edge_shift_float(self.layer) if edge_correction else 0.0
         x = math.sqrt(float(self.c0) / float(self.c1)) * c / HH
         return SphereValues(float(self.nu), d0, RR, HH, mm, c, c - h * HH, P, x)
