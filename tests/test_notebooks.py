@@ -1,8 +1,11 @@
 """Notebooks are tests: every notebook in ``notebooks/`` runs top to bottom in a Jupyter kernel.
 
-Each notebook reads ``THINLAYER_NB_SMALL``: ``"1"`` picks small sizes (fewer Poisson ratios, thicknesses and
-grid points; the same story and the same assertions), which is what the default test run uses.  The
-full-size run is marked ``slow`` and runs only with ``THINLAYER_SLOW=1`` (see ``conftest.py``).
+The notebooks are plain user notebooks at full size: no environment variable, no switch for the tests.
+The default test run executes each one at small sizes (fewer Poisson ratios, thicknesses and grid points;
+the same story and the same assertions) by substituting the constants listed in :data:`SMALL` in the code
+text before execution; each substitution must match exactly one line, so a renamed constant fails the test
+instead of silently running the full size.  The full-size run is marked ``slow`` and runs only with
+``THINLAYER_SLOW=1`` (see ``conftest.py``).
 
 Notebooks are executed with nbclient and an ipykernel ``python3`` kernel, with matplotlib's Agg backend, in
 ``notebooks/`` as working directory; they write only to temporary directories.  The committed notebooks
@@ -18,7 +21,28 @@ import pytest
 
 NB_DIR = Path(__file__).resolve().parents[1] / "notebooks"
 NOTEBOOKS = sorted(NB_DIR.glob("*.ipynb"))
-SWITCH = "THINLAYER_NB_SMALL"
+#: the small run: (line start at full size, its small-size replacement) per notebook
+SMALL = {
+    "00_solve": [("nus = [0.3, 0.45, 0.49, 0.499, 0.5]", "nus = [0.3, 0.49, 0.5]"),
+                 ("ratios = [0.005, 0.02, 0.05, 0.2, 0.5]", "ratios = [0.005, 0.05, 0.5]")],
+    "01_layer_kernel": [("u = np.linspace(1e-6, 4, 800)", "u = np.linspace(1e-6, 4, 200)"),
+                        ("ORDER = 60", "ORDER = 24"), ("TOL = 0.005", "TOL = 0.05"),
+                        ("nu_scan = np.linspace(-0.95, 0.48, 40)", "nu_scan = np.linspace(-0.95, 0.48, 12)")],
+    "02_moment_expansion": [("LAMS = [4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128]", "LAMS = [8, 16, 32, 64]")],
+    "03_inner_expansion": [("GRID = 400", "GRID = 120")],
+    "04_boundary_layer": [("t = np.linspace(0.02, 6, 400)", "t = np.linspace(0.02, 6, 120)"),
+                          ("nus = np.linspace(-0.95, 0.48, 40)", "nus = np.linspace(-0.95, 0.48, 10)"),
+                          ("n = 300", "n = 100")],
+    "05_validation": [("RATIOS = [10, 20, 30, 60, 120]", "RATIOS = [10, 20, 40]"),
+                      ("grids = [256, 384]", "grids = [256]")],
+    "06_exporting": [("n_points = 5000", "n_points = 200")],
+    "07_flat_punch": [("NUS = (0.0, 0.3, 0.45, 0.5)", "NUS = (0.3, 0.5)"), ("N_EXACT = 25", "N_EXACT = 9")],
+    "09_fitting": [("THICKNESS = [20.0, 10.0, 4.0, 2.0, 1.0]", "THICKNESS = [10.0, 4.0, 1.5]"),
+                   ("N_POINTS = 30", "N_POINTS = 8"),
+                   ("chis = np.geomspace(0.05, 10.0, 14)", "chis = np.geomspace(0.05, 3.0, 6)")],
+}
+#: what a user's notebook never holds
+PLUMBING = re.compile(r"os\.environ|getenv|THINLAYER_|pytest|\bSMALL\b")
 #: per-cell limit; the slowest cell of the small run takes a few seconds
 CELL_TIMEOUT = {"small": 240, "full": 900}
 
@@ -42,9 +66,29 @@ def _need_jupyter():
     return nbformat, nbclient
 
 
-def _execute(nb, monkeypatch, size: str, timeout: int):
+def small_sizes(sources: list[str], name: str) -> list[str]:
+    """The code cells' sources with the constants of :data:`SMALL` replaced; each must match exactly one line."""
+    out = list(sources)
+    for full, small in SMALL.get(name, []):
+        pattern = re.compile(rf"^([ \t]*){re.escape(full)}(?![\w.])", re.M)
+        hits = [(k, m) for k, src in enumerate(out) for m in pattern.finditer(src)]
+        assert len(hits) == 1, f"{name}: the small run expects one line starting {full!r}, found {len(hits)}"
+        k, m = hits[0]
+        out[k] = out[k][:m.start()] + m.group(1) + small + out[k][m.end():]
+    return out
+
+
+def _shrink(nb, name: str):
+    code = [c for c in nb.cells if c.cell_type == "code"]
+    for cell, src in zip(code, small_sizes([c.source for c in code], name)):
+        cell.source = src
+    return nb
+
+
+def _execute(nb, monkeypatch, size: str, timeout: int, name: str = ""):
     _, nbclient = _need_jupyter()
-    monkeypatch.setenv(SWITCH, "1" if size == "small" else "0")
+    if size == "small":
+        _shrink(nb, name)
     monkeypatch.setenv("MPLBACKEND", "Agg")  # inherited by the kernel process
     client = nbclient.NotebookClient(nb, timeout=timeout, startup_timeout=120, kernel_name="python3",
                                      resources={"metadata": {"path": str(NB_DIR)}})
@@ -65,10 +109,29 @@ def test_committed_notebook_is_stripped(path):
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
-def test_notebook_reads_the_small_switch_and_tells_a_story(path):
+def test_notebook_is_free_of_test_plumbing(path):
+    # issue 17 item 5: the small-size switch lives here, not in the notebooks
+    bad = [(i, m.group(0)) for i, c in enumerate(_cells(path)) for m in [PLUMBING.search(_source(c))] if m]
+    assert not bad, f"{path.name}: cells {bad} hold test plumbing; the tests' sizes belong in tests/test_notebooks.py"
+
+
+def test_plumbing_check_can_fail():
+    assert PLUMBING.search('SMALL = os.environ.get("THINLAYER_NB_SMALL") == "1"')
+    assert PLUMBING.search("import pytest") and not PLUMBING.search("SMALLER = 2  # a test function")
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_small_sizes_match_the_notebook(path):
+    code = [_source(c) for c in _cells(path) if c["cell_type"] == "code"]
+    small = small_sizes(code, path.stem)
+    assert len(small) == len(code) and (small != code) == bool(SMALL.get(path.stem))
+    with pytest.raises(AssertionError, match="expects one line"):
+        small_sizes(["ORDER = 600\nx = 1\n"], "01_layer_kernel")
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_notebook_tells_a_story(path):
     cells = _cells(path)
-    code = "\n".join(_source(c) for c in cells if c["cell_type"] == "code")
-    assert re.search(rf"os\.environ\.get\(\s*[\"']{SWITCH}[\"']\s*\)", code), f"{path.name} ignores {SWITCH}"
     first = cells[0]
     assert first["cell_type"] == "markdown" and _source(first).startswith("# "), \
         f"{path.name} must open with a markdown cell whose first line is its title"
@@ -80,7 +143,7 @@ def test_notebook_reads_the_small_switch_and_tells_a_story(path):
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
 def test_notebook_runs(path, size, monkeypatch):
     nbformat, _ = _need_jupyter()
-    nb = _execute(nbformat.read(path, as_version=4), monkeypatch, size, CELL_TIMEOUT[size])
+    nb = _execute(nbformat.read(path, as_version=4), monkeypatch, size, CELL_TIMEOUT[size], path.stem)
     outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])]
     errors = [o for o in outputs if o.get("output_type") == "error"]
     assert not errors, f"{path.name}: {errors[0].get('ename')}: {errors[0].get('evalue')}"

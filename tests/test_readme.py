@@ -63,7 +63,7 @@ def test_shell_line_runs(line, tmp_path):
     # a copy of what the commands read (derivation files, benchmarks), so outputs land in tmp_path
     for folder in ("derivations", "benchmarks"):
         shutil.copytree(ROOT / folder, tmp_path / folder)
-    env = dict(os.environ, THINLAYER_NB_SMALL="1")
+    env = dict(os.environ)
     for part in line.split("&&"):
         argv = shlex.split(part)
         if argv[:4] == ["python3", "-m", "pip", "install"]:

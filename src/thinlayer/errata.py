@@ -400,64 +400,68 @@ ENTRIES: tuple[Erratum, ...] = (
         "notation",
     ),
     Erratum(
-        "Dimitriadis 2002", "thick-layer series of a sphere on a bonded layer, nu = 1/2 (chi = sqrt(R delta)/h)",
+        "Dimitriadis 2002",
+        r"thick-layer series of a sphere on a bonded layer, $\nu = 1/2$ ($\chi = \sqrt{R\delta}/h$)",
         r"\frac{P}{P_H} = 1 + 1.133\chi + 1.283\chi^2 + 0.769\chi^3 + 0.0975\chi^4",
         r"\frac{P}{P_H} = 1 + 1.1270\chi + 1.4817\chi^2 + 1.4700\chi^3 + 1.0047\chi^4 + \dots"
         r"\ (\tfrac{2b_0}{\pi}, \tfrac{14 b_0^2}{3\pi^2}, \dots,\ b_k = \int_0^\infty u^{2k}(1-\mathcal{L})du)",
-        "Derived in thinlayer.asymptotics.thick_layer (T.1)-(T.7): the regular part of the kernel is "
-        "-(b_0 - b_1 s^2/(4H^2) + ...)/(2 pi vartheta H) with b_0 = 1.770217, b_1 = 3.831078 at nu = 1/2 (mpmath; "
-        "scipy agrees to 1e-10). The printed chi coefficient uses alpha_0 = -1.7795 (0.5 % off b_0); the chi^2 "
-        "coefficient 4 alpha_0^2/pi^2 leaves out that the contact radius grows, c = sqrt(R delta)(1 + 2 b_0 chi/(3 pi) "
-        "+ ...), which makes it 14 b_0^2/(3 pi^2); chi^3, chi^4 follow. Direct spectral solver at chi = 0.05: P/P_H - "
-        "the four derived terms = -9e-9 (the next terms), - the four printed terms = +2.9e-4; at chi = 0.3 the "
-        "printed series is 2.7 % low.",
+        r"Derived in thinlayer.asymptotics.thick_layer (T.1)--(T.7): the regular part of the kernel is "
+        r"$-(b_0 - b_1 s^2/(4H^2) + \dots)/(2\pi\vartheta H)$ with $b_0 = 1.770217$, $b_1 = 3.831078$ at "
+        r"$\nu = 1/2$ (mpmath; scipy agrees to $10^{-10}$). The printed $\chi$ coefficient uses $\alpha_0 = -1.7795$ "
+        r"(0.5 % off $b_0$); the $\chi^2$ coefficient $4\alpha_0^2/\pi^2$ leaves out that the contact radius grows, "
+        r"$c = \sqrt{R\delta}\,(1 + 2 b_0 \chi/(3\pi) + \dots)$, which makes it $14 b_0^2/(3\pi^2)$; $\chi^3$ and "
+        r"$\chi^4$ follow. Direct spectral solver at $\chi = 0.05$: $P/P_H$ minus the four derived terms is "
+        r"$-9 \cdot 10^{-9}$ (the next terms), minus the four printed terms $+2.9 \cdot 10^{-4}$; at $\chi = 0.3$ the "
+        r"printed series is 2.7 % low.",
         _check_dimitriadis_bonded, "published series",
     ),
     Erratum(
-        "Dimitriadis 2002", "thick-layer series of a sphere on a non-bonded (frictionless-base) layer, nu = 1/2",
+        "Dimitriadis 2002", r"thick-layer series of a sphere on a non-bonded (frictionless-base) layer, $\nu = 1/2$",
         r"\frac{P}{P_H} = 1 + 0.884\chi + 0.781\chi^2 + 0.386\chi^3 + 0.0048\chi^4,\ "
         r"\alpha_0 = -0.347\,\frac{3 - 2\nu}{1 - \nu}",
         r"\frac{P}{P_H} = 1 + 0.7433\chi + 0.6446\chi^2 + 0.3399\chi^3 + 0.0076\chi^4,\ -b_0 = -1.167577",
-        "The frictionless-base kernel (cosh 2u - 1)/(sinh 2u + 2u) does not depend on nu once vartheta = "
-        "mu/(1 - nu) is factored out (re-derived from the Navier equations in tests/asymptotics/test_thick_layer.py), "
-        "so neither do b_0 = 1.167577 and the series; the printed alpha_0(nu) varies by 33 % between nu = 0 and "
-        "1/2 and is 19 % off b_0 at nu = 1/2. Direct solver at chi = 0.05: derived four terms leave -7e-8, the "
-        "printed ones -7.4e-3.",
+        r"The frictionless-base kernel $(\cosh 2u - 1)/(\sinh 2u + 2u)$ does not depend on $\nu$ once "
+        r"$\vartheta = \mu/(1 - \nu)$ is factored out (re-derived from the Navier equations in thinlayer's tests of "
+        r"the thick layer), so neither do $b_0 = 1.167577$ and the series; the printed $\alpha_0(\nu)$ varies by 33 % "
+        r"between $\nu = 0$ and $\nu = 1/2$ and is 19 % off $b_0$ at $\nu = 1/2$. Direct solver at $\chi = 0.05$: the "
+        r"derived four terms leave $-7 \cdot 10^{-8}$, the printed ones $-7.4 \cdot 10^{-3}$.",
         _check_dimitriadis_nonbonded, "published series",
     ),
     Erratum(
-        "Dimitriadis 2002", "fitted alpha_0(nu), beta_0(nu) of the bonded layer",
+        "Dimitriadis 2002", r"fitted $\alpha_0(\nu)$, $\beta_0(\nu)$ of the bonded layer",
         r"\alpha_0 = -\frac{1.2876 - 1.4678\nu + 1.3442\nu^2}{1-\nu},\ "
         r"\beta_0 = \frac{0.6387 - 1.0277\nu + 1.5164\nu^2}{1-\nu}",
         r"\alpha_0 = -b_0(\nu) = -\int_0^\infty (1 - \mathcal{L}(u))\,du,\ \beta_0 = b_1(\nu)/4",
-        "The coefficients are integrals of the kernel (2.3) (T.2), evaluated to any precision: -alpha_0 vs b_0 is "
-        "+6.3 % at nu = 0, +0.46 % at 0.3, +0.52 % at 1/2 (b_0 = 1.211062, 1.376854, 1.770217); beta_0 vs b_1/4 is "
-        "+36 %, +6.3 %, +5.2 % (b_1/4 = 0.469695, 0.627552, 0.957769). The identification beta_0 = b_1/4 is the one "
-        "that makes the printed chi^3 coefficient's beta_0 term equal to the derived -8 b_1/(15 pi).",
+        r"The coefficients are integrals of the kernel (2.3) (T.2), evaluated to any precision: $-\alpha_0$ against "
+        r"$b_0$ is +6.3 % at $\nu = 0$, +0.46 % at $\nu = 0.3$, +0.52 % at $\nu = 1/2$ ($b_0 = 1.211062$, $1.376854$, "
+        r"$1.770217$); $\beta_0$ against $b_1/4$ is +36 %, +6.3 %, +5.2 % ($b_1/4 = 0.469695$, $0.627552$, "
+        r"$0.957769$). The identification $\beta_0 = b_1/4$ is the one that makes the $\beta_0$ term of the printed "
+        r"$\chi^3$ coefficient equal to the derived $-8 b_1/(15\pi)$.",
         _check_dimitriadis_alpha_beta, "published series",
     ),
     Erratum(
-        "Garcia 2018", "bottom-effect series of a paraboloid on a bonded layer, nu = 1/2",
+        "Garcia 2018", r"bottom-effect series of a paraboloid on a bonded layer, $\nu = 1/2$",
         r"\frac{P}{P_H} = 1 + 1.133\chi + 1.497\chi^2 + 1.469\chi^3 + 0.755\chi^4",
         r"\frac{P}{P_H} = 1 + 1.1270\chi + 1.4817\chi^2 + 1.4700\chi^3 + 1.0047\chi^4",
-        "(T.7) reproduces the printed chi, chi^2, chi^3 digits when D02's alpha_0 = -1.7795, beta_0 = 1.0079 are put "
-        "in for the exact b_0 = 1.770217, b_1/4 = 0.957769 (the chi^3 digits then agree by a cancellation of the "
-        "two input errors); the chi^4 coefficient is 286 b_0^4/(9 pi^4) - 16 b_0 b_1/(5 pi^2): 1.0047 exact, 0.945 "
-        "with their inputs, printed 0.755. Direct solver at chi = 0.1: P/P_H - the derived four terms = -9.6e-7 "
-        "(the next terms); with the printed chi^4 coefficient instead, -2.6e-5.",
+        r"(T.7) reproduces the printed digits of $\chi$, $\chi^2$, $\chi^3$ when the $\alpha_0 = -1.7795$, "
+        r"$\beta_0 = 1.0079$ of Dimitriadis 2002 are put in for the exact $b_0 = 1.770217$, $b_1/4 = 0.957769$ (the "
+        r"$\chi^3$ digits then agree by a cancellation of the two input errors); the $\chi^4$ coefficient is "
+        r"$286 b_0^4/(9\pi^4) - 16 b_0 b_1/(5\pi^2)$: $1.0047$ exact, $0.945$ with their inputs, printed $0.755$. "
+        r"Direct solver at $\chi = 0.1$: $P/P_H$ minus the derived four terms is $-9.6 \cdot 10^{-7}$ (the next "
+        r"terms); with the printed $\chi^4$ coefficient instead, $-2.6 \cdot 10^{-5}$.",
         _check_garcia_sphere, "published series",
     ),
     Erratum(
-        "Garcia 2018", "bottom-effect series of a flat punch (radius a) on a bonded layer, nu = 1/2",
+        "Garcia 2018", r"bottom-effect series of a flat punch (radius $a$) on a bonded layer, $\nu = 1/2$",
         r"\frac{P}{2E^*a\delta} = 1 + 1.133\tfrac{a}{h} + 1.283\tfrac{a^2}{h^2} + 0.598\tfrac{a^3}{h^3} "
         r"- 0.291\tfrac{a^4}{h^4}",
         r"\frac{P}{2E^*a\delta} = 1 + 1.1270\tfrac{a}{h} + 1.2700\tfrac{a^2}{h^2} + 0.6183\tfrac{a^3}{h^3} "
         r"- 0.2194\tfrac{a^4}{h^4}",
-        "The constant part -b_0/(2 pi vartheta h) of the regular kernel (T.2) is a spring in series with the "
-        "half-space stiffness 4 vartheta a: P/(4 vartheta a delta) = 1 + q + q^2 + O(a^3/h^3), q = 2 b_0 a/(pi h) = "
-        "1.1270 a/h (b_0 = 1.770217 by quadrature), against the printed 1.133 and 1.283 (from alpha_0 = -1.7795). "
-        "With alpha_0 = -1.7795 and beta_0 = 1.0079, (T.7) for the flat punch gives exactly the printed 0.598 and "
-        "-0.291: the printed structure is right, its inputs are not.",
+        r"The constant part $-b_0/(2\pi\vartheta h)$ of the regular kernel (T.2) is a spring in series with the "
+        r"half-space stiffness $4\vartheta a$: $P/(4\vartheta a\delta) = 1 + q + q^2 + O(a^3/h^3)$, "
+        r"$q = 2 b_0 a/(\pi h) = 1.1270\,a/h$ ($b_0 = 1.770217$ by quadrature), against the printed $1.133$ and "
+        r"$1.283$ (from $\alpha_0 = -1.7795$). With $\alpha_0 = -1.7795$ and $\beta_0 = 1.0079$, (T.7) for the flat "
+        r"punch gives exactly the printed $0.598$ and $-0.291$: the printed structure is right, its inputs are not.",
         _check_garcia_flat, "published series",
     ),
 )
@@ -526,18 +530,19 @@ def _hayes_entry(source: str, nu: str, rows: tuple) -> Erratum:
     worst = max(rows, key=lambda r: abs(float(r[1]) / float(r[2]) - 1))
     repo, path = source.split(", ")
     owner, name = repo.split("/")
+    deviation = 100 * (float(worst[1]) / float(worst[2]) - 1)
     return Erratum(
         "Hayes 1972",
-        f"flat-punch stiffness kappa(a/h) of a bonded layer, nu = {nu}, Table 1 as reproduced by {owner}",
+        f"flat-punch stiffness $\\kappa(a/h)$ of a bonded layer, $\\nu = {nu}$, Table 1 as reproduced by {owner}",
         printed, derived,
         f"Source: GitHub {owner} / {name}, file {path}. "
-        f"Exact kappa from the Fredholm equation of the second kind (F.6)-(F.7) of numerics.flat_punch: the "
-        f"collocation solution with n and 0.7 n nodes agrees to 1e-13 relative at every a/h listed, the Nystrom "
-        f"route (no Bessel identity, ~4 a/h + 60 nodes) and the Galerkin solver of the direct contact problem in "
-        f"the pressure basis agree with it to 1e-12 (tests/numerics/test_flat_punch.py). Every printed "
-        f"value is low, the deviation growing with a/h: {100 * (float(worst[1]) / float(worst[2]) - 1):+.2f} % at "
-        f"a/h = {worst[0]}. The printed values at a/h = 0.2 agree to their digits, so the normalisation is the same; "
-        f"the original table could not be accessed, and the values are quoted as the source attributes them.",
+        "Exact $\\kappa$ from the Fredholm equation of the second kind (F.6)--(F.7) of thinlayer.numerics.flat_punch: "
+        "the collocation solution with $n$ and $0.7n$ nodes agrees to $10^{-13}$ relative at every $a/h$ listed, the "
+        "Nystrom route (no Bessel identity, about $4a/h + 60$ nodes) and the Galerkin solver of the direct contact "
+        "problem in the pressure basis agree with it to $10^{-12}$ (thinlayer's tests of the flat punch). Every "
+        f"printed value is low, the deviation growing with $a/h$: ${deviation:+.2f}$ % "
+        f"at $a/h = {worst[0]}$. The printed values at $a/h = 0.2$ agree to their digits, so the normalisation is the "
+        "same; the original table could not be accessed, and the values are quoted as the source attributes them.",
         _check_hayes(nu, rows), "published table",
     )
 

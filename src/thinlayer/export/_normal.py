@@ -12,7 +12,10 @@ The policy, applied to every product (at the top level and inside function argum
   (``\sqrt{2 R_1 \delta_0}``, not ``\sqrt{2} \sqrt{R_1} \sqrt{\delta_0}``);
 * no fraction inside a fraction: a sum whose terms are all fractions is brought to one fraction first
   (``1/R_1 + 1/R_2`` is ``(R_1 + R_2)/(R_1 R_2)``); a sum that still holds a fraction
-  (``\delta_0 - x_1^2/(2 R)``) is set in parentheses after the fraction, not inside it;
+  (``\delta_0 - x_1^2/(2 R)``) is set in parentheses after the fraction, not inside it, and so is a
+  function, power of ``e`` or square root whose argument holds a fraction (``\frac{1}{\sqrt{\pi B}}
+  e^{-B (v - h)} \sqrt{v - h}``, not ``e^{..}`` and ``\sqrt{..}`` inside the numerator); the argument itself
+  is printed by the same policy, and a square root of a lone sum takes no parentheses;
 * floating-point numbers to ``digits`` significant digits (``51``, not ``50.9999999999999534``), powers
   of ten as ``\cdot 10^{k}``; no term that is zero.
 
@@ -81,6 +84,29 @@ def _has_fraction(e: sp.Expr) -> bool:
 def _all_fractions(add: sp.Expr) -> bool:
     """Every term of the sum has a symbolic denominator (``1/R_1 + 1/R_2``): bring it to one fraction."""
     return all(sp.fraction(t)[1].free_symbols for t in sp.Add.make_args(add))
+
+
+def _printed_fraction(x: sp.Expr) -> bool:
+    """Whether ``x`` is printed with a fraction in it (the exponent 1/2 of a square root is not one)."""
+    if isinstance(x, sp.Rational):
+        return not x.is_Integer
+    if isinstance(x, sp.Pow):
+        if x.exp.is_negative:
+            return True
+        if x.exp == sp.S.Half:
+            return _printed_fraction(x.base)
+    return any(_printed_fraction(a) for a in x.args)
+
+
+def _holds_fraction(base: sp.Expr, e: sp.Expr) -> bool:
+    """A factor ``base**e`` whose printed argument holds a fraction: ``e^{..}``, a function, a square root."""
+    if base is sp.E:
+        return _printed_fraction(e)
+    if e == sp.S.Half and not base.is_Atom:
+        return _printed_fraction(base)
+    if base.is_Function and e.is_Integer:
+        return any(_printed_fraction(a) for a in base.args)
+    return False
 
 
 def _normal_add(add: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
@@ -154,6 +180,9 @@ def _add_factor(term: Term, base: sp.Expr, e: sp.Expr) -> None:
     if base.is_Number and e.is_Integer:
         term.coefficient *= base**e
         return
+    if not e.is_negative and _holds_fraction(base, e):  # e^{-B (v - 1/(2B))}: after the fraction
+        term.outside.append(base**e)
+        return
     if e.is_negative:
         term.den[base] = term.den.get(base, 0) - e
     else:
@@ -170,6 +199,12 @@ def normal_term(expr: sp.Expr) -> Term:
     for d in (term.num, term.den):
         for b in [b for b, e in d.items() if e == 0]:
             del d[b]
+    c = term.coefficient
+    if not term.den and not (c.is_Rational and c.q != 1):  # no fraction bar: nothing to keep out of one
+        for b in [b for b in term.outside if not isinstance(b, sp.Add)]:
+            term.outside.remove(b)
+            base, e = b.as_base_exp()
+            term.num[base] = term.num.get(base, 0) + e
     common = set(term.num) & set(term.den)
     for b in common:  # a base on both sides (after normalising the signs of sums)
         k = term.num.pop(b) - term.den.pop(b)
@@ -235,11 +270,24 @@ class ReportPrinter(LatexPrinter):
         parts = []
         if number != 1:
             parts.append(self._print(number))
-        for b, e in sorted(plain, key=lambda be: (isinstance(be[0], sp.Add), sp.default_sort_key(be[0]))):
+        def order(be: tuple) -> tuple:  # symbols, then powers of e, then sums
+            return isinstance(be[0], sp.Add), be[0] is sp.E, sp.default_sort_key(be[0])
+
+        for b, e in sorted(plain, key=order):
             parts.append(self._factor(b, e))
-        if roots:
+        if len(roots) == 1 and isinstance(roots[0], sp.Add):  # \sqrt{B^2 + s^2}, no parentheses
+            parts.append(rf"\sqrt{{{self._print(roots[0])}}}")
+        elif roots:
             parts.append(rf"\sqrt{{{' '.join(self._factor(b, 1) for b in roots)}}}")
         return " ".join(parts)
+
+    def _outside(self, b: sp.Expr) -> str:
+        """A factor set after the fraction: a sum in parentheses, a square root of its (normalised) argument."""
+        if isinstance(b, sp.Add):
+            return rf"\left({self._print(b)}\right)"
+        if isinstance(b, sp.Pow) and b.exp == sp.S.Half:
+            return rf"\sqrt{{{self._print(b.base)}}}"
+        return self._print(b)
 
     def _term(self, t: Term) -> tuple[str, bool]:
         c = t.coefficient
@@ -251,7 +299,7 @@ class ReportPrinter(LatexPrinter):
             cn, cd = c, sp.S.One
         num = self._side(t.num, cn)
         den = self._side(t.den, cd)
-        outside = " ".join(rf"\left({self._print(b)}\right)" for b in t.outside)
+        outside = " ".join(self._outside(b) for b in t.outside)
         if not num:
             num = "1" if (den or not outside) else ""
         body = rf"\frac{{{num}}}{{{den}}}" if den else num

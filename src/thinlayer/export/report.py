@@ -182,7 +182,15 @@ class Document:
         return self
 
     def text(self, latex_text: str) -> "Document":
-        self.parts.append(latex_text.rstrip() + "\n")
+        """A paragraph; one that continues a sentence after a display (lower-case start) is not indented."""
+        lead = r"\noindent " if latex_text[:1].islower() else ""
+        self.parts.append(lead + latex_text.rstrip() + "\n")
+        return self
+
+    def lines(self, rows: list[str]) -> "Document":
+        """Untagged displayed lines, one below the other, each fitted to the page."""
+        body = " \\\\\n".join(rf"\fiteq{{{r}}}" for r in rows)
+        self.parts.append(rf"\begin{{gather*}}{body}\end{{gather*}}" + "\n")
         return self
 
     def math(self, block: str) -> "Document":
@@ -234,7 +242,46 @@ def prose(text: str) -> str:
     parts = text.split("$")
     if len(parts) % 2 == 0:
         raise ValueError(f"unbalanced $ in {text!r}")
-    return "".join(f"${q}$" if k % 2 else escape(q) for k, q in enumerate(parts))
+    # a long file or module name may break after an underscore rather than run into the margin
+    return "".join(f"${q}$" if k % 2 else escape(q).replace(r"\_", r"\_\allowbreak{}") for k, q in enumerate(parts))
+
+
+_VALUE = re.compile(r"\\kappa\(([^()]*)\) = ([-\d.]+)")
+#: widest printed-and-derived pair (visible characters, roughly) set on one line
+_ONE_LINE = 70
+
+
+def _values(form: str) -> list[tuple[str, str]] | None:
+    r"""``[(x, y), ...]`` of a form that is exactly a list ``\kappa(x) = y,\ ...``, else None."""
+    pairs = _VALUE.findall(form)
+    return pairs if pairs and r",\ ".join(rf"\kappa({x}) = {y}" for x, y in pairs) == form else None
+
+
+def _visible(form: str) -> int:
+    """About how many symbols a LaTeX formula shows (commands count as one, braces and scripts as none)."""
+    s = re.sub(r"\\(?:frac|tfrac|left|right|quad|qquad|mathcal|boldsymbol|text)\b", "", form)
+    s = re.sub(r"\\[a-zA-Z]+", "x", s)
+    return len(re.sub(r"\\.|[{}^_ ]", "", s))
+
+
+def _errata_forms(doc: Document, e: Any) -> None:
+    """The printed and derived forms: a table of values, one line, or two lines when they are long."""
+    p, d = _values(e.printed), _values(e.derived)
+    if p and d and [x for x, _ in p] == [x for x, _ in d]:
+        tables = []
+        for k in range(0, len(p), 9):
+            cols = list(zip(p[k:k + 9], d[k:k + 9]))
+            tables.append("\n".join([
+                rf"\begin{{tabular}}{{l{'r' * len(cols)}}}", r"\hline",
+                "$a/h$ & " + " & ".join(f"${x}$" for (x, _), _ in cols) + r" \\ \hline",
+                r"printed $\kappa$ & " + " & ".join(f"${y}$" for (_, y), _ in cols) + r" \\",
+                r"derived $\kappa$ & " + " & ".join(f"${y}$" for _, (_, y) in cols) + r" \\", r"\hline",
+                r"\end{tabular}"]))
+        doc.text(r"\begin{center}\footnotesize" + "\n" + "\n\\\\[1ex]\n".join(tables) + "\n" + r"\end{center}")
+    elif _visible(e.printed) + _visible(e.derived) > _ONE_LINE:
+        doc.lines([rf"\text{{printed: }} {e.printed}", rf"\text{{derived: }} {e.derived}"])
+    else:
+        doc.math(rf"\text{{printed: }} {e.printed}\qquad \text{{derived: }} {e.derived}")
 
 
 def errata_section(doc: Document) -> Document:
@@ -247,7 +294,7 @@ def errata_section(doc: Document) -> Document:
     for e in errata.ENTRIES:
         doc.text(rf"\paragraph{{({e.equation}) {prose(e.quantity)} ({kinds.get(e.kind, escape(e.kind))}).}} "
                  rf"{prose(e.evidence)}")
-        doc.math(rf"\text{{printed: }} {e.printed}\qquad \text{{derived: }} {e.derived}")
+        _errata_forms(doc, e)
     return doc
 
 
@@ -451,8 +498,8 @@ def _nu_latex(layer: Any) -> str:
     if layer.parameter is not None or nu is None:
         return r"\nu"
     exact = getattr(layer, "nu", None)
-    if isinstance(exact, sp.Rational):
-        return sp.latex(exact)
+    if isinstance(exact, sp.Rational):  # inline: 1/2, not a \frac
+        return str(exact.p) if exact.q == 1 else f"{exact.p}/{exact.q}"
     return _num(nu, 6)
 
 
@@ -604,9 +651,12 @@ def _boundary_part(doc: Document, der: Any) -> None:
     doc.math(r"B = \frac{1}{\mathcal{A} + \sqrt{\mathcal{A}^2 + 2 m_1}},\quad C = \frac{B}{\mathcal{A}}"
              r" \tag{3.20--3.21}")
     lhs = r"\frac{\mathcal{A}\,\tilde q^{**}}{\vartheta H_* b_1^*}"
-    doc.text(r"The boundary-layer pressure, (3.23), and its form in the edge variable $v$, (3.24):")
+    doc.text(r"The boundary-layer pressure for an edge at $v = h$, (3.23); the edge condition (3.18), "
+             r"$\tilde q^{**} = 0$ at the edge, fixes $h = h^*$ of (3.25) below and gives its form in the edge "
+             r"variable $v$, (3.24):")
     doc.math(rf"{lhs}(s, h + \tau) = {_nl(sol.q_general(tau, h))} \tag{{3.23}}")
-    doc.math(rf"{lhs}(s, v) = {_nl(sol.q(v))} \tag{{3.24}}")
+    h_star = sp.Symbol("h^*", real=True)
+    doc.math(rf"{lhs}(s, v) = {_nl(AlexandrovSolution(sol.params, h_star).q(v))} \tag{{3.24}}")
     doc.text(r"so that the contact edge lies the distance $h^* H$ inside the leading contour $\Gamma_0$, (3.25):")
     doc.math(rf"h^* = {_nl(1 / sp.sqrt(C) - 1 / (2 * B))} \tag{{3.25}}")
     force_words = ("the first correction is of relative order $(H/a)^3$, since $m_1 = 0$"
@@ -652,15 +702,34 @@ def _two_term_part(doc: Document, der: Any) -> None:
         r"Near $\nu = 1/2$ the compressible expansion needs $\lambda^2 = (a/H)^2/m_1 \gg 1$ (I.13); the two-term "
         r"model (I.10), $-\Delta p + k^2 p = f$ with $f = \vartheta (\delta_0 - \Phi)/(c_1 H^3)$ and "
         r"$k^2 = 1/(m_1 H^2)$, holds in both regimes. For the sphere, in terms of the contact radius $c$:")
-    doc.math(_regroup(two_term_sphere(layer).latex()))
+    _tagged(doc, _sphere_rows(two_term_sphere(layer)))
 
 
-def _regroup(block: str) -> str:
-    """A stage's tagged lines with numbers to six digits (they come from sympy's printer)."""
-    def short(m: re.Match) -> str:
-        return _num(float(m.group(0)))
+def _tagged(doc: Document, rows: list[tuple[str, str]]) -> None:
+    """Display ``(line, tag)`` rows, consecutive rows with the same tag as one group under one tag."""
+    k = 0
+    while k < len(rows):
+        j = k
+        while j < len(rows) and rows[j][1] == rows[k][1]:
+            j += 1
+        doc.group([r for r, _ in rows[k:j]], rows[k][1])
+        k = j
 
-    return re.sub(r"(?<![\w.])\d+\.\d{7,}", short, block)
+
+def _sphere_rows(ts: Any) -> list[tuple[str, str]]:
+    """(I.10), (I.11) of a :class:`TwoTermSphere`, each formula by the report's policy."""
+    rows = [] if ts.is_incompressible else [(rf"k^2 = {_nl(ts.k2)}", "I.10")]
+    rows += [(rf"\delta_0 = {_nl(ts.delta0_of_c)}", "I.11"), (rf"P = {_nl(ts.force_of_c)}", "I.11")]
+    if not ts.is_incompressible:
+        rows.append((r"\delta_0 = \frac{c^2 (1 - 2\psi(kc))}{2R},\quad P = 2\pi f_2 c^6 \chi(kc),\quad "
+                     r"\psi(x) = \frac{x I_0(x)/I_1(x) - 2}{x^2},\quad \chi(x) = \frac{1/4 - \psi(x)}{x^2}", "I.11"))
+    return rows
+
+
+def _zero(expr: Any) -> str:
+    """``expr = 0`` with the sign of its first term positive (the sign of an equation's side is free)."""
+    text = _nl(sp.factor(expr))
+    return (text[2:] if text.startswith("- ") else text) + " = 0"
 
 
 def _incompressible_part(doc: Document, der: Any) -> None:
@@ -678,26 +747,46 @@ def _incompressible_part(doc: Document, der: Any) -> None:
     doc.section("Incompressible layer: Maclaurin data and thin-layer operator").text(
         r"At $\nu = 1/2$ the coefficient $\mathcal{A}$ of (2.4) vanishes: the compressible expansion "
         r"(2.20)--(3.25) does not exist, and the leading operator is of second order, (I.1) and (I.2):")
-    doc.math(_regroup(incompressible_coefficients(der.coefficient_order).latex()))
-    doc.math(_regroup(thin_layer_operator(layer).latex()))
+    co = incompressible_coefficients(der.coefficient_order)
+    series = _signed_sum([(cn, rf"s^{{{2 * n}}}") for n, cn in enumerate(co.c) if n])
+    doc.math(rf"\frac{{\mathcal{{L}}(s)}}{{s}} = {series} + \dots,\quad \mathcal{{A}} = c_0 = 0 \tag{{I.1}}")
+    op = thin_layer_operator(layer)
+    ops = [r"p", r"\Delta p"] + [rf"\Delta^{{{n}}} p" for n in range(2, len(op.c))]
+    terms = _signed_sum([((-1) ** n * cn * S.H ** (2 * n + 1) / op.vartheta, ops[n]) for n, cn in enumerate(op.c)])
+    doc.math(rf"u_3 = {terms} + \dots \tag{{I.2}}")
     doc.section("Punch and the obstacle problem").text(r"The punch, (1.1), and the obstacle problem (I.3)--(I.5):")
     doc.math(rf"\Phi(x_1, x_2) = {_nl(punch.expr)} \tag{{1.1}}")
-    doc.math(_regroup(obstacle_problem(layer, punch).latex()))
+    ob = obstacle_problem(layer, punch)
+    lhs = r"-\Delta p" if ob.is_incompressible else rf"-\Delta p + {_nl(ob.k2)}\, p"
+    rows = [(rf"{lhs} = {_nl(ob.source)},\quad \mathbf{{x}} \in \omega", ob.equation),
+            (r"p = \frac{\partial p}{\partial n} = 0 \ \text{on}\ \partial\omega,\quad p > 0 \ \text{in}\ \omega",
+             "I.4")]
+    if ob.is_incompressible:
+        rows.append((rf"\iint_\omega \left({_nl(S.delta0 - punch.expr)}\right) d\mathbf{{x}} = 0", "I.5"))
+    _tagged(doc, rows)
     kind = punch.name
     if kind.startswith("paraboloid"):
-        doc.section("Solution for the sphere (I.11)").math(_regroup(two_term_sphere(layer).latex()))
+        doc.section("Solution for the sphere (I.11)").text(r"In terms of the contact radius $c$:")
+        _tagged(doc, _sphere_rows(two_term_sphere(layer)))
     elif kind == "elliptic paraboloid":
-        doc.section("Solution for the elliptic paraboloid (I.6)--(I.8)").math(
-            _regroup(incompressible_ellipse().latex()))
+        el = incompressible_ellipse()
+        doc.section("Solution for the elliptic paraboloid (I.6)--(I.8)").text(
+            r"The contact area is an ellipse with semi-axes $a \ge b$; its aspect $t = a^2/b^2$ solves (I.6) with "
+            r"$r = R_1/R_2$, and the semi-axes, the constant $C$ of the pressure and the force follow, (I.7), (I.8):")
+        _tagged(doc, [(_zero(el.aspect_equation), "I.6"), (rf"t = {_nl(el.t)}", "I.6"),
+                      (rf"a^2 = {_nl(el.a2_t)},\quad b^2 = {_nl(el.b2_t)}", "I.7"), (rf"C = {_nl(el.C_t)}", "I.7"),
+                      (rf"P = {_nl(el.force_t)}", "I.8")])
     elif _axisymmetric_punch(punch):
-        doc.section("Solution for an axisymmetric punch (I.9)").math(
-            _regroup(incompressible_axisymmetric(punch).latex()))
+        ax = incompressible_axisymmetric(punch)
+        doc.section("Solution for an axisymmetric punch (I.9)").text(
+            r"The contact radius $c$ solves the first equation; the pressure and the force in terms of $c$:")
+        _tagged(doc, [(_zero(ax.radius_equation), "I.9"), (rf"p(r) = {_nl(ax.pressure_of_c)}", "I.9"),
+                      (rf"P = {_nl(ax.force_of_c)}", "I.9")])
     h = float(two_term_edge_shift(layer, dps=15))
     doc.section("Edge correction (I.12)").text(
         rf"The model's edge lies $h H$ outside the true contact edge, $h = {_num(h, 8)}$ at $\nu = 1/2$ "
         r"(the edge layer of width $H$ that the model neglects); \texttt{thinlayer.solve} reports the corrected "
         r"radius $c - hH$ and estimates the model's force error by $2hH/c$.")
-
 
 def _axisymmetric_punch(punch: Any) -> bool:
     e = punch.expr
