@@ -71,7 +71,7 @@ def main(argv: list[str]) -> int:
         rows += print_rows(mod.run())
     print_summary(rows)
     if args.readme:
-        write_readme(rows, "python3 benchmarks/run.py " + " ".join(argv).replace("--readme", "").strip())
+        write_readme(rows, " ".join(["python3 benchmarks/run.py", *(a for a in argv if a != "--readme")]))
     return 1 if args.strict and any(r.verdict() == "FAIL" for r in rows) else 0
 
 
