@@ -164,6 +164,11 @@ def _quadratic_data(expr: sp.Expr):
     return K, b, c
 
 
+def radial_monomial(expr: sp.Expr):
+    """``(c, k)`` when ``expr = c r^{2k}`` (``r^2 = x1^2 + x2^2``), else None."""
+    return _radial_monomial(expr)
+
+
 def _radial_monomial(expr: sp.Expr):
     """``(c, k)`` if Phi = c (x1^2 + x2^2)^k, else None."""
     poly = sp.Poly(expr, S.x1, S.x2)
@@ -407,6 +412,10 @@ class ForceLaw(RichDisplay):
         return " \\\\\n".join(lines)
 
     # ---- numeric -----------------------------------------------------------------------------
+    def parameter_values(self, values: dict) -> dict:
+        """``{name or symbol: value}`` -> ``{punch parameter symbol: value}`` (matched by name)."""
+        return self._numeric_values(values)
+
     def _numeric_values(self, values: dict) -> dict:
         """``{name or symbol: value}`` -> ``{punch parameter symbol: value}`` (matched by name)."""
         by_name = {q.name: q for q in self.punch.parameters}
