@@ -307,8 +307,8 @@ def test_solve_bad_input():
         solve(layer, Punch((S.x1**2 + S.x2**2 - 1) ** 2), delta0=0.25, H=0.01)
     with pytest.raises(ValueError, match="components|connected"):  # two islands
         solve(layer, Punch((S.x1**2 - 1) ** 2 + S.x2**2), delta0=0.5, H=0.01)
-    with pytest.raises(NotImplementedError, match="first correction"):
-        solve(layer, punch, delta0=0.1, H=0.1, order=2)
+    with pytest.raises(NotImplementedError, match="second correction"):  # (SO.9)-(SO.10) are the last derived
+        solve(layer, punch, delta0=0.1, H=0.1, order=3)
     with pytest.raises(ValueError, match="numeric Poisson"):
         solve(BondedLayer(), punch, delta0=0.1, H=0.1)
     with pytest.raises(NotImplementedError, match="BondedLayer"):

@@ -131,6 +131,13 @@ eps, beta, p_ = sp.symbols("epsilon beta p")
 h0_, m1_ = sp.symbols("h^* m_1", real=True)
 Phi_ = sp.Function("Phi")
 
+#: order of accuracy of each second-order result, as (exponent of H/a, statement)
+ORDERS = {
+    "force": (4, "P = P_0 + P_1 + P_2 + O(P_0 (H/a)^4)   (SO.9)"),
+    "contact_area": (3, "|omega| = (SO.10) + O(|omega_0| (H/a)^3)"),
+    "pressure_composite": (2, "composite pressure with the second-order boundary layer (SO.7): O(p_max (H/a)^2)"),
+}
+
 #: safety factors of the second-order error estimates (module docstring)
 ERROR_FACTORS = {"force": 2.0, "contact_area": 2.0}
 

@@ -77,7 +77,7 @@ class ValidityError(ValueError):
         self.quantity, self.estimate, self.tol, self.model, self.value = quantity, estimate, tol, model, value
 
 #: the force and area laws are derived to their first correction in H
-MAX_FORCE_ORDER = 1
+MAX_FORCE_ORDER = 2
 
 
 @lru_cache(maxsize=128)
@@ -164,6 +164,8 @@ class ContactSolution(RichDisplay):
     _contour: Any = field(default=None, repr=False)
     error_estimate: dict = field(default_factory=dict)
     tol: float = DEFAULT_TOL
+    order: int = 1
+    second: tuple[float, float] | None = None  # (P_2, area_2) of (SO.9), (SO.10) when order == 2
 
     # ---- the numbers -------------------------------------------------------------------------
     @property
@@ -203,7 +205,12 @@ class ContactSolution(RichDisplay):
         """``{result: (statement, (H/a)^order)}``: the size of the neglected remainder, relative."""
         eps = self.H_over_a
         out = {}
-        for key, (k, text) in ORDERS.items():
+        orders = dict(ORDERS)
+        if self.order == 2:
+            from .second_order import ORDERS as ORDERS_2
+
+            orders.update(ORDERS_2)
+        for key, (k, text) in orders.items():
             if key == "pressure_interior":
                 k = 2 * self.terms
                 text = text.replace("2K", str(2 * self.terms)).replace("K", str(self.terms))
@@ -228,6 +235,10 @@ class ContactSolution(RichDisplay):
     def composite(self) -> CompositePressure:
         """The composite pressure object (built on first use; the exact table once per nu)."""
         self.contour  # noqa: B018 - raises early for a non-smooth or multiply connected contour
+        if self.order == 2:
+            from .second_order import composite_pressure_second_order
+
+            return composite_pressure_second_order(self.layer, self.punch, self.delta0, self.H, self.mu, nu=self.nu)
         return composite_pressure(self.layer, self.punch, self.delta0, self.H, self.mu, self.terms,
                                   self.boundary_layer, nu=self.nu)
 
@@ -249,8 +260,18 @@ class ContactSolution(RichDisplay):
         return self.composite
 
     # ---- output ------------------------------------------------------------------------------
+    @property
+    def P2(self) -> float:
+        """The second-order force term (SO.9) (0 unless ``order == 2``)."""
+        return self.second[0] if self.second else 0.0
+
+    def _terms(self) -> tuple[float, float, float]:
+        v = self.values
+        return v.P0, v.P1 - self.P2, self.P2
+
     def latex(self) -> str:
         v = self.values
+        P0, P1, P2 = self._terms()
         nu = getattr(self.layer, "nu", None)
         nu = sp.latex(sp.Rational(Fraction(mpmath.nstr(mpmath.mpf(self.nu), 15)))
                       if nu is None or isinstance(nu, mpmath.mpf) else nu)
@@ -259,14 +280,19 @@ class ContactSolution(RichDisplay):
         rows = [
             rf"\Phi = {sp.latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
             rf"\quad H = {self.H:.6g},\quad \mu = {self.mu:.6g},\quad H/a = {self.H_over_a:.4g}",
-            rf"P = {v.P0:.8g} {'-' if v.P1 < 0 else '+'} {abs(v.P1):.8g} = {v.force:.8g}"
-            rf"\ \left(\pm {self._abs_estimate('force'):.2g}\right) \tag{{1.8}}",
-            rf"|\omega| = {v.area0:.8g} - {v.edge_shift:.8g} \cdot {self.H:.6g} \cdot {v.perimeter:.8g}"
-            rf" = {v.area:.8g}\ \left(\pm {self._abs_estimate('contact_area'):.2g}\right) \tag{{3.25}}",
+            rf"P = {P0:.8g} {'-' if P1 < 0 else '+'} {abs(P1):.8g}"
+            + (rf" {'-' if P2 < 0 else '+'} {abs(P2):.8g}" if self.second else "")
+            + rf" = {v.force:.8g}\ \left(\pm {self._abs_estimate('force'):.2g}\right) \tag{{{self._tags()[0]}}}",
+            rf"|\omega| = {v.area0:.8g} - {self.edge_shift:.8g} \cdot {self.H:.6g} \cdot {v.perimeter:.8g}"
+            + (rf" {'-' if self.second[1] < 0 else '+'} {abs(self.second[1]):.8g}" if self.second else "")
+            + rf" = {v.area:.8g}\ \left(\pm {self._abs_estimate('contact_area'):.2g}\right) \tag{{{self._tags()[1]}}}",
             rf"h^* = {self.edge_shift:.10g}\ (\text{{exact}}),\quad \tilde h^* = {self.edge_shift_alexandrov:.10g}"
             r"\ (\text{Alexandrov}) \tag{3.25}",
         ]
         return " \\\\\n".join(rows)
+
+    def _tags(self) -> tuple[str, str]:
+        return ("SO.9", "SO.10") if self.second else ("1.8", "3.25")
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
@@ -274,11 +300,13 @@ class ContactSolution(RichDisplay):
 
     def __str__(self) -> str:
         v = self.values
+        P0, P1, P2 = self._terms()
+        corr = f"correction {P1:+.6g}" + (f", second order {P2:+.6g}" if self.second else "")
         return (
             f"ContactSolution({self.punch.name}: delta0={self.delta0:.6g}, H={self.H:.6g}, mu={self.mu:.6g}, "
             f"nu={self.nu:.6g}{', frictionless base' if self.layer.base == 'frictionless' else ''}; "
-            f"H/a={self.H_over_a:.3g})\n"
-            f"  force        P = {v.force:.8g}  (leading {v.P0:.8g}, correction {v.P1:+.6g}; "
+            f"H/a={self.H_over_a:.3g}{'; second order' if self.second else ''})\n"
+            f"  force        P = {v.force:.8g}  (leading {P0:.8g}, {corr}; "
             f"error estimate {self._pct('force')})\n"
             f"  contact area   = {v.area:.8g}  (leading {v.area0:.8g}; error estimate {self._pct('contact_area')})\n"
             f"  edge shift h*  = {self.edge_shift:.10g} exact, {self.edge_shift_alexandrov:.10g} Alexandrov"
@@ -368,12 +396,14 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     if boundary_layer not in BOUNDARY_LAYERS:
         raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
     if isinstance(order, bool) or not isinstance(order, int) or order < 0:
-        raise ValueError(f"order must be 0 or 1 (corrections in the force law), got {order!r}")
+        raise ValueError(f"order must be 0, 1 or 2 (corrections in the force law), got {order!r}")
     if order > MAX_FORCE_ORDER:
         raise NotImplementedError(
-            f"order={order}: the force and contact-area laws are derived to their first correction in H "
-            f"(order <= {MAX_FORCE_ORDER}); the next terms need the second-order boundary layer"
+            f"order={order}: the force and contact-area laws are derived to their second correction in H "
+            f"(order <= {MAX_FORCE_ORDER}, (SO.9)-(SO.10)); the next terms need the third-order boundary layer"
         )
+    if order == 2 and boundary_layer != "exact":
+        raise ValueError("order=2 uses the exact boundary layer (SO.7); boundary_layer='alexandrov' is first order")
     if isinstance(terms, bool) or not isinstance(terms, int) or terms < 1:
         raise ValueError(f"terms must be an integer >= 1 (inner terms p_0 .. p_(terms-1)), got {terms!r}")
     if H is None:
@@ -392,7 +422,9 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
             raise ValidityError(f"compressible: force/mu = {Pt:.3g}/{mm:.3g} is beyond the double range; "
                                 "express force and mu in other units", "force")
         try:
-            d0 = law.indentation(per_mu, HH, 1.0, nu=nu_value, order=order)
+            d0 = law.indentation(per_mu, HH, 1.0, nu=nu_value, order=min(order, 1))
+            if order == 2:
+                d0 = _second_order_indentation(layer, pn, per_mu, HH, nu_value, d0)
         except (OverflowError, ZeroDivisionError) as exc:
             raise ValidityError(f"compressible: the indentation for force = {Pt:.3g} is beyond the double range "
                                 f"({exc}); express the lengths in other units", "force") from None
@@ -414,11 +446,48 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     except (OverflowError, ZeroDivisionError) as exc:
         raise ValidityError(f"compressible: the contact geometry is beyond the double range at delta0 = {d0:.3g}, "
                             f"H = {HH:.3g} ({exc}); express the lengths in other units", "force") from None
+    second = None
+    if order == 2:
+        from .second_order import second_order_error_estimate, second_order_law
+
+        try:
+            v2 = second_order_law(layer, pn).evaluate(d0, HH, 1.0, nu=nu_value)
+            est = second_order_error_estimate(v2)
+        except (OverflowError, ZeroDivisionError) as exc:
+            raise ValidityError(f"compressible: the second-order terms are beyond the double range at "
+                                f"delta0 = {d0:.3g}, H = {HH:.3g} ({exc}); express the lengths in other units",
+                                "force") from None
+        second = (v2.P2 * mm, v2.area2)
+        vals = ForceValues(vals.delta0, vals.H, vals.P0, vals.P1 + v2.P2, vals.area0, vals.perimeter,
+                           vals.edge_shift - v2.area2 / (HH * vals.perimeter), vals.V, vals.J)
     _check_overflow(vals, mm)
-    vals = _scaled(vals, mm, order)
+    vals = _scaled(vals, mm, min(order, 1))
     _check_validity(layer, pn, nu_value, vals, est, tol_v, mm)
     return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour,
-                           est, tol_v)
+                           est, tol_v, order, second)
+
+
+def _second_order_indentation(layer, punch, per_mu, H, nu, guess):
+    """``delta0`` with ``P0 + P1 + P2 = per_mu`` (per unit mu): Brent's method around the first-order depth."""
+    from scipy.optimize import brentq
+
+    from .second_order import second_order_law
+
+    law = second_order_law(layer, punch)
+
+    def resid(d):
+        return law.evaluate(d, H, 1.0, nu=nu).force - per_mu
+
+    lo, hi = guess, guess
+    for _ in range(60):
+        lo, hi = lo * 0.9, hi * 1.1
+        try:
+            if resid(lo) < 0 < resid(hi):
+                return brentq(resid, lo, hi, xtol=1e-15 * guess, rtol=1e-14)
+        except (ValueError, PunchError):
+            continue
+    raise ValidityError(f"compressible: no depth gives the second-order force {per_mu:.6g} mu near the first-order "
+                        f"depth {guess:.6g}; use order=1 or model='direct'", "force")
 
 
 @dataclass(frozen=True)

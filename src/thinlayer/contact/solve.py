@@ -380,8 +380,13 @@ def _compressible(layer, punch, shape, delta0, force, H, mu, nu, tol, options) -
         est["contact_radius"] = est["contact_area"] / 2
     axes = None
     if shape.quadric is not None and not shape.axisymmetric:
-        shift = sol.edge_shift * H  # the contour moves inward by h* H along its normal (3.25)
-        axes = tuple(math.sqrt(2 * sol.delta0 / k) - shift for k in shape.quadric[:2])
+        semi = [math.sqrt(2 * sol.delta0 / k) for k in shape.quadric[:2]]
+        if sol.order == 2:  # (SO.5): h = h* + m1 H (kappa/2 + Phi_nn/(2g)); at the end of axis i kappa = a_i/a_j^2
+            m1 = float(layer.m(1))
+            axes = tuple(a - H * (sol.edge_shift + m1 * H * (a / b**2 + 1 / a) / 2)
+                         for a, b in (semi, semi[::-1]))
+        else:  # the contour moves inward by h* H along its normal (3.25)
+            axes = tuple(a - sol.edge_shift * H for a in semi)
     extent = _LazyExtent(punch, sol.delta0)  # needed by max_pressure only
     return Indentation(layer, punch, sol.delta0, sol.force, H, mu, nu, sol.contact_area, radius, axes,
                        "compressible", "", est, tol, sol, sol.pressure, extent)
@@ -768,7 +773,9 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     names = ASYMPTOTIC if choice in ("auto", "asymptotic") else (choice,)
     for name in names:
         try:
-            ans = _asymptotic(name, layer, pn, shape, d0, Pt, HH, mm, nu_v, tol_v, options)
+            # the options (order, terms, boundary_layer) are the compressible model's: "auto" tries the others without
+            opts = options if name == "compressible" or choice not in ("auto", "asymptotic") else {}
+            ans = _asymptotic(name, layer, pn, shape, d0, Pt, HH, mm, nu_v, tol_v, opts)
         except _NotApplicable as exc:
             tried.append(f"{name}: {exc}")
             continue
