@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[2]
 BASE = {"derivation": "name='x'\n", "layer": "nu='3/10'\n", "punch": "kind='paraboloid'\n"}
 OPTIONAL = {"coefficients": "order=2\n", "inner": "order=2\n", "edge_shift": "nu=[0.3]\n",
             "contact": "delta0=0.1\nH=0.01\nparameters={R=1}\n", "validation": "nu=[0.3]\n", "units": "length='mm'\n",
-            "flat_punch": "a_over_H=[1]\n"}
+            "flat_punch": "a_over_H=[1]\n", "second_order": "nu=['3/10']\n"}
 
 
 def _file(tmp_path, tables: dict) -> Path:
@@ -124,3 +124,43 @@ def test_bad_names_and_titles(tmp_path):
 @pytest.mark.parametrize("path", sorted((ROOT / "derivations").glob("*.toml")), ids=lambda p: p.stem)
 def test_shipped_files_follow_the_schema(path):
     check_schema(tomllib.loads(path.read_text()))  # raises on an unknown key or a wrong type
+
+
+@pytest.mark.parametrize("line, expected", [
+    ("nu = 0.3", "nu = 0.3 is invalid: expected a list"),
+    ("nu = []", "a list of 1 to 12 Poisson ratios"),
+    ("nu = [0.1, 0.2, 0.3, 0.4, 0.1, 0.2, 0.3, 0.4, 0.1, 0.2, 0.3, 0.4, 0.1]", "a list of 1 to 12 Poisson ratios"),
+    ("nu = ['1/2']", "'1/2' is outside (-1, 1/2)"),
+    ("nu = [0.5]", "0.5 is outside (-1, 1/2)"),
+    ("nu = [-1]", "-1 is outside (-1, 1/2)"),
+    ("nu = ['__import__(\"os\")']", "is invalid"),
+    ("nu = ['3/10 + 1']", "is invalid"),
+    ("nu = [true]", "True is invalid"),
+    ("nu = ['bonded']", "'bonded' is invalid"),
+])
+def test_second_order_table_is_validated(tmp_path, line, expected):
+    tables = {**BASE, "second_order": line + "\n"}
+    with pytest.raises(DerivationFileError) as exc:
+        load_derivation(_file(tmp_path, tables))
+    assert "[second_order]" in str(exc.value) and expected in str(exc.value), str(exc.value)
+    assert "\n" not in str(exc.value)
+
+
+def test_second_order_table_accepts_numbers_fractions_and_the_frictionless_base(tmp_path):
+    from fractions import Fraction
+
+    tables = {**BASE, "second_order": "nu = ['0', '3/10', 0.45, -0.5, 'frictionless']\n"}
+    der = load_derivation(_file(tmp_path, tables))
+    assert der.second_order == {"nu": [Fraction(0), Fraction(3, 10), 0.45, -0.5, "frictionless"]}
+    default = load_derivation(_file(tmp_path, {**BASE, "second_order": ""}))
+    assert len(default.second_order["nu"]) == 6 and "frictionless" in default.second_order["nu"]
+    assert load_derivation(_file(tmp_path, BASE)).second_order is None
+
+
+@pytest.mark.parametrize("tables", [
+    {"layer": "nu='1/2'\n"},
+    {"punch": "kind='flat'\n", "flat_punch": "a_over_H=[1]\n"},
+])
+def test_second_order_needs_the_compressible_expansion_of_a_polynomial_punch(tmp_path, tables):
+    with pytest.raises(DerivationFileError, match=r"\[second_order\] is for the compressible expansion"):
+        load_derivation(_file(tmp_path, {**BASE, **tables, "second_order": "nu=[0.3]\n"}))

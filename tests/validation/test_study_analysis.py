@@ -132,3 +132,38 @@ def test_results_are_frozen(small_study):
 def test_unknown_quantity():
     with pytest.raises(ValueError, match="unknown quantity"):
         ValidationStudy(()).observed_orders(("stiffness",))
+
+
+# ---------------------------------------------------------------------------------------------
+# the second order (SO.9), (SO.10) next to the first
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("nu", SMALL_NUS)
+def test_second_order_improves_on_the_first(small_study, nu):
+    for r in small_study.rows:
+        if r.nu == nu:
+            assert math.isfinite(r.force_second) and math.isfinite(r.area_second)
+            assert r.resolved("force_second") and r.resolved("contact_area_second")
+            assert abs(r.force_second_error) < abs(r.force_error) / 10  # P_2 is the first-order remainder
+            assert abs(r.area_second_error) < abs(r.area_error) / 3
+
+
+@pytest.mark.parametrize("nu", SMALL_NUS)
+def test_second_order_remainders_reported_with_their_claims(small_study, nu):
+    # (SO.9): O(P_0 (H/a)^4); (SO.10): O(|omega_0| (H/a)^3); shown next to the claim, not judged
+    force, area = _fit(small_study, "sphere", nu, "force_second"), _fit(small_study, "sphere", nu,
+                                                                         "contact_area_second")
+    assert (force.claimed, area.claimed) == (4, 3) and force.kind == area.kind == "reported"
+    assert force.matches is None and force.status == "reported"
+    assert 3.4 <= force.observed <= 4.6 and 2.6 <= area.observed <= 3.4  # over H/a = 0.1 ... 0.0125
+
+
+def test_second_order_in_the_outputs(small_study):
+    text = small_study.table()
+    assert "err P(2)" in text and "err A(2)" in text and "force_second" in text and "reported" in text
+    tex = small_study.latex()
+    assert r"err $P^{(2)}$" in tex and r"err $|\omega|^{(2)}$" in tex and r"force\_second" in tex
+    d = json.loads(small_study.to_json())
+    row = d["rows"][0]
+    assert row["force_second_error"] == pytest.approx(small_study.rows[0].force_second_error)
+    assert row["contact_area_second_error"] == pytest.approx(small_study.rows[0].area_second_error)
+    assert {f["quantity"] for f in d["observed_orders"]} >= {"force_second", "contact_area_second"}

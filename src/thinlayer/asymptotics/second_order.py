@@ -106,6 +106,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import parse_nu
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
@@ -313,12 +314,13 @@ def edge_constants(layer: Any, dps: int = 20) -> EdgeConstants:
     >>> print(f"{c.r3:.9f} {c.sphere_coefficient:.6f}")
     0.053008374 0.636100
     """
-    key = layer.edge_shift_key if isinstance(layer, LayerKernel) else layer
-    if isinstance(key, sp.Basic) and key.free_symbols:
-        raise ValueError("the second-order constants need a numeric Poisson ratio, e.g. BondedLayer(0.3)")
-    if not isinstance(key, str):
-        key = str(sp.nsimplify(key) if not isinstance(key, float) else sp.Rational(key))
-    return _edge_constants(key, int(dps))
+    if isinstance(layer, LayerKernel):
+        key = layer.edge_shift_key  # the exact nu (a float as its binary value), or "frictionless"
+    elif isinstance(layer, str) and layer == "frictionless":
+        key = layer
+    else:
+        key = parse_nu(layer, floats="exact", symbols=False, example="0.3, '3/10' or BondedLayer(0.3)")
+    return _edge_constants(str(key), int(dps))
 
 
 # ---------------------------------------------------------------------------------------------

@@ -259,6 +259,11 @@ def _cmd_solve(args) -> int:
     if (args.mu is None) == (args.E is None):
         raise BadInput("give exactly one of --mu (shear modulus) and --E (Young's modulus)")
     opts = {} if args.boundary_layer == "exact" else {"boundary_layer": args.boundary_layer}
+    if args.order == 2:  # the compressible model's second-order laws (SO.9), (SO.10)
+        if args.flat is not None:
+            raise BadInput("--order 2 is the second order of a polynomial punch's thin-layer expansion; the flat "
+                           "punch (--flat) has its own laws: leave out --order")
+        opts["order"] = 2
     ans = solve(layer, punch, delta0=args.delta0, force=args.force, H=args.H, mu=args.mu, E=args.E,
                 model=args.model, tol=args.tol, parameters=_params(args.param), **opts)
     for name in ("force", "contact_area", "delta0"):
@@ -279,6 +284,8 @@ def _cmd_solve(args) -> int:
                     "edge_shift_alexandrov": sol.edge_shift_alexandrov,
                     "remainder": {k: {"statement": t, "relative_size": e}
                                   for k, (t, e) in sol.order_of_accuracy.items()}})
+        if getattr(sol, "order", 1) == 2:
+            out.update({"order": 2, "force_second_correction": float(sol.P2)})
     if args.json:
         _print(out, True)
     else:
@@ -298,6 +305,13 @@ def _solve_layer(kind: str, nu: str):
         return FrictionlessLayer(val) if kind == "frictionless" else BondedLayer(val)
     except (ValueError, TypeError, ArithmeticError) as exc:
         raise BadInput(f"--nu {nu}: {exc}") from exc
+
+
+def _solve_order(text: str) -> int:
+    """``solve --order``: 1 (the first-order laws (1.8), (3.25)) or 2 (the second order (SO.9), (SO.10))."""
+    if text.strip() not in ("1", "2"):
+        raise argparse.ArgumentTypeError(f"must be 1 or 2 (the order of the thin-layer laws), got {text!r}")
+    return int(text)
 
 
 def _tolerance(text: str) -> float:
@@ -345,6 +359,11 @@ def _codegen_result(args):
 
         if args.param:
             punch = punch.subs(_params(args.param))
+        if args.order not in (None, 1, 2):
+            raise BadInput(f"force: --order {args.order}: 1 (the force law (1.8) and area (3.25), the default) or 2 "
+                           "(the second-order laws (SO.9), (SO.10))")
+        if args.order == 2:
+            return _second_order_law(args, punch)
         return force_law(_layer(args.nu or "symbolic"), punch)
     if args.result in ("incompressible", "two-term"):
         return _nearly_incompressible_result(args, punch)
@@ -357,6 +376,22 @@ def _codegen_result(args):
     sol = solve(_layer(args.nu), punch, delta0=args.delta0, H=args.H, mu=args.mu,
                 parameters=_params(args.param), boundary_layer="alexandrov")
     return sol.composite
+
+
+def _second_order_law(args, punch):
+    """``codegen force --order 2``: the force (SO.9) and area (SO.10) of one layer (numeric nu: h^*, r_3 numbers)."""
+    from ..asymptotics.second_order import second_order_law
+
+    if args.nu in (None, "symbolic") and args.base == "bonded":
+        raise BadInput("force --order 2: give a numeric --nu, e.g. --nu 3/10 (the constants h*, m_1, r_3 of the "
+                       "second-order laws are numbers per nu), or --base frictionless")
+    layer = _layer(args.nu or "symbolic", "frictionless" if args.base == "frictionless" else "bonded")
+    law = second_order_law(layer, punch)
+    try:
+        law.codegen_expressions()  # refuses a law without closed form (elliptic integrals, a numerical contour)
+    except ValueError as exc:
+        raise BadInput(f"force --order 2: {exc}") from exc
+    return law
 
 
 def _flat_punch_law(args):
@@ -555,11 +590,13 @@ def _add_solve(sub: Any, fmt: type) -> None:
                                    "max_pressure,\nH, mu, E, nu, H_over_a, error_estimate (relative), tol, layer; "
                                    "with the compressible model also\nforce_leading, force_correction, "
                                    "contact_area_leading, perimeter, edge_shift_exact,\nedge_shift_alexandrov, "
-                                   "remainder.",
+                                   "remainder; with --order 2 also order, force_second_correction (P_2 of (SO.9)).",
                        epilog="examples:\n  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 "
                               "--H 0.1 --E 2 --json\n  thinlayer solve --layer frictionless --nu 0.5 --punch "
                               "'x_1**2/8 + x_2**2/2' --force 100 --H 0.05 --mu 1\n"
-                              "  thinlayer solve --flat 1 --nu 0.3 --delta0 0.01 --H 0.5 --E 2.6")
+                              "  thinlayer solve --flat 1 --nu 0.3 --delta0 0.01 --H 0.5 --E 2.6\n"
+                              "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 --H 0.05 "
+                              "--mu 1 --order 2")
     s.add_argument("--layer", choices=("bonded", "frictionless"), default="bonded",
                    help="the base under the layer: bonded (default) or frictionless")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
@@ -575,6 +612,9 @@ def _add_solve(sub: Any, fmt: type) -> None:
                                         "asymptotic: refuse instead of solving directly; or one model")
     s.add_argument("--tol", type=_tolerance, default=0.05,
                    help="largest relative error estimate accepted (default 0.05)")
+    s.add_argument("--order", type=_solve_order, default=1,
+                   help="order of the compressible model's laws: 1 (default; force (1.8), area (3.25)) or 2 "
+                        "(second order: force (SO.9) to O((H/a)^4), area (SO.10) to O((H/a)^3))")
     s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
                    help="boundary layer of the compressible model's composite pressure (default exact)")
     s.add_argument("--flat", type=_finite, metavar="A",
@@ -596,7 +636,9 @@ def _add_errata(sub: Any, fmt: type) -> None:
 def _add_codegen(sub: Any, fmt: type) -> None:
     g = sub.add_parser("codegen", formatter_class=fmt, help="generate C, Fortran, Rust, Julia, Octave or Python code",
                        description="Generate functions from a result: 'inner' (pressure (2.26)), 'force' (force "
-                                   "law (1.8) and contact area), 'coefficients' (A, m_n, M_k of nu), 'composite' "
+                                   "law (1.8) and contact area; --order 2: the second-order laws (SO.9), (SO.10)\n"
+                                   "of one nu, sphere or radial monomial c r^2k), 'coefficients' (A, m_n, M_k of "
+                                   "nu), 'composite' "
                                    "(composite pressure, radial punch, Alexandrov boundary layer, numeric "
                                    "parameters), 'incompressible' (nu = 1/2: force, contact size, pressure of "
                                    "the sphere (I.11),\nthe elliptic paraboloid (I.6)-(I.8), an axisymmetric punch "
@@ -607,6 +649,7 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
                        epilog="examples:\n  thinlayer codegen inner --kind elliptic_paraboloid --nu 3/10 --lang c\n"
                               "  thinlayer codegen force --kind paraboloid --lang all --out gen\n"
+                              "  thinlayer codegen force --order 2 --kind paraboloid --nu 3/10 --lang c,python\n"
                               "  thinlayer codegen coefficients --order 2 --lang fortran,rust --json\n"
                               "  thinlayer codegen composite --kind paraboloid --param R=2 --nu 0.3 "
                               "--delta0 0.25 --H 0.02 --lang python\n"
@@ -620,13 +663,14 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                    help="flat-punch: the thin-layer law (F.12)-(F.16), the thick series (F.18), or the exact kappa "
                         "tabulated for 0.001 <= a/H <= 200 (python, c) (default thin)")
     g.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
-                   help="base of the layer (any-thickness; default bonded)")
+                   help="base of the layer (any-thickness, force --order 2; default bonded)")
     g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
     g.add_argument("--out", help="write the files into this folder (created) instead of printing")
     _add_overwrite(g, help="overwrite existing files in --out (default: refuse, before anything is written)")
     g.add_argument("--name", help="function name (default from the result)")
     g.add_argument("--nu", default=None, help="Poisson ratio: 'symbolic' (default), a fraction or a number")
-    g.add_argument("--order", type=_order, default=None, help="inner terms / number of coefficients")
+    g.add_argument("--order", type=_order, default=None,
+                   help="inner terms / number of coefficients; force: 1 (default) or 2 (second order)")
     g.add_argument("--delta0", type=_finite, help="indentation (composite)")
     g.add_argument("--H", type=_finite, help="layer thickness (composite)")
     g.add_argument("--mu", type=_finite, default=1.0, help="shear modulus (composite, default 1)")

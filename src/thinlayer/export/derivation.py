@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -40,6 +41,7 @@ class Derivation:
     validation: dict | None = None
     units: dict | None = None
     flat_punch: dict | None = None
+    second_order: dict | None = None
 
 
 #: the schema: table -> {key: (python types, what is valid)}; any other key is an error
@@ -65,6 +67,8 @@ SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
                 "parameters": ((dict,), "a table of numbers, e.g. {R_1 = 4, R_2 = 1}")},
     "validation": {"nu": ((list,), "a list of Poisson ratios"), "H_over_a": ((list,), "a list of H/a values"),
                    "shapes": ((list,), "a list of shape names")},
+    "second_order": {"nu": ((list,), "a list of 1 to 12 Poisson ratios in (-1, 1/2) (numbers, or exact strings "
+                                     "like '3/10') or 'frictionless' (the rows of the table of r_3)")},
     "units": {"length": ((str,), "a unit such as 'mm'"), "stress": ((str,), "a unit such as 'MPa' (of mu and E)"),
               "force": ((str,), "a unit such as 'N'")},
 }
@@ -292,6 +296,46 @@ def _flat_table(ft: Any, needed: bool) -> dict | None:
     return out
 
 
+#: the default rows of the table of [second_order]: nu from 0 to nearly incompressible, and the frictionless base
+SECOND_ORDER_NUS = ("0", "1/4", "3/10", "2/5", "9/20", "frictionless")
+#: the most rows of that table (each r_3 by three factorisations, ~0.2 s)
+SECOND_ORDER_MOST = 12
+_EXACT_NU = re.compile(r"[-+]?[0-9]{1,6}(\.[0-9]{1,6})?(/[0-9]{1,6})?")
+
+
+def _second_order_table(st: Any, layer: LayerKernel, punch: Punch | None) -> dict | None:
+    """``[second_order]``: the section of (SO.1)-(SO.10) and the nu values of its table of ``r_3``.
+
+    Each value is a number or an exact string (``"3/10"``, parsed by :class:`fractions.Fraction`, never
+    evaluated) with ``-1 < nu < 1/2``, or ``"frictionless"`` (the layer on a frictionless base).
+    """
+    if st is None:
+        return None
+    if punch is None or not (layer.base == "frictionless" or _compressible_bonded(layer)):
+        raise DerivationFileError("[second_order] is for the compressible expansion of a polynomial punch (a bonded "
+                                  "layer with nu < 1/2 or the frictionless base), not the flat punch or nu = 1/2")
+    vals = st.get("nu", list(SECOND_ORDER_NUS))
+    what = (f"a list of 1 to {SECOND_ORDER_MOST} Poisson ratios in (-1, 1/2) (numbers, or exact strings like "
+            "'3/10') or 'frictionless'")
+    if not 0 < len(vals) <= SECOND_ORDER_MOST:
+        raise DerivationFileError(f"[second_order] nu = {_short(vals)}: {what}")
+    out = []
+    for v in vals:
+        if v == "frictionless":
+            out.append(v)
+            continue
+        if isinstance(v, str) and _EXACT_NU.fullmatch(v.strip()):
+            num: Any = Fraction(v.strip())
+        elif isinstance(v, (int, float)) and not isinstance(v, bool):
+            num = float(v)
+        else:
+            raise DerivationFileError(f"[second_order] nu: {_short(v)} is invalid: {what}")
+        if not -1 < num < Fraction(1, 2):
+            raise DerivationFileError(f"[second_order] nu: {_short(v)} is outside (-1, 1/2): {what}")
+        out.append(num)
+    return {"nu": out}
+
+
 def _punch_table(pu: dict) -> Punch | None:
     """The punch of ``[punch]``: a catalogue ``kind`` or a polynomial ``expr``; its symbol names checked.
 
@@ -419,7 +463,7 @@ def load_derivation(path: str | Path) -> Derivation:
     path : str or Path
         A catalogue name such as ``sphere`` (:func:`resolve_derivation`) or a TOML file with the tables
         ``[derivation]``, ``[layer]``, ``[punch]`` and optionally
-        ``[coefficients]``, ``[inner]``, ``[edge_shift]``, ``[contact]``, ``[validation]``;
+        ``[coefficients]``, ``[inner]``, ``[edge_shift]``, ``[contact]``, ``[validation]``, ``[second_order]``;
         the keys of each are those of :data:`SCHEMA`.
 
     Returns
@@ -473,7 +517,8 @@ def _load(path: Path) -> Derivation:
     validation = _validation_table(data.get("validation"))
     units = _units_table(data.get("units"))
     flat = _flat_table(data.get("flat_punch"), punch is None)
-    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation, units, flat)
+    second = _second_order_table(data.get("second_order"), layer, punch)
+    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation, units, flat, second)
 
 
 def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: bool = False) -> str:

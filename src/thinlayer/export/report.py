@@ -551,6 +551,10 @@ def derivation_document(der: Any, figure_dir: str | Path | None = None, force: b
         _two_term_part(doc, der)
     if der.edge_shift_nus:
         _edge_shift_part(doc, der.edge_shift_nus)
+    if getattr(der, "second_order", None) is not None:
+        from ._second_order_section import second_order_part
+
+        second_order_part(doc, der)
     if der.contact is not None:
         _contact_part(doc, der)
     if der.validation is not None:
@@ -858,9 +862,12 @@ def _validation_part(doc: Document, v: dict, figure_dir: str | Path | None, forc
         r"$H/a$, and the edge shift measured from the numerical contact radius (Table~\ref{tab:validation}).")
     doc.float_table(r"Validation: errors of the asymptotics against the direct numerics; observed orders "
                     r"against the claimed ones; the edge shift extrapolated to $H/a = 0$.",
-                    "{\\footnotesize\n" + study.latex().replace("contact\\_area", "contact area")
+                    "{\\footnotesize\\setlength{\\tabcolsep}{3pt}\n"
+                    + study.latex().replace("contact\\_area", "contact area")
                     .replace("force\\_leading", "force, leading").replace("contact area\\_leading",
-                                                                          "contact area, leading") + "\n}",
+                                                                          "contact area, leading")
+                    .replace("force\\_second", "force, 2nd order")
+                    .replace("contact area\\_second", "contact area, 2nd order") + "\n}",
                     label="tab:validation")
     if figure_dir is None:
         return
