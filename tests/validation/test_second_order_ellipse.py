@@ -21,6 +21,10 @@ of the area 2e-5 .. 4e-5 |omega_0|, larger at nu = 0.45 for eps < 0.05):
   19.0 (c4 + c5 eps with c4 ~ 22, c5 ~ -130: local orders 3.5, 3.7, 3.7 approaching 4 from below);
   s2/eps^3 = 2.78, 2.60, 2.63 at eps = 0.1, 0.07, 0.05 (orders 3.2, 3.0).
 
+* nu = 0.45 in the asymptotic range (four grids n = 1536 .. 3584, Delta to 1.19e-3, extrapolated with Delta^2 +
+  Delta^3 or Delta^2 + Delta^4): r2 = 7.08e-6, 1.822e-6 at eps = 0.025, 0.0175: observed order 3.81 (3.82-3.85 from
+  the three finest grids); with a fifth point at eps = 0.0125 (three grids) 4.10-4.17.
+
 Default run (~20 s): nu = 0.3 at eps = 0.3, 0.2 and nu = 0.45 at eps = 0.05, 0.035 (two grids).
 ``THINLAYER_SLOW=1``: the eps sequences above with two grids each (Richardson), a few minutes.
 """
@@ -156,3 +160,31 @@ def test_second_order_ellipse_study_nu045():
     assert all(x > y for x, y in zip(dev, dev[1:])) and dev[-1] < 0.025
     for a, b in zip(rows[:3], rows[1:3]):  # the area needs H/Delta >= 30: eps >= 0.05 only
         assert _order(a, b, "s2") >= 2.8
+
+
+@pytest.mark.slow
+def test_second_order_ellipse_nu045_in_the_asymptotic_range():
+    """nu = 0.45 at H/a = 0.025 and 0.0175, where the eps^5 term no longer hides the order (about 3 minutes).
+
+    Four grids each (n = 1536, 2176, 3072, 3584; Delta down to 1.19e-3, H/Delta = 27 and 19), P extrapolated to
+    Delta = 0 by least squares with two error models, ``P* + c2 Delta^2 + c3 Delta^3`` and ``P* + c2 Delta^2 +
+    c4 Delta^4``.  Measured: r2 = 7.08e-6 / 7.10e-6 and 1.822e-6 / 1.823e-6, observed order 3.81 with either model
+    (3.82-3.85 from the three finest grids).
+    """
+    grids = (1536, 2176, 3072, 3584)
+    r2 = {}
+    for eps in (0.025, 0.0175):
+        v = _law(0.45, eps)
+        res = [_direct(0.45, eps, n) for n in grids]
+        h = np.array([r.spacing for r in res])
+        P = np.array([r.force for r in res])
+        r2[eps] = []
+        for k in (3, 4):
+            M = np.c_[np.ones(len(h)), h**2, h**k]
+            Pstar = np.linalg.lstsq(M, P, rcond=None)[0][0]
+            r2[eps].append((Pstar - v.force) / v.P0)
+        print(f"nu=0.45 eps={eps}: r2 = {r2[eps]}, grids P = {P.tolist()}")
+    for a, b in zip(r2[0.025], r2[0.0175]):
+        order = math.log(a / b) / math.log(0.025 / 0.0175)
+        print(f"  order {order:.3f}")
+        assert order >= 3.8
