@@ -282,7 +282,11 @@ class EdgeConstants(RichDisplay):
                 r" \tag{SO.4}")
 
     def text_lines(self) -> list[str]:
-        return [f"EdgeConstants ({self.key}):   (SO.4)",
+        which = self.key
+        if which != "frictionless" and len(which) > 12:  # a float nu kept as its exact binary value: show the float
+            which = fmt(float(sp.Rational(which)))
+        which = "frictionless base" if which == "frictionless" else f"nu = {which}"
+        return [f"EdgeConstants ({which}):   (SO.4)",
                 f"  h* = {fmt(self.h_star)}, m_1 = {fmt(self.m1)}, r_3 = {fmt(self.r3)}  (spread over factorisations "
                 f"{self.r3_spread:.1e})",
                 f"  sphere: P = P0 (1 - 4 m_1 (H/a)^2 + {fmt(12 * self.r3)} (H/a)^3)"]
