@@ -224,14 +224,16 @@ class ForceValues:
     edge_shift: float
     V: float
     J: float
+    P2: float = 0.0  # the second-order force term (SO.9), 0 at first order
+    area2: float = 0.0  # the H^2 terms of the second-order area (SO.10), 0 at first order
 
     @property
     def force(self) -> float:
-        return self.P0 + self.P1
+        return self.P0 + self.P1 + self.P2
 
     @property
     def area(self) -> float:
-        return self.area0 - self.edge_shift * self.H * self.perimeter
+        return self.area0 - self.edge_shift * self.H * self.perimeter + self.area2
 
     @property
     def half_width(self) -> float:
@@ -347,12 +349,7 @@ class ForceLaw(RichDisplay):
     @property
     def arguments(self) -> tuple[sp.Symbol, ...]:
         """``(delta_0, H, mu)`` then the other free symbols (nu, punch parameters, h^*) by name."""
-        base = (S.delta0, S.H, S.mu)
-        free = set()
-        for e in (self.force, self.contact_area):
-            if e is not None:
-                free |= e.free_symbols
-        return base + tuple(sorted(free - set(base), key=lambda q: q.name))
+        return law_arguments(self.force, self.contact_area)
 
     def lambdify(self, args=None, backend: str = "numpy"):
         """``(P, |omega|)`` as one numeric function of :attr:`arguments` (closed forms only)."""
@@ -362,13 +359,7 @@ class ForceLaw(RichDisplay):
                 "use .evaluate(delta0, H, mu, ...) (numeric integrals over the contact contour)"
             )
         args = self.arguments if args is None else args
-        exprs = (self.force, self.contact_area)
-        if backend == "numpy" and any(e.has(sp.elliptic_e) for e in exprs):
-            from scipy.special import ellipe  # E(m), the parameter convention of sympy's elliptic_e
-
-            checked_lambdify(args, exprs, "sympy")  # names any missing argument
-            return sp.lambdify(args, exprs, modules=[{"elliptic_e": ellipe}, "numpy"], cse=True)
-        return checked_lambdify(args, exprs, backend)
+        return lambdify_law(args, (self.force, self.contact_area), backend)
 
     codegen_name = "force_law"
 
@@ -551,6 +542,25 @@ class ForceLaw(RichDisplay):
                     f"  c  = {fmt(self.coefficient)}",
                     "  no closed form: use .evaluate(delta0, H, mu, ...) (integrals over the contact contour)"]
         return out
+
+
+def law_arguments(*exprs: sp.Expr | None) -> tuple[sp.Symbol, ...]:
+    """``(delta_0, H, mu)`` then the other free symbols of ``exprs`` (None skipped) by name."""
+    base = (S.delta0, S.H, S.mu)
+    free = set().union(*(e.free_symbols for e in exprs if e is not None))
+    return base + tuple(sorted(free - set(base), key=lambda q: q.name))
+
+
+def lambdify_law(args: tuple, exprs: tuple, backend: str = "numpy"):
+    """:func:`~thinlayer.results.checked_lambdify`, with numpy given scipy's complete elliptic integrals
+    (``ellipe``, ``ellipk``: the parameter convention of sympy's ``elliptic_e``, ``elliptic_k``).
+    """
+    if backend == "numpy" and any(e.has(sp.elliptic_e, sp.elliptic_k) for e in exprs):
+        from scipy.special import ellipe, ellipk
+
+        checked_lambdify(args, exprs, "sympy")  # names any missing argument
+        return sp.lambdify(args, exprs, modules=[{"elliptic_e": ellipe, "elliptic_k": ellipk}, "numpy"], cse=True)
+    return checked_lambdify(args, exprs, backend)
 
 
 def _signed(tex: str) -> str:

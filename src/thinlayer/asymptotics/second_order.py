@@ -110,8 +110,8 @@ from .._checks import parse_nu
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
-from ..results import checked_lambdify, latex_equation
-from .force_law import ForceLaw, ForceValues, force_law, h_star, radial_monomial
+from ..results import latex_equation
+from .force_law import ForceLaw, ForceValues, force_law, h_star, lambdify_law, law_arguments, radial_monomial
 from .inner import inner_pressure
 
 __all__ = [
@@ -433,6 +433,7 @@ class SecondOrderLaw(RichDisplay):
     p2: sp.Expr
     P_inner_next: sp.Expr | None
     _numbers: Any = field(default=None, repr=False, compare=False)
+    _contour_fns: Any = field(default=None, repr=False, compare=False)
 
     @property
     def layer(self) -> LayerKernel:
@@ -454,12 +455,7 @@ class SecondOrderLaw(RichDisplay):
 
     @property
     def arguments(self) -> tuple[sp.Symbol, ...]:
-        base = (S.delta0, S.H, S.mu)
-        free = set()
-        for e in (self.force, self.contact_area):
-            if e is not None:
-                free |= e.free_symbols
-        return base + tuple(sorted(free - set(base), key=lambda q: q.name))
+        return law_arguments(self.force, self.contact_area)
 
     def _constants_sub(self) -> dict:
         c = edge_constants(self.layer)
@@ -472,12 +468,7 @@ class SecondOrderLaw(RichDisplay):
         sub = self._constants_sub()
         exprs = tuple(e.subs(sub) for e in (self.force, self.contact_area))
         args = tuple(a for a in self.arguments if a not in sub) if args is None else args
-        if backend == "numpy" and any(e.has(sp.elliptic_e, sp.elliptic_k) for e in exprs):
-            from scipy.special import ellipe, ellipk
-
-            checked_lambdify(args, exprs, "sympy")
-            return sp.lambdify(args, exprs, modules=[{"elliptic_e": ellipe, "elliptic_k": ellipk}, "numpy"], cse=True)
-        return checked_lambdify(args, exprs, backend)
+        return lambdify_law(args, exprs, backend)
 
     codegen_name = "force_law_second_order"
 
@@ -547,7 +538,7 @@ class SecondOrderLaw(RichDisplay):
         if cont is None:
             E1, E2, pin = _numbers(self)(sub)
         else:
-            E1, E2, pin = _contour_integrals(self.p2.subs(sub), cont)
+            E1, E2, pin = _contour_integrals(self, sub, cont)
         th_over_A = first.P0 * HH / first.V if first.V else 0.0  # vartheta/A, from P0 = vartheta V/(A H)
         P2 = th_over_A * HH * HH * c.r3 * E1 / 2
         area2 = math.pi * c.h_star**2 * HH * HH - c.m1 * HH * HH * E2 / 2
@@ -573,22 +564,34 @@ def _numbers(law: SecondOrderLaw):
     return law._numbers  # noqa: SLF001
 
 
-def _contour_integrals(p2: sp.Expr, c: Any) -> tuple[float, float, float]:
+def _contour_functions(law: SecondOrderLaw):
+    """``Laplacian Phi`` and ``p_2`` as numpy functions of ``(x1, x2, *parameters)``, compiled once per law."""
+    if law._contour_fns is None:  # noqa: SLF001 - the law's own cache
+        Phi = law.punch.expr
+        lap_syms = tuple(sorted(Phi.free_symbols - {S.x1, S.x2}, key=str))
+        p2_syms = tuple(sorted(law.p2.free_symbols - {S.x1, S.x2}, key=str))
+        lap = sp.lambdify((S.x1, S.x2, *lap_syms), sp.diff(Phi, S.x1, 2) + sp.diff(Phi, S.x2, 2), "numpy")
+        p2 = sp.lambdify((S.x1, S.x2, *p2_syms), law.p2, "numpy")
+        object.__setattr__(law, "_contour_fns", (lap, lap_syms, p2, p2_syms))
+    return law._contour_fns  # noqa: SLF001
+
+
+def _contour_integrals(law: SecondOrderLaw, sub: dict, c: Any) -> tuple[float, float, float]:
     """``E1, E2`` and ``iint p_2`` on the numerical contour ``c`` (:func:`thinlayer.contact_contour`)."""
-    Phi = c.Phi
-    lap = sp.lambdify((S.x1, S.x2), sp.diff(Phi, S.x1, 2) + sp.diff(Phi, S.x2, 2), "numpy")
-    free = p2.free_symbols - {S.x1, S.x2}
-    if free:
-        raise ValueError(f"the inner term p_2 needs values of {sorted(map(str, free))}")
-    p2f = sp.lambdify((S.x1, S.x2), p2, "numpy")
+    lap, lap_syms, p2, p2_syms = _contour_functions(law)
+    missing = [q for q in p2_syms if q not in sub]
+    if missing:
+        raise ValueError(f"the inner term p_2 needs values of {sorted(map(str, missing))}")
+    lap_args = [float(sub[q]) for q in lap_syms]
+    p2_args = [float(sub[q]) for q in p2_syms]
 
     def lap_s(s):
         x = c.f(s)
-        return np.asarray(lap(x[..., 0], x[..., 1]), dtype=float) * np.ones(np.shape(s))
+        return np.asarray(lap(x[..., 0], x[..., 1], *lap_args), dtype=float) * np.ones(np.shape(s))
 
     E1 = c.boundary_integral(lambda s: lap_s(s) - 2 * c.b2(s), of="s")
     E2 = c.boundary_integral(lambda s: lap_s(s) / c.g(s), of="s")
-    pin = c.integrate(lambda a, b: np.asarray(p2f(a, b), dtype=float) * np.ones(np.shape(a)))
+    pin = c.integrate(lambda a, b: np.asarray(p2(a, b, *p2_args), dtype=float) * np.ones(np.shape(a)))
     return E1, E2, pin
 
 
@@ -652,7 +655,6 @@ class SecondOrderProfile(RichDisplay):
     tau_max: float
     _q0: Any = field(repr=False)
     _prim: Any = field(repr=False)
-    _zmax: float = field(repr=False)
 
     def q0(self, tau: Any) -> np.ndarray:
         return self._q0(np.asarray(tau, dtype=float))
@@ -722,7 +724,7 @@ def second_order_profile(layer: LayerKernel) -> SecondOrderProfile:
     c = np.polynomial.chebyshev.Chebyshev(np.asarray(sol.cheb), domain=[0, zmax])
     z = np.polynomial.chebyshev.Chebyshev.identity(domain=[0, zmax])
     prim = (c * 2 * z).integ()
-    return SecondOrderProfile(float(sol.h), float(sol.m1), float(sol.tau_max), sol.q_numpy, prim, zmax)
+    return SecondOrderProfile(float(sol.h), float(sol.m1), float(sol.tau_max), sol.q_numpy, prim)
 
 
 def composite_pressure_second_order(layer: LayerKernel, punch: Punch, delta0: float, H: float, mu: float = 1.0,

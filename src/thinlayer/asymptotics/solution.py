@@ -26,6 +26,7 @@ exceeds the double range (then the error says so).
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import numbers
 import sys
@@ -164,8 +165,7 @@ class ContactSolution(RichDisplay):
     _contour: Any = field(default=None, repr=False)
     error_estimate: dict = field(default_factory=dict)
     tol: float = DEFAULT_TOL
-    order: int = 1
-    second: tuple[float, float] | None = None  # (P_2, area_2) of (SO.9), (SO.10) when order == 2
+    order: int = 1  # 2: values carry P_2 and the H^2 area terms of (SO.9), (SO.10)
 
     # ---- the numbers -------------------------------------------------------------------------
     @property
@@ -263,15 +263,12 @@ class ContactSolution(RichDisplay):
     @property
     def P2(self) -> float:
         """The second-order force term (SO.9) (0 unless ``order == 2``)."""
-        return self.second[0] if self.second else 0.0
-
-    def _terms(self) -> tuple[float, float, float]:
-        v = self.values
-        return v.P0, v.P1 - self.P2, self.P2
+        return self.values.P2
 
     def latex(self) -> str:
         v = self.values
-        P0, P1, P2 = self._terms()
+        P0, P1, P2 = v.P0, v.P1, v.P2
+        second = self.order == 2
         nu = getattr(self.layer, "nu", None)
         nu = sp.latex(sp.Rational(Fraction(mpmath.nstr(mpmath.mpf(self.nu), 15)))
                       if nu is None or isinstance(nu, mpmath.mpf) else nu)
@@ -281,10 +278,10 @@ class ContactSolution(RichDisplay):
             rf"\Phi = {sp.latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
             rf"\quad H = {self.H:.6g},\quad \mu = {self.mu:.6g},\quad H/a = {self.H_over_a:.4g}",
             rf"P = {P0:.8g} {'-' if P1 < 0 else '+'} {abs(P1):.8g}"
-            + (rf" {'-' if P2 < 0 else '+'} {abs(P2):.8g}" if self.second else "")
+            + (rf" {'-' if P2 < 0 else '+'} {abs(P2):.8g}" if second else "")
             + rf" = {v.force:.8g}\ \left(\pm {self._abs_estimate('force'):.2g}\right) \tag{{{self._tags()[0]}}}",
             rf"|\omega| = {v.area0:.8g} - {self.edge_shift:.8g} \cdot {self.H:.6g} \cdot {v.perimeter:.8g}"
-            + (rf" {'-' if self.second[1] < 0 else '+'} {abs(self.second[1]):.8g}" if self.second else "")
+            + (rf" {'-' if v.area2 < 0 else '+'} {abs(v.area2):.8g}" if second else "")
             + rf" = {v.area:.8g}\ \left(\pm {self._abs_estimate('contact_area'):.2g}\right) \tag{{{self._tags()[1]}}}",
             rf"h^* = {self.edge_shift:.10g}\ (\text{{exact}}),\quad \tilde h^* = {self.edge_shift_alexandrov:.10g}"
             r"\ (\text{Alexandrov}) \tag{3.25}",
@@ -292,7 +289,7 @@ class ContactSolution(RichDisplay):
         return " \\\\\n".join(rows)
 
     def _tags(self) -> tuple[str, str]:
-        return ("SO.9", "SO.10") if self.second else ("1.8", "3.25")
+        return ("SO.9", "SO.10") if self.order == 2 else ("1.8", "3.25")
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
@@ -300,13 +297,13 @@ class ContactSolution(RichDisplay):
 
     def __str__(self) -> str:
         v = self.values
-        P0, P1, P2 = self._terms()
-        corr = f"correction {P1:+.6g}" + (f", second order {P2:+.6g}" if self.second else "")
+        second = self.order == 2
+        corr = f"correction {v.P1:+.6g}" + (f", second order {v.P2:+.6g}" if second else "")
         return (
             f"ContactSolution({self.punch.name}: delta0={self.delta0:.6g}, H={self.H:.6g}, mu={self.mu:.6g}, "
             f"nu={self.nu:.6g}{', frictionless base' if self.layer.base == 'frictionless' else ''}; "
-            f"H/a={self.H_over_a:.3g}{'; second order' if self.second else ''})\n"
-            f"  force        P = {v.force:.8g}  (leading {P0:.8g}, {corr}; "
+            f"H/a={self.H_over_a:.3g}{'; second order' if second else ''})\n"
+            f"  force        P = {v.force:.8g}  (leading {v.P0:.8g}, {corr}; "
             f"error estimate {self._pct('force')})\n"
             f"  contact area   = {v.area:.8g}  (leading {v.area0:.8g}; error estimate {self._pct('contact_area')})\n"
             f"  edge shift h*  = {self.edge_shift:.10g} exact, {self.edge_shift_alexandrov:.10g} Alexandrov"
@@ -446,7 +443,6 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     except (OverflowError, ZeroDivisionError) as exc:
         raise ValidityError(f"compressible: the contact geometry is beyond the double range at delta0 = {d0:.3g}, "
                             f"H = {HH:.3g} ({exc}); express the lengths in other units", "force") from None
-    second = None
     if order == 2:
         from .second_order import second_order_error_estimate, second_order_law
 
@@ -457,14 +453,12 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
             raise ValidityError(f"compressible: the second-order terms are beyond the double range at "
                                 f"delta0 = {d0:.3g}, H = {HH:.3g} ({exc}); express the lengths in other units",
                                 "force") from None
-        second = (v2.P2 * mm, v2.area2)
-        vals = ForceValues(vals.delta0, vals.H, vals.P0, vals.P1 + v2.P2, vals.area0, vals.perimeter,
-                           vals.edge_shift - v2.area2 / (HH * vals.perimeter), vals.V, vals.J)
+        vals = dataclasses.replace(vals, P2=v2.P2, area2=v2.area2)
     _check_overflow(vals, mm)
     vals = _scaled(vals, mm, min(order, 1))
     _check_validity(layer, pn, nu_value, vals, est, tol_v, mm)
     return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour,
-                           est, tol_v, order, second)
+                           est, tol_v, order)
 
 
 def _second_order_indentation(layer, punch, per_mu, H, nu, guess):
@@ -589,7 +583,7 @@ def _scaled(vals: ForceValues, mu: float, order: int) -> ForceValues:
     P0 = vals.P0 * mu
     P1 = vals.P1 * mu if order else 0.0
     return ForceValues(vals.delta0, vals.H, P0, P1, vals.area0, vals.perimeter,
-                       vals.edge_shift if order else 0.0, vals.V, vals.J)
+                       vals.edge_shift if order else 0.0, vals.V, vals.J, vals.P2 * mu, vals.area2)
 
 
 @lru_cache(maxsize=256)
@@ -624,7 +618,7 @@ def _validity_model(layer: LayerKernel, punch: Punch, vals: ForceValues) -> str:
 
 def _check_overflow(unit: ForceValues, mu: float) -> None:
     """The force per unit mu is finite and positive, but times mu beyond the double range."""
-    P = unit.P0 + unit.P1
+    P = unit.force
     if math.isfinite(P) and P > 0 and 0 < P * mu < sys.float_info.min:
         raise ValidityError(f"compressible: the force P = {P * mu:.3g} underflows double precision (below "
                             f"{sys.float_info.min:.3g}) at mu = {mu:.3g}; express mu (and P) in a smaller unit "
