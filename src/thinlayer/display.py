@@ -49,6 +49,8 @@ from typing import Any
 import mpmath
 import sympy as sp
 
+from .errors import InputError
+
 __all__ = ["RichDisplay", "Table", "display_math", "fmt", "latex_escape", "table"]
 
 def display_math(tex: str) -> str:
@@ -210,7 +212,7 @@ def table(header: Iterable[str], rows: Iterable[Iterable[Any]], digits: int = 12
     body = tuple(tuple(fmt(c, digits) for c in r) for r in rows)
     for r in body:
         if len(r) != len(head):
-            raise ValueError(f"a row has {len(r)} cells but the header has {len(head)}: {r}")
+            raise InputError(f"a row has {len(r)} cells but the header has {len(head)}: {r}")
     return Table(head, body)
 
 

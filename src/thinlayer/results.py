@@ -17,6 +17,8 @@ from typing import Any, Protocol, runtime_checkable
 
 import sympy as sp
 
+from .errors import InputError, InputTypeError
+
 BACKENDS = ("numpy", "mpmath", "math", "sympy")
 
 
@@ -48,7 +50,7 @@ class SymbolicResult(Result, Protocol):
         ...
 
 
-class MissingArgumentError(ValueError):
+class MissingArgumentError(InputError):
     """An expression has free symbols that are not among the lambdify arguments."""
 
 
@@ -58,9 +60,9 @@ def _as_symbols(args: Sequence[sp.Symbol] | sp.Symbol) -> tuple[sp.Symbol, ...]:
     args = tuple(args)
     for a in args:
         if not isinstance(a, sp.Symbol):
-            raise TypeError(f"lambdify arguments must be sympy Symbols, got {a!r} ({type(a).__name__})")
+            raise InputTypeError(f"lambdify arguments must be sympy Symbols, got {a!r} ({type(a).__name__})")
     if len(set(args)) != len(args):
-        raise ValueError(f"lambdify arguments repeat a symbol: {args}")
+        raise InputError(f"lambdify arguments repeat a symbol: {args}")
     return args
 
 
@@ -87,7 +89,7 @@ def checked_lambdify(
         naming each free symbol missing from ``args``.
     """
     if backend not in BACKENDS:
-        raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")
+        raise InputError(f"backend must be one of {BACKENDS}, got {backend!r}")
     args = _as_symbols(args)
     single = isinstance(exprs, sp.Basic)
     items = [exprs] if single else list(exprs)

@@ -93,6 +93,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import InputError, InputTypeError
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
 from ..parse import as_expr
@@ -122,7 +123,8 @@ __all__ = [
 # ---------------------------------------------------------------------------------------------
 def _check_layer(layer: Any) -> LayerKernel:
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer LayerKernel (e.g. BondedLayer(0.3)), got {type(layer).__name__}")
+        raise InputTypeError(f"layer must be a thinlayer LayerKernel (e.g. BondedLayer(0.3)), "
+                             f"got {type(layer).__name__}")
     return layer
 
 
@@ -136,7 +138,7 @@ def _to_mpf(x: Any) -> mpmath.mpf:
         return mpmath.mpf(x)
     x = as_expr(x)
     if not x.is_number:
-        raise ValueError(f"a numeric value is needed, got the expression {x}; build the layer with a numeric nu")
+        raise InputError(f"a numeric value is needed, got the expression {x}; build the layer with a numeric nu")
     return mpmath.mpf(str(sp.N(x, mpmath.mp.dps + 10)))
 
 
@@ -146,15 +148,15 @@ def _to_sympy(x: Any, dps: int) -> sp.Expr:
 
 def _check_t(t_: Any) -> mpmath.mpf:
     if isinstance(t_, bool):
-        raise TypeError("t must be a real number, got a bool")
+        raise InputTypeError("t must be a real number, got a bool")
     try:
         tt = _to_mpf(t_)
     except (TypeError, ValueError, sp.SympifyError) as exc:
-        raise TypeError(f"t must be a real number, got {t_!r}") from exc
+        raise InputTypeError(f"t must be a real number, got {t_!r}") from exc
     if tt == 0:
-        raise ValueError("t = 0: the kernel N(t) ~ -pi log|t| is singular there; give t != 0")
+        raise InputError("t = 0: the kernel N(t) ~ -pi log|t| is singular there; give t != 0")
     if not mpmath.isfinite(tt):
-        raise ValueError(f"t must be finite, got {t_!r}")
+        raise InputError(f"t must be finite, got {t_!r}")
     return abs(tt)
 
 
@@ -200,9 +202,9 @@ def boundary_layer_kernel(layer: LayerKernel, t: Any, method: str = "bessel2") -
     """
     layer = _check_layer(layer)
     if layer.parameter is not None:
-        raise ValueError("boundary_layer_kernel needs a numeric nu; build e.g. BondedLayer(0.3)")
+        raise InputError("boundary_layer_kernel needs a numeric nu; build e.g. BondedLayer(0.3)")
     if method not in ("bessel2", "bessel1"):
-        raise ValueError(f"method must be 'bessel2' or 'bessel1', got {method!r}")
+        raise InputError(f"method must be 'bessel2' or 'bessel1', got {method!r}")
     tt = _check_t(t)
     with mpmath.extradps(5):
         F = lambda s: layer.L_numeric(s, backend="mpmath", over_u=True)
@@ -298,10 +300,10 @@ def alexandrov_fit(A: Any, m1: Any, dps: int = 30) -> AlexandrovParameters:
         with mpmath.workdps(dps + 10):
             A_, m_ = mpmath.mpf(A), mpmath.mpf(m1)
             if A_ <= 0:
-                raise ValueError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
+                raise InputError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
             disc = A_**2 + 2 * m_
             if disc <= 0:
-                raise ValueError(
+                raise InputError(
                     f"A^2 + 2 m_1 = {mpmath.nstr(disc, 8)} <= 0: Alexandrov's B = 1/(A + sqrt(A^2 + 2 m_1)) "
                     "is complex, so (3.20)-(3.21) have no real solution"
                 )
@@ -313,9 +315,9 @@ def alexandrov_fit(A: Any, m1: Any, dps: int = 30) -> AlexandrovParameters:
     disc = sp.factor(sp.together(A_**2 + 2 * m_))
     if disc.is_number:
         if not A_.is_positive:
-            raise ValueError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
+            raise InputError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
         if not disc.is_positive:
-            raise ValueError(
+            raise InputError(
                 f"A^2 + 2 m_1 = {disc} <= 0: Alexandrov's B = 1/(A + sqrt(A^2 + 2 m_1)) is complex, "
                 "so (3.20)-(3.21) have no real solution"
             )
@@ -438,14 +440,14 @@ def alexandrov_kernel(layer: Any, t: Any, method: str = "laplace") -> mpmath.mpf
     mpmath.mpf at the current ``mpmath.mp.dps``.
     """
     if method not in ("laplace", "fourier"):
-        raise ValueError(f"method must be 'laplace' or 'fourier', got {method!r}")
+        raise InputError(f"method must be 'laplace' or 'fourier', got {method!r}")
     par = _params(layer)
     tt = _check_t(t)
     with mpmath.extradps(10):
         B, C = par.numeric()
         if method == "laplace":
             if not C > B * B:  # A B < 1 always (module docstring); guard anyway
-                raise ValueError(f"the 'laplace' route needs C > B^2, got B={B}, C={C}; use method='fourier'")
+                raise InputError(f"the 'laplace' route needs C > B^2, got B={B}, C={C}; use method='fourier'")
             val = mpmath.besselk(0, B * tt) + (C - B * B) * _pv_cut(tt, B, C)
         else:
             def rem(s):
@@ -459,7 +461,7 @@ def alexandrov_kernel(layer: Any, t: Any, method: str = "laplace") -> mpmath.mpf
 @lru_cache(maxsize=8)
 def _leggauss(n: int) -> tuple[np.ndarray, np.ndarray]:
     if n < 8:
-        raise ValueError(f"nodes must be an integer >= 8, got {n}")
+        raise InputError(f"nodes must be an integer >= 8, got {n}")
     return np.polynomial.legendre.leggauss(n)
 
 
@@ -485,7 +487,7 @@ def alexandrov_kernel_numpy(layer: Any, t: Any, nodes: int = 80) -> np.ndarray:
     B, C = (float(x) for x in par.numeric())
     tt = np.abs(np.asarray(t, dtype=float))
     if np.any(tt == 0) or not np.all(np.isfinite(tt)):
-        raise ValueError("t must be finite and != 0 (N~ ~ -pi log|t| at t = 0)")
+        raise InputError("t must be finite and != 0 (N~ ~ -pi log|t| at t = 0)")
     u0 = float(np.arccosh(np.sqrt(C) / B))
     ch0 = np.cosh(u0)
     xg, wg = _leggauss(int(nodes))
@@ -583,7 +585,7 @@ class AlexandrovSolution(RichDisplay):
         try:
             B, h = float(_to_mpf(self.params.B)), float(_to_mpf(self.h))
         except ValueError as exc:
-            raise ValueError("q_numeric needs a numeric nu; build the layer with e.g. nu=0.3") from exc
+            raise InputError("q_numeric needs a numeric nu; build the layer with e.g. nu=0.3") from exc
         vv = np.asarray(v_, dtype=float)
         x = np.maximum(vv - h, 0.0)
         out = vv * erf(np.sqrt(B * x)) + np.sqrt(x / (np.pi * B)) * np.exp(-B * x)

@@ -84,6 +84,7 @@ import mpmath
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import InputError, InputTypeError, parse_nu
 from .._checks import positive as _positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
@@ -354,7 +355,7 @@ class ForceLaw(RichDisplay):
     def lambdify(self, args=None, backend: str = "numpy"):
         """``(P, |omega|)`` as one numeric function of :attr:`arguments` (closed forms only)."""
         if self.P0 is None:
-            raise ValueError(
+            raise InputError(
                 f"the force law of {self.punch.name} ({self.punch.expr}) has no closed form; "
                 "use .evaluate(delta0, H, mu, ...) (numeric integrals over the contact contour)"
             )
@@ -372,7 +373,7 @@ class ForceLaw(RichDisplay):
         ``4 a E(1 - b^2/a^2)`` yourself.
         """
         if self.P0 is None:
-            raise ValueError(f"no closed-form force law for {self.punch.name}; code generation needs one")
+            raise InputError(f"no closed-form force law for {self.punch.name}; code generation needs one")
         outs = {"force": self.force, "contact_area_leading": self.area0}
         if not self.perimeter.has(sp.elliptic_e):
             outs["contact_area"] = self.contact_area
@@ -408,15 +409,21 @@ class ForceLaw(RichDisplay):
         return self._numeric_values(values)
 
     def _numeric_values(self, values: dict) -> dict:
-        """``{name or symbol: value}`` -> ``{punch parameter symbol: value}`` (matched by name)."""
+        """``{name or symbol: value}`` -> ``{punch parameter symbol: number}`` (matched by name).
+
+        Each value is a finite number: a string is read by the restricted grammar
+        (:func:`thinlayer.parse.parse_number`), never evaluated.
+        """
+        if not isinstance(values, dict):
+            raise InputTypeError(f"parameters must be a dict such as {{'R': 10}}, got {type(values).__name__}")
         by_name = {q.name: q for q in self.punch.parameters}
         out = {}
         for k, v in values.items():
             name = k if isinstance(k, str) else getattr(k, "name", None)
             if name not in by_name:
-                raise ValueError(f"{k!r} is not a parameter of the punch; its parameters are "
+                raise InputError(f"{k!r} is not a parameter of the punch; its parameters are "
                                  f"{', '.join(by_name) or 'none'}")
-            out[by_name[name]] = v
+            out[by_name[name]] = parse_number(v, f"the value of {name}")
         return out
 
     def evaluate(self, delta0: Any, H: Any, mu: Any = 1.0, edge_shift: Any = 0.0,
@@ -441,12 +448,12 @@ class ForceLaw(RichDisplay):
         vals = self._numeric_values(parameters or {})
         nu_free = {S.nu, S.kappa} & (_free(self.coefficient) | _free(self.p1_factor))
         if nu_free:
-            raise ValueError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
+            raise InputError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
         sub = {S.delta0: d0, S.H: HH, S.mu: mm, **vals}
         if nu is not None:
-            sub[S.nu] = parse_number(nu, "nu") if isinstance(nu, str) else nu
+            sub[S.nu] = parse_nu(nu, floats="float", upper_closed=True, symbols=False)
         if _free(self.layer.vartheta) - set(sub):
-            raise ValueError(f"vartheta = {self.layer.vartheta} needs the Poisson ratio: pass nu= "
+            raise InputError(f"vartheta = {self.layer.vartheta} needs the Poisson ratio: pass nu= "
                              f"(the {self.layer.name} kernel does not fix it)")
         th = _compiled_number(self.layer.vartheta, sub)
         A = float(self.layer.A)
@@ -456,10 +463,10 @@ class ForceLaw(RichDisplay):
         else:
             from .contour import contact_contour
 
-            Phi = self.punch.expr.subs(vals)
+            Phi = self.punch.expr.xreplace(vals)
             free = Phi.free_symbols - {S.x1, S.x2}
             if free:
-                raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+                raise InputError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
             c = contour if contour is not None else contact_contour(Phi, d0)
             area0, per = c.area, c.perimeter
             V = c.integrate(lambda a, b: d0 - c.phi(a, b))
@@ -476,7 +483,7 @@ class ForceLaw(RichDisplay):
         """
         free = (_free(self.P0) | _free(self.area0)) - set(sub)
         if free:
-            raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+            raise InputError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
         keys = tuple(sorted(sub, key=str))
         f = _compiled_closed_forms(self, keys)
         with mpmath.workdps(20):
@@ -496,14 +503,14 @@ class ForceLaw(RichDisplay):
             D0 = sp.Symbol("D_0", positive=True)
             sub = {S.H: HH, S.mu: mm, **vals}
             if nu is not None:
-                sub[S.nu] = nu
+                sub[S.nu] = parse_nu(nu, floats="float", upper_closed=True, symbols=False)
             target = self.force if order else self.P0
             law = sp.expand((target - Pt).subs(S.delta0, D0 + self.phi_min).subs(sub))
             a2, a1, a0 = (float(sp.N(law.coeff(D0, k))) for k in (2, 1, 0))
             disc = a1 * a1 - 4 * a2 * a0
             root = (-a1 + math.sqrt(disc)) / (2 * a2) if a1 < 0 else (-2 * a0) / (a1 + math.sqrt(disc))
             return float(sp.N(self.phi_min.subs(sub))) + root
-        Phi = self.punch.expr.subs(vals)
+        Phi = self.punch.expr.xreplace(vals)
         from .contour import contact_contour
 
         lo_c = contact_contour(Phi, 1.0)  # a first look for the minimum of Phi
@@ -519,7 +526,7 @@ class ForceLaw(RichDisplay):
             span *= 2
             hi = phimin + span
             if span > 1e12:
-                raise ValueError(f"no indentation gives the force {Pt}")
+                raise InputError(f"no indentation gives the force {Pt}")
         lo = phimin + span * 1e-9
         import scipy.optimize as opt
 
@@ -650,11 +657,11 @@ def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
     -2*H**2*nu*(4*nu - 1)/(3*R*delta_0*(nu - 1)*(2*nu - 1))
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer layer kernel (e.g. BondedLayer(0.3)), got {layer!r}")
+        raise InputTypeError(f"layer must be a thinlayer layer kernel (e.g. BondedLayer(0.3)), got {layer!r}")
     if not isinstance(punch, Punch):
         punch = Punch(punch)
     if not layer.has_thickness:
-        raise ValueError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
+        raise InputError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
     try:
         return _force_law_cached(layer, punch)
     except TypeError:  # an unhashable layer or punch: derive it afresh

@@ -106,7 +106,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import parse_nu
+from .._checks import InputError, InputTypeError, parse_nu, positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
@@ -464,7 +464,7 @@ class SecondOrderLaw(RichDisplay):
     def lambdify(self, args=None, backend: str = "numpy"):
         """``(P, |omega|)`` as one numeric function of :attr:`arguments` with ``r_3``, ``h^*`` substituted."""
         if self.P2 is None:
-            raise ValueError(f"the second-order law of {self.punch.name} has no closed form; use .evaluate(...)")
+            raise InputError(f"the second-order law of {self.punch.name} has no closed form; use .evaluate(...)")
         sub = self._constants_sub()
         exprs = tuple(e.subs(sub) for e in (self.force, self.contact_area))
         args = tuple(a for a in self.arguments if a not in sub) if args is None else args
@@ -477,14 +477,14 @@ class SecondOrderLaw(RichDisplay):
         (closed forms without elliptic integrals: a circle or a radial monomial).
         """
         if self.P2 is None:
-            raise ValueError(f"no closed-form second-order law for {self.punch.name}; code generation needs one")
+            raise InputError(f"no closed-form second-order law for {self.punch.name}; code generation needs one")
         sub = self._constants_sub()
         outs = {"force": self.force.subs(sub)}
         area = self.contact_area.subs(sub)
         if not area.has(sp.elliptic_e, sp.elliptic_k):
             outs["contact_area"] = area
         if outs["force"].has(sp.elliptic_e, sp.elliptic_k):
-            raise ValueError("the elliptic paraboloid's second-order force has complete elliptic integrals K, E, "
+            raise InputError("the elliptic paraboloid's second-order force has complete elliptic integrals K, E, "
                              "which the target languages lack; use .lambdify() or .evaluate()")
         free = set().union(*(e.free_symbols for e in outs.values()))
         return tuple(a for a in self.arguments if a in free), outs
@@ -525,16 +525,16 @@ class SecondOrderLaw(RichDisplay):
         if self.E1 is None:
             from .contour import contact_contour
 
-            Phi = self.punch.expr.subs(vals)
+            Phi = self.punch.expr.xreplace(vals)
             free = Phi.free_symbols - {S.x1, S.x2}
             if free:
-                raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
-            cont = contact_contour(Phi, float(delta0))
+                raise InputError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+            cont = contact_contour(Phi, positive(delta0, "delta0"))
         first = self.first.evaluate(delta0, H, mu, edge_shift=c.h_star, parameters=parameters, nu=nu, contour=cont)
         HH = first.H
         sub = {S.delta0: first.delta0, S.H: HH, S.mu: float(mu), **vals}
         if nu is not None:
-            sub[S.nu] = float(nu)
+            sub[S.nu] = parse_nu(nu, floats="float", upper_closed=True, symbols=False)
         if cont is None:
             E1, E2, pin = _numbers(self)(sub)
         else:
@@ -555,7 +555,7 @@ def _numbers(law: SecondOrderLaw):
         def num(sub):
             missing = [q for q in syms if q not in sub]
             if missing:
-                raise ValueError(f"the second-order law needs values of {sorted(map(str, missing))}")
+                raise InputError(f"the second-order law needs values of {sorted(map(str, missing))}")
             with mpmath.workdps(20):
                 out = f(*(mpmath.mpf(float(sub[q])) for q in syms))
                 return tuple(float(mpmath.re(v)) for v in out)
@@ -581,7 +581,7 @@ def _contour_integrals(law: SecondOrderLaw, sub: dict, c: Any) -> tuple[float, f
     lap, lap_syms, p2, p2_syms = _contour_functions(law)
     missing = [q for q in p2_syms if q not in sub]
     if missing:
-        raise ValueError(f"the inner term p_2 needs values of {sorted(map(str, missing))}")
+        raise InputError(f"the inner term p_2 needs values of {sorted(map(str, missing))}")
     lap_args = [float(sub[q]) for q in lap_syms]
     p2_args = [float(sub[q]) for q in p2_syms]
 
@@ -629,9 +629,9 @@ def second_order_law(layer: LayerKernel, punch: Punch) -> SecondOrderLaw:
     7.9513e-05 7.9513e-05
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a layer kernel such as BondedLayer(0.3), got {type(layer).__name__}")
+        raise InputTypeError(f"layer must be a layer kernel such as BondedLayer(0.3), got {type(layer).__name__}")
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a Punch, got {type(punch).__name__}")
+        raise InputTypeError(f"punch must be a Punch, got {type(punch).__name__}")
     try:
         return _second_order_law(layer, punch)
     except TypeError:

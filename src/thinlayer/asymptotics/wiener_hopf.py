@@ -90,7 +90,7 @@ import numpy as np
 import sympy as sp
 from scipy import optimize, special
 
-from .._checks import parse_nu
+from .._checks import InputError, InputTypeError, parse_nu
 from ..display import RichDisplay, fmt
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 
@@ -134,14 +134,14 @@ def _rational_nu(nu: Any) -> sp.Rational | str:
     if isinstance(nu, str) and nu == FRICTIONLESS:
         return FRICTIONLESS
     if isinstance(nu, bool) or not isinstance(nu, (numbers.Real, str, mpmath.mpf, sp.Basic, Fraction)):
-        raise TypeError(f"nu must be a real number in (-1, 1/2) or a BondedLayer, got {type(nu).__name__}")
+        raise InputTypeError(f"nu must be a real number in (-1, 1/2) or a BondedLayer, got {type(nu).__name__}")
     return parse_nu(nu, floats="exact", symbols=False, example="'3/10' or 0.3",
                     range_hint="A = (1-2nu)/(2(1-nu)^2) must be positive")
 
 
 def _check_choice(value: str, allowed: tuple[str, ...], name: str) -> str:
     if value not in allowed:
-        raise ValueError(f"{name} must be one of {allowed}, got {value!r}")
+        raise InputError(f"{name} must be one of {allowed}, got {value!r}")
     return value
 
 
@@ -334,7 +334,7 @@ def _edge_shift(lay: _Layer, kernel: str, normaliser: str, dps: int, error: bool
 
 def _check_dps(dps: Any) -> int:
     if isinstance(dps, bool) or not isinstance(dps, numbers.Integral) or dps < 10:
-        raise ValueError(f"dps must be an integer >= 10, got {dps!r}")
+        raise InputError(f"dps must be an integer >= 10, got {dps!r}")
     return int(dps)
 
 
@@ -633,7 +633,7 @@ class WienerHopfSolution(RichDisplay):
         with mpmath.workdps(dps):
             p = mpmath.mpmathify(p)
             if mpmath.re(p) <= 0:
-                raise ValueError(f"the Laplace variable needs Re p > 0, got p = {p}")
+                raise InputError(f"the Laplace variable needs Re p > 0, got p = {p}")
             return 1 / (p * p * mpmath.exp(self._transform.log_phi_mp(p, dps)))
 
     def q(self, tau: Any, dps: int = 15, method: str = "panel") -> mpmath.mpf:
@@ -656,7 +656,7 @@ class WienerHopfSolution(RichDisplay):
         with mpmath.workdps(dps):
             tau = mpmath.mpf(tau)
             if tau < 0:
-                raise ValueError(f"tau must be >= 0 (distance from the edge), got {tau}")
+                raise InputError(f"tau must be >= 0 (distance from the edge), got {tau}")
             if tau == 0:
                 return mpmath.mpf(0)
             tr = self._transform
@@ -677,7 +677,7 @@ class WienerHopfSolution(RichDisplay):
         """``qhat(tau)`` vectorised (Chebyshev series in ``sqrt(tau)``, ``tau + h`` beyond ``tau_max``)."""
         tau = np.asarray(tau, dtype=float)
         if np.any(tau < 0) or not np.all(np.isfinite(tau)):
-            raise ValueError("tau must be finite and >= 0 (distance from the edge)")
+            raise InputError("tau must be finite and >= 0 (distance from the edge)")
         z = np.sqrt(np.minimum(tau, self.tau_max))
         zmax = math.sqrt(self.tau_max)
         g = np.polynomial.chebyshev.chebval(2 * z / zmax - 1, np.asarray(self.cheb))
@@ -790,7 +790,7 @@ def wiener_hopf_solution(nu: Any, kernel: str = "exact", normaliser: str = "alex
     _check_choice(kernel, KERNELS, "kernel")
     _check_choice(normaliser, NORMALISERS, "normaliser")
     if n is not None and (isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 8):
-        raise ValueError(f"n must be None or an integer >= 8, got {n!r}")
+        raise InputError(f"n must be None or an integer >= 8, got {n!r}")
     return _solution(_rational_nu(nu), kernel, normaliser, _check_dps(dps), None if n is None else int(n))
 
 
@@ -810,7 +810,7 @@ def boundary_kernel_N(nu: Any, t: Any) -> np.ndarray:
     """
     t = np.abs(np.asarray(t, dtype=float))
     if not np.all(np.isfinite(t)):
-        raise ValueError("t must be finite")
+        raise InputError("t must be finite")
     tmax = 2.0 ** math.ceil(math.log2(max(float(np.max(t, initial=1.0)), 1.0)))
     A, s, wD = _N_rule(_rational_nu(nu), tmax)
     with np.errstate(divide="ignore"):

@@ -34,6 +34,9 @@ from ..parse import as_expr
 
 #: significant digits of a floating-point number in a report
 DIGITS = 6
+#: sums factored for print at most this large (a 30-parameter punch took 90 s in sp.factor before the bound)
+MAX_FACTOR_SYMBOLS = 6
+MAX_FACTOR_TERMS = 40
 _PARAMETERS = (S.nu, S.kappa)
 
 
@@ -169,7 +172,9 @@ def _add_factor(term: Term, base: sp.Expr, e: sp.Expr) -> None:
                     term.coefficient, base = -term.coefficient, sp.expand(-base)
                 term.outside.append(base)
                 return
-        if not base.has(sp.Float) and base.is_polynomial():
+        # factor only small sums: sympy's dense multivariate factorisation costs minutes at 30 parameters
+        if (not base.has(sp.Float) and len(base.free_symbols) <= MAX_FACTOR_SYMBOLS
+                and len(base.args) <= MAX_FACTOR_TERMS and base.is_polynomial()):
             factored = sp.factor(base)
             if not isinstance(factored, sp.Add):  # reducible: each factor by the policy
                 _merge(term, normal_term(factored**e))

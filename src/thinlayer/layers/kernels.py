@@ -26,7 +26,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import check_bounded, parse_nu
+from .._checks import InputError, check_bounded, parse_nu
 from .._checks import check_order as _check_order
 from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
 from ..display import RichDisplay, fmt
@@ -39,7 +39,7 @@ HALF = sp.Rational(1, 2)
 MAX_DPS = 1000
 
 
-class IncompressibleLayerError(ValueError):
+class IncompressibleLayerError(InputError):
     """nu = 1/2 makes the compressible bonded layer degenerate (A = 0)."""
 
 
@@ -129,11 +129,11 @@ class LayerKernel(RichDisplay, ABC):
         fixed = self.numeric_nu
         if fixed is None:
             if nu is None:
-                raise ValueError(f"{self!r} does not fix Poisson's ratio: pass nu= (-1 < nu < 1/2) "
+                raise InputError(f"{self!r} does not fix Poisson's ratio: pass nu= (-1 < nu < 1/2) "
                                  "to define vartheta = mu/(1 - nu)")
             return nu
         if nu is not None and abs(float(nu) - fixed) > 1e-12:
-            raise ValueError(f"nu={nu!r} disagrees with the layer's Poisson ratio {fixed}")
+            raise InputError(f"nu={nu!r} disagrees with the layer's Poisson ratio {fixed}")
         return fixed
 
     @property
@@ -144,7 +144,7 @@ class LayerKernel(RichDisplay, ABC):
     @property
     def edge_shift_key(self) -> Any:
         """What the edge shift h* (3.18), (3.25) of this layer depends on: its exact nu, or the base name."""
-        raise ValueError(f"the edge shift needs a numeric layer with a finite thickness, got {self!r}")
+        raise InputError(f"the edge shift needs a numeric layer with a finite thickness, got {self!r}")
 
     def taylor_coefficients(self, order: int) -> tuple:
         """``c_n`` of ``L(s)/s = sum_n c_n s^{2n}`` (n <= order): ``c_n = A m_n`` (2.20), or (I.1) at nu = 1/2.
@@ -241,14 +241,14 @@ class BondedLayer(LayerKernel):
 
     def __init__(self, nu: Any = None, parameter: str = "nu", dps: int = 30):
         if parameter not in ("nu", "kappa"):
-            raise ValueError(f"parameter must be 'nu' or 'kappa', got {parameter!r}")
+            raise InputError(f"parameter must be 'nu' or 'kappa', got {parameter!r}")
         if isinstance(dps, bool) or not isinstance(dps, int) or dps < 5:
-            raise ValueError(f"dps must be an integer >= 5, got {dps!r}")
+            raise InputError(f"dps must be an integer >= 5, got {dps!r}")
         check_bounded(dps, "dps", MAX_DPS, "the float coefficients are computed at dps + 10 digits; at dps = 1000 "
                                            "order 200 costs 0.5 s, and the cost grows like dps^1.6")
         val = _as_nu(nu)
         if parameter == "kappa" and not isinstance(val, sp.Symbol):
-            raise ValueError("parameter='kappa' needs a symbolic layer (nu=None)")
+            raise InputError("parameter='kappa' needs a symbolic layer (nu=None)")
         object.__setattr__(self, "nu", val)
         object.__setattr__(self, "parameter_name", parameter)
         object.__setattr__(self, "dps", dps)
@@ -296,7 +296,7 @@ class BondedLayer(LayerKernel):
     def edge_shift_key(self) -> sp.Rational:
         """The exact rational nu (a float nu is taken as its exact binary value)."""
         if self.parameter is not None:
-            raise ValueError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
+            raise InputError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
                              "(give BondedLayer(0.3), BondedLayer('3/10') or a number)")
         return parse_nu(self.nu, floats="exact")
 
@@ -323,14 +323,14 @@ class BondedLayer(LayerKernel):
     def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
         """Stable L(u) (or L(u)/u): see :mod:`thinlayer.layers.numeric`.  Needs a numeric nu."""
         if self.parameter is not None:
-            raise ValueError("numeric evaluation needs a numeric nu; build BondedLayer(nu=0.3) or similar")
+            raise InputError("numeric evaluation needs a numeric nu; build BondedLayer(nu=0.3) or similar")
         if backend == "numpy":
             return kernel_numeric.bonded_numpy(u, float(self.kappa), over_u)
         if backend == "mpmath":
             k = self.kappa
             k = mpmath.mpf(k.p) / k.q if isinstance(k, sp.Rational) else k
             return kernel_numeric.bonded_mpmath(u, k, over_u)
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def __repr__(self) -> str:
         return f"BondedLayer(nu={self.nu})"
@@ -385,7 +385,7 @@ class FrictionlessLayer(LayerKernel):
             return kernel_numeric.frictionless_numpy(u, over_u)
         if backend == "mpmath":
             return kernel_numeric.frictionless_mpmath(u, over_u)
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
@@ -408,7 +408,7 @@ class HalfSpace(LayerKernel):
         return sp.Integer(1)
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
-        raise ValueError(
+        raise InputError(
             "the half-space kernel L = 1 has no expansion L(s)/s = A(1 + m_1 s^2 + ...) (2.20): "
             "the thin-layer analysis needs a layer of finite thickness (BondedLayer, FrictionlessLayer)"
         )
@@ -426,7 +426,7 @@ class HalfSpace(LayerKernel):
             if not over_u:
                 return mpmath.mpf(1)
             return mpmath.inf if u == 0 else 1 / u
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
@@ -457,13 +457,13 @@ class GenericLayer(LayerKernel):
         return sp.Symbol(f"m_{n}")
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        raise ValueError("a GenericLayer has no closed-form L(u); use BondedLayer or FrictionlessLayer")
+        raise InputError("a GenericLayer has no closed-form L(u); use BondedLayer or FrictionlessLayer")
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
-        raise ValueError("a GenericLayer has no Taylor data; its coefficients are symbols")
+        raise InputError("a GenericLayer has no Taylor data; its coefficients are symbols")
 
     def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
-        raise ValueError("a GenericLayer cannot be evaluated numerically")
+        raise InputError("a GenericLayer cannot be evaluated numerically")
 
     @property
     def parameter(self) -> sp.Symbol | None:
@@ -587,7 +587,7 @@ class IncompressibleLayer(LayerKernel):
             return kernel_numeric.bonded_numpy(u, 1.0, over_u)
         if backend == "mpmath":
             return kernel_numeric.bonded_mpmath(u, mpmath.mpf(1), over_u)
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def __repr__(self) -> str:
         return "IncompressibleLayer()"

@@ -19,7 +19,7 @@ from typing import Any
 import sympy as sp
 
 from ... import symbols as S
-from ..._checks import check_order, parse_nu
+from ..._checks import InputError, InputTypeError, check_order, parse_nu
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...punch import Punch
 from ...results import checked_lambdify, latex_equation
@@ -113,7 +113,7 @@ class ThinLayerOperator:
             if cn != 0:
                 pf = p_fun(S.x1, S.x2)
                 return sp.factor((-1) ** n * cn * S.H ** (2 * n + 1) / self.vartheta) * laplacian(pf, S.x1, S.x2, n)
-        raise ValueError(f"all coefficients c_0..c_{self.order} vanish; raise the order")
+        raise InputError(f"all coefficients c_0..c_{self.order} vanish; raise the order")
 
     def latex(self) -> str:
         """The operator (I.2) as a tagged LaTeX line."""
@@ -152,7 +152,7 @@ def thin_layer_operator(layer: LayerKernel, order: int = 1) -> ThinLayerOperator
     -H**3*(Derivative(p(x_1, x_2), (x_1, 2)) + Derivative(p(x_1, x_2), (x_2, 2)))/(3*mu)
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
+        raise InputTypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
                         f"got {layer!r}")
     order = check_order(order, "order")
     return ThinLayerOperator(layer, order, layer.taylor_coefficients(order))
@@ -227,15 +227,15 @@ def model_layer(layer: Any, call: str, numeric: bool = False) -> tuple[LayerKern
     elif not isinstance(layer, LayerKernel):
         layer = layer_from_nu(layer, call, stacklevel=4)
     if layer.base != "bonded" or layer.symbolic_coefficients or not layer.has_thickness:
-        raise ValueError(f"the incompressible/two-term models need a layer bonded to a rigid base, "
+        raise InputError(f"the incompressible/two-term models need a layer bonded to a rigid base, "
                          f"{call.format(layer='BondedLayer(nu)')} (1/4 < nu < 1/2) or "
                          f"{call.format(layer='IncompressibleLayer()')}; got {layer!r}")
     nu = model_nu(layer)
     if not isinstance(nu, sp.Symbol) and not nu.is_number:
-        raise ValueError(f"a symbolic layer of the models must have the parameter nu: BondedLayer(), got {layer!r}")
+        raise InputError(f"a symbolic layer of the models must have the parameter nu: BondedLayer(), got {layer!r}")
     if isinstance(nu, sp.Symbol):
         if numeric:
-            raise TypeError(f"a numeric Poisson ratio in (1/4, 1/2] is needed here "
+            raise InputTypeError(f"a numeric Poisson ratio in (1/4, 1/2] is needed here "
                             f"(e.g. {call.format(layer='BondedLayer(0.49)')}), got the symbolic {layer!r}")
     else:
         parse_nu(nu, floats="Float", lower=QUARTER, upper_closed=True, range_hint=RANGE_HINT)
@@ -364,10 +364,10 @@ def obstacle_problem(layer: LayerKernel, punch: Punch | None = None, nu: Any = N
         old = punch if punch is not None else (HALF if nu is None else nu)
         layer, punch = layer_from_nu(old, "obstacle_problem({layer}, punch)"), layer
     elif nu is not None:
-        raise TypeError("nu= belongs to the deprecated form obstacle_problem(punch, nu); "
+        raise InputTypeError("nu= belongs to the deprecated form obstacle_problem(punch, nu); "
                         "pass the layer only: obstacle_problem(BondedLayer(nu), punch)")
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
+        raise InputTypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
     layer, nv = model_layer(layer, "obstacle_problem({layer}, punch)")
     c0, c1, th = model_coefficients(layer, nv)
     f = th * (S.delta0 - punch.expr) / (c1 * S.H**3)
