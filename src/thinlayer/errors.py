@@ -8,8 +8,11 @@ class                    base                               raised when
                                                             outside the double range
 ``InputTypeError``       ``ThinlayerError``, ``TypeError``  an argument of the wrong type, or missing
 ``WorkLimitError``       ``InputError``                     the work or memory would exceed a documented limit
-``NotDerivedError``      ``InputError``                     a case thinlayer has not derived (e.g. ``order=3``)
+``NotDerivedError``      ``InputError``,                    a case thinlayer has not derived (e.g. ``order=3``)
+                         ``NotImplementedError``
 ``ComputationError``     ``InputError``                     a numerical step failed at these numbers
+``ValidityWarning``      ``UserWarning``                    a result returned marked ``valid=False`` (a fit
+                                                            by a published series outside its range)
 =======================  =================================  =================================================
 
 Each stage adds its own subclasses of :class:`InputError` (``ExpressionError``, ``PunchError``,
@@ -20,13 +23,14 @@ into one of these.  Imports nothing (the bottom of the import table, with ``thin
 from __future__ import annotations
 
 import functools
+import inspect
 import linecache
 import os
 import re
 from collections.abc import Callable
 
-__all__ = ["ComputationError", "InputError", "InputTypeError", "NotDerivedError", "ThinlayerError", "WorkLimitError",
-           "boundary", "translate"]
+__all__ = ["ComputationError", "InputError", "InputTypeError", "NotDerivedError", "ThinlayerError", "ValidityWarning",
+           "WorkLimitError", "boundary", "boundary_methods", "translate"]
 
 
 # =============================================================================================
@@ -51,8 +55,11 @@ class WorkLimitError(InputError):
     """A request whose work or memory would exceed a documented limit; raised before any work starts."""
 
 
-class NotDerivedError(InputError):
-    """A case thinlayer has not derived (an order beyond the derived ones, a kernel without the expansion)."""
+class NotDerivedError(InputError, NotImplementedError):
+    """A case thinlayer has not derived (an order beyond the derived ones, a kernel without the expansion).
+
+    Also a ``NotImplementedError``, as it was before thinlayer's own classes.
+    """
 
 
 class ComputationError(InputError):
@@ -63,7 +70,14 @@ class ComputationError(InputError):
     """
 
 
-for _cls in (ThinlayerError, InputError, InputTypeError, WorkLimitError, NotDerivedError, ComputationError):
+class ValidityWarning(UserWarning):
+    """A result returned outside its model's validity, marked so (``valid=False`` and the reason), e.g. a fit by a
+    published series on data beyond its range.  ``warnings.simplefilter("error", ValidityWarning)`` refuses instead.
+    """
+
+
+for _cls in (ThinlayerError, InputError, InputTypeError, WorkLimitError, NotDerivedError, ComputationError,
+             ValidityWarning):
     _cls.__module__ = "thinlayer"  # what a traceback shows: the name users import
 del _cls
 
@@ -78,6 +92,8 @@ _FOREIGN = (
     (RuntimeError, "a numerical step did not converge at these numbers"),
     (ValueError, "a numerical step failed at these numbers (they may leave the double range)"),
     (TypeError, "an argument of a type the computation cannot use"),
+    (AttributeError, "an argument of the wrong type (it lacks what the computation needs)"),
+    (LookupError, "an argument out of the range the computation indexes"),
     (AssertionError, "an internal check failed at these numbers"),
 )
 
@@ -115,30 +131,45 @@ def translate(exc: BaseException, where: str) -> ThinlayerError:
     if isinstance(exc, MemoryError):
         return WorkLimitError(f"{where}: out of memory at these inputs; ask for less (fewer points, modes or terms)")
     own = _raised_by_thinlayer(exc)
-    if own and isinstance(exc, NotImplementedError):
-        return NotDerivedError(_one_line(exc))
+    if isinstance(exc, NotImplementedError):
+        return NotDerivedError(_one_line(exc) if own else f"{where}: not derived for these inputs "
+                               f"({type(exc).__name__}: {_one_line(exc, 160)})")
     if own and isinstance(exc, TypeError):
         return InputTypeError(_one_line(exc))
     if own and isinstance(exc, ValueError):
         return InputError(_one_line(exc))
+    detail = f"{type(exc).__name__}: {_one_line(exc, 160) or '-'}"
+    text = str(exc)
+    if isinstance(exc, RecursionError):
+        return WorkLimitError(f"{where}: the input nests too deeply ({detail}); give a smaller one")
+    if isinstance(exc, TypeError) and _SIGNATURE.search(text):
+        return InputTypeError(f"{where}: the arguments do not match its signature ({detail}); see help()")
+    if isinstance(exc, (TypeError, AttributeError, LookupError)) or (isinstance(exc, ValueError)
+                                                                     and _NOT_A_NUMBER.search(text)):
+        return InputTypeError(f"{where}: an argument of a type or form it cannot use ({detail}); see its "
+                              "docstring for what each argument takes")
     reason = next(text for cls, text in _FOREIGN if isinstance(exc, cls))
-    detail = _one_line(exc, 160) or type(exc).__name__
-    cls = WorkLimitError if isinstance(exc, RecursionError) else ComputationError
-    return cls(f"{where}: no answer at these inputs: {reason} ({type(exc).__name__}: {detail}); give values of "
-               "moderate size (rescale the units) or another model")
+    return ComputationError(f"{where}: no answer at these inputs: {reason} ({detail}); give values of moderate "
+                            "size (rescale the units) or another model")
+
+
+_SIGNATURE = re.compile(r"positional argument|keyword argument|required (positional|keyword)")
+_NOT_A_NUMBER = re.compile(r"could not convert|invalid literal|must be (a )?real|string|not a number|dtype", re.I)
 
 
 #: what :func:`boundary` translates (everything else, e.g. KeyboardInterrupt, passes through)
-_TRANSLATED = (ValueError, TypeError, ArithmeticError, RuntimeError, AssertionError, MemoryError)
+_TRANSLATED = (ValueError, TypeError, ArithmeticError, RuntimeError, AssertionError, MemoryError, AttributeError,
+               LookupError)
 
 
-def boundary(fn: Callable) -> Callable:
+def boundary(fn: Callable, where: str | None = None) -> Callable:
     """Decorate a public entry point: every error it lets out is a :class:`ThinlayerError` with one line.
 
     thinlayer's own errors pass unchanged; anything else that escapes (a library's ``ValueError``, a
     ``ZeroDivisionError``, ``NotImplementedError``, ``math domain error``) is translated by :func:`translate`.
+    ``where`` names the entry point in the message (default ``fn.__name__ + "()"``).
     """
-    where = f"{fn.__name__}()"
+    where = where or f"{fn.__name__}()"
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
@@ -149,4 +180,26 @@ def boundary(fn: Callable) -> Callable:
         except _TRANSLATED as exc:
             raise translate(exc, where) from exc
 
+    for attr in ("cache_clear", "cache_info"):  # an lru_cache underneath keeps its controls
+        if hasattr(fn, attr):
+            setattr(wrapper, attr, getattr(fn, attr))
+    wrapper.__thinlayer_boundary__ = True
     return wrapper
+
+
+def boundary_methods(cls: type) -> type:
+    """Apply :func:`boundary` to the public methods ``cls`` defines (and ``__init__``, ``__new__``, ``__call__``).
+
+    Properties are left alone (they take no argument).  Returns ``cls``: a class decorator.
+    """
+    for name, attr in list(vars(cls).items()):
+        if name.startswith("_") and name not in ("__init__", "__new__", "__call__"):
+            continue
+        if isinstance(attr, (staticmethod, classmethod)):
+            fn = attr.__func__
+            if not getattr(fn, "__thinlayer_boundary__", False):
+                setattr(cls, name, type(attr)(boundary(fn, f"{cls.__name__}.{fn.__name__}()")))
+        elif inspect.isfunction(attr) and not getattr(attr, "__thinlayer_boundary__", False):
+            shown = cls.__name__ if name in ("__init__", "__new__") else f"{cls.__name__}.{name}"
+            setattr(cls, name, boundary(attr, f"{shown}()"))
+    return cls

@@ -51,11 +51,11 @@ import mpmath
 import sympy as sp
 
 from . import symbols as S
-from .errors import InputError, InputTypeError, WorkLimitError
+from .errors import InputError, InputTypeError, WorkLimitError, boundary, boundary_methods
 
 __all__ = ["Cost", "ExpressionError", "MAX_BITS", "MAX_DIGITS", "MAX_EXPONENT", "MAX_FLOAT_DIGITS", "MAX_LENGTH",
            "MAX_PARAMETERS", "MAX_TERMS", "MAX_TOTAL_DEGREE", "as_expr", "check_cost", "expression_cost",
-           "parse_expression", "parse_number"]
+           "parse_expression", "parse_number", "sympy_value"]
 
 #: longest formula read (characters)
 MAX_LENGTH = 10_000
@@ -94,6 +94,7 @@ class FormulaTooLargeError(ExpressionError, WorkLimitError):
 _CAP = 10**15  # estimates saturate here (far above every limit)
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class Cost:
     """Upper bounds of what expanding a formula produces, read off its tree without expanding it.
@@ -136,6 +137,7 @@ def _power_cost(base: Cost, k: int, nsym: int) -> Cost:
     return Cost(degree, min(terms, _CAP), min(bits, _CAP))
 
 
+@boundary
 def expression_cost(expr: sp.Basic) -> Cost:
     """Estimate of the expansion of ``expr`` (:class:`Cost`), from its tree: linear in the tree's size.
 
@@ -145,6 +147,9 @@ def expression_cost(expr: sp.Basic) -> Cost:
     >>> expression_cost((a + b + c + d)**1000).terms      # C(1003, 3)
     167668501
     """
+    if not isinstance(expr, sp.Basic):
+        raise InputTypeError(f"expression_cost needs a sympy expression, got {type(expr).__name__} (read a formula "
+                             "with parse_expression)")
     memo: dict = {}
 
     def walk(e: sp.Basic) -> Cost:
@@ -179,12 +184,16 @@ def expression_cost(expr: sp.Basic) -> Cost:
     return walk(expr)
 
 
+@boundary
 def check_cost(expr: sp.Basic, what: str = "formula", *, cost: Cost | None = None) -> sp.Basic:
     """``expr`` if expanding it stays within the limits (module docstring), else a one-line error naming the limit.
 
     Applied to every parsed formula, and by :class:`~thinlayer.Punch` to a sympy expression it is given.  Also
     checks that every float in it lies in the normal double range.
     """
+    if not isinstance(expr, sp.Basic):
+        raise InputTypeError(f"check_cost needs a sympy expression, got {type(expr).__name__} (read a formula with "
+                             "parse_expression)")
     try:
         c = cost if cost is not None else expression_cost(expr)
     except RecursionError:
@@ -372,6 +381,7 @@ def _number(text: str, pos: int) -> sp.Number:
     return sp.Float(text) if mantissa else sp.Float(0)
 
 
+@boundary
 def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str] | None = None,
                      what: str = "formula") -> sp.Expr:
     """A user's formula as a sympy expression, read by the restricted grammar (never evaluated as code).
@@ -419,6 +429,7 @@ def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str
     return out
 
 
+@boundary
 def parse_number(value: Any, what: str) -> sp.Expr:
     """A number given as a string (``"3/10"``, ``"0.3"``, ``"1e-3"``), an int, a float or a sympy number.
 
@@ -434,6 +445,23 @@ def parse_number(value: Any, what: str) -> sp.Expr:
     if not out.is_number or out.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
         raise ExpressionError(f"{what} must be a finite number, got {value!r}")
     return out
+
+
+@boundary
+def sympy_value(value: Any, what: str, *, symbol: bool = False) -> sp.Basic:
+    """An argument that takes a sympy expression: a sympy object as given, a number converted, a string read by
+    the grammar (:func:`parse_expression`, never evaluated); ``symbol=True`` requires a sympy Symbol.
+
+    sympy's own functions (``sp.diff``, ``sp.sinh``, ``.subs``) sympify a string, which runs it as Python: every
+    method that hands an argument to them converts it here first.
+    """
+    if symbol:
+        if isinstance(value, sp.Symbol):
+            return value
+        raise InputTypeError(f"{what} must be a sympy Symbol, got {value!r:.60} ({type(value).__name__})")
+    if isinstance(value, sp.Basic):
+        return value
+    return as_expr(value, what)
 
 
 def as_expr(value: Any, what: str = "value") -> sp.Expr:

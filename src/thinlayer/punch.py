@@ -20,8 +20,8 @@ import sympy as sp
 
 from . import symbols as S
 from .display import RichDisplay, fmt
-from .errors import InputError, InputTypeError, WorkLimitError
-from .parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, parse_expression
+from .errors import InputError, InputTypeError, WorkLimitError, boundary_methods
+from .parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, parse_expression, sympy_value
 from .symbols import laplacian
 
 
@@ -51,6 +51,7 @@ def _degree_bound(expr: sp.Expr) -> int:
     return 0
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class Punch(RichDisplay):
     """A rigid punch ``x3 = -Phi(x1, x2)`` with polynomial Phi (1.1).
@@ -239,6 +240,7 @@ class Punch(RichDisplay):
 
     def scaled(self, Hs: sp.Expr = S.H_s, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2) -> sp.Expr:
         """Phi^*(xi) = Lambda Phi(H_* xi; theta(theta^*)) (1.2), (2.13)."""
+        Hs, v1, v2 = sympy_value(Hs, "Hs"), sympy_value(v1, "v1", symbol=True), sympy_value(v2, "v2", symbol=True)
         e = self.expr.xreplace({S.x1: Hs * v1, S.x2: Hs * v2}).xreplace(dict(self.scaling))
         return sp.expand(S.Lambda * e)
 
@@ -263,6 +265,7 @@ class Punch(RichDisplay):
                 f"  degree {self.degree}, parameters: {pars}"]
 
 
+@boundary_methods
 @dataclass(frozen=True, init=False)
 class FlatPunch(RichDisplay):
     """A rigid flat-ended cylinder of radius ``a``: ``u3 = w0`` on the disc ``r < a``, a fixed contact (F.1).

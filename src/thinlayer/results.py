@@ -17,7 +17,7 @@ from typing import Any, Protocol, runtime_checkable
 
 import sympy as sp
 
-from .errors import InputError, InputTypeError
+from .errors import InputError, InputTypeError, boundary
 
 BACKENDS = ("numpy", "mpmath", "math", "sympy")
 
@@ -66,6 +66,7 @@ def _as_symbols(args: Sequence[sp.Symbol] | sp.Symbol) -> tuple[sp.Symbol, ...]:
     return args
 
 
+@boundary
 def checked_lambdify(
     args: Sequence[sp.Symbol] | sp.Symbol,
     exprs: sp.Expr | Iterable[sp.Expr],
@@ -91,8 +92,15 @@ def checked_lambdify(
     if backend not in BACKENDS:
         raise InputError(f"backend must be one of {BACKENDS}, got {backend!r}")
     args = _as_symbols(args)
+    if isinstance(exprs, (str, bytes)):  # sympy.lambdify would paste a string into the generated code
+        raise InputTypeError("exprs must be sympy expressions, not a string (read a formula with "
+                             "thinlayer.parse.parse_expression)")
     single = isinstance(exprs, sp.Basic)
     items = [exprs] if single else list(exprs)
+    bad = [e for e in items if not isinstance(e, sp.Basic)]
+    if bad:
+        raise InputTypeError(f"exprs must be sympy expressions, got {type(bad[0]).__name__} (read a formula with "
+                             "thinlayer.parse.parse_expression)")
     free: set[sp.Symbol] = set()
     for e in items:
         free |= e.free_symbols if isinstance(e, sp.Basic) else set()

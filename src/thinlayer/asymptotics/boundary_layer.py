@@ -95,8 +95,9 @@ import sympy as sp
 from .. import symbols as S
 from .._checks import InputError, InputTypeError
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..parse import as_expr
+from ..parse import as_expr, sympy_value
 from ..results import latex_equation
 
 #: fast normal variable (3.7), distance from the edge (3.22), Laplace variable, kernel argument
@@ -514,6 +515,7 @@ def alexandrov_kernel_numpy(layer: Any, t: Any, nodes: int = 80) -> np.ndarray:
 # ---------------------------------------------------------------------------------------------
 # the boundary-layer solution (3.23)-(3.25)
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class AlexandrovSolution(RichDisplay):
     """Boundary layer with Alexandrov's kernel, normalised: ``q** = (vartheta H_* b_1^*/A) Q(v)``.
@@ -543,12 +545,14 @@ class AlexandrovSolution(RichDisplay):
 
         Q(v) = v erf(sqrt(B (v - h))) + sqrt((v - h)/(pi B)) exp(-B (v - h)).
         """
+        v_ = sympy_value(v_, "v")
         _, B, _, h = self._BCh()
         x = v_ - h
         return v_ * sp.erf(sp.sqrt(B * x)) + sp.sqrt(x / (sp.pi * B)) * sp.exp(-B * x)
 
     def q_hat(self, v_: sp.Expr = v) -> sp.Piecewise:
         """``Q`` extended by 0 outside the contact area: ``Piecewise((Q(v), v >= h), (0, True))``."""
+        v_ = sympy_value(v_, "v")
         _, _, _, h = self._BCh()
         return sp.Piecewise((self.q(v_), v_ >= h), (0, True))
 
@@ -558,6 +562,7 @@ class AlexandrovSolution(RichDisplay):
         Q = (tau + h) erf sqrt(B tau) + sqrt(tau/(pi B)) e^{-B tau}
             + (h - h_0) sqrt(A/(pi tau)) e^{-B tau},     h_0 = 1/sqrt(C) - 1/(2B).
         """
+        tau_ = sympy_value(tau_, "tau")
         A, B, C, _ = self._BCh()
         hh = sp.Symbol("h", real=True) if h is None else as_expr(h)
         e = sp.exp(-B * tau_)
@@ -569,11 +574,13 @@ class AlexandrovSolution(RichDisplay):
 
     def laplace_transform(self, p_: sp.Expr = p) -> sp.Expr:
         """``int_0^oo Q(h + tau) e^{-p tau} dtau = sqrt(A) (p + sqrt C)/(p^2 sqrt(p + B))``."""
+        p_ = sympy_value(p_, "p")
         A, B, C, _ = self._BCh()
         return sp.sqrt(A) * (p_ + sp.sqrt(C)) / (p_**2 * sp.sqrt(p_ + B))
 
     def dimensional(self, v_: sp.Expr = v) -> sp.Expr:
         """The physical boundary layer ``q**(s, v) = vartheta H_* b_1^*(s) A^{-1} Q(v)`` (3.24)."""
+        v_ = sympy_value(v_, "v")
         A = _to_sympy(self.params.A, self.params.dps)
         return S.vartheta * S.H_s * b1 / A * self.q(v_)
 
@@ -624,6 +631,7 @@ class AlexandrovSolution(RichDisplay):
         ]
 
 
+@boundary
 def alexandrov_solution(layer: Any) -> AlexandrovSolution:
     """Boundary layer with Alexandrov's kernel (3.22)-(3.25), by Wiener--Hopf (module docstring).
 

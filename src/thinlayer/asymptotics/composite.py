@@ -40,6 +40,7 @@ import sympy as sp
 from .. import symbols as S
 from .._checks import InputError, NotDerivedError, parse_nu, positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
 from .inner import InnerPressure, inner_pressure
@@ -61,6 +62,7 @@ def _norm(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.sqrt(out, out=out)
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class CompositePressure(RichDisplay):
     r"""Uniformly valid pressure ``p_c(x1, x2)`` (module docstring); call it like a numpy function.
@@ -288,6 +290,7 @@ class CompositePressure(RichDisplay):
         ]
 
 
+@boundary
 def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float, mu: float = 1.0,
                        terms: int = 2, boundary_layer: str = "exact", nu: Any = None) -> CompositePressure:
     """Uniformly valid contact pressure for a numeric layer and punch (module docstring).

@@ -110,7 +110,8 @@ import sympy as sp
 from .. import symbols as S
 from .._checks import ComputationError, InputError, InputTypeError
 from ..display import RichDisplay, fmt
-from ..parse import as_expr
+from ..errors import boundary, boundary_methods
+from ..parse import as_expr, sympy_value
 from ._contour_region import (
     ASPECT_DIRECT,
     ASPECT_MAX,
@@ -672,6 +673,7 @@ class ContourAccuracy:
     turning_number: float
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class ContactContour(RichDisplay):
     r"""The leading contact area omega_0 = {delta0 - Phi > 0} and its contour Gamma_0 (3.3)-(3.14).
@@ -918,6 +920,7 @@ class ContactContour(RichDisplay):
 # ---------------------------------------------------------------------------------------------
 # the stage function
 # ---------------------------------------------------------------------------------------------
+@boundary
 def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> ContactContour:
     r"""The leading contact area ``omega_0 = {delta0 - Phi > 0}`` and its contour Gamma_0 (3.1)-(3.14).
 
@@ -1088,6 +1091,7 @@ def _framed_contour(expr, d0, P, Pw, W, det, Zw, Lw, best, acc) -> ContactContou
 # ---------------------------------------------------------------------------------------------
 # the elliptic paraboloid in closed form (3.1)
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class EllipseContour(RichDisplay):
     r"""Closed form of Gamma_0 for the elliptic paraboloid (1.1), (3.1).
@@ -1111,6 +1115,7 @@ class EllipseContour(RichDisplay):
 
     def curvature_radius(self, x1, x2) -> sp.Expr:
         """Curvature radius at a point of the ellipse: ``a^2 b^2 (x1^2/a^4 + x2^2/b^4)^(3/2)``."""
+        x1, x2 = sympy_value(x1, "x1"), sympy_value(x2, "x2")
         return self.a**2 * self.b**2 * (x1**2 / self.a**4 + x2**2 / self.b**4) ** sp.Rational(3, 2)
 
     def scaled_semi_axes(self) -> tuple[sp.Expr, sp.Expr]:
@@ -1145,6 +1150,7 @@ class EllipseContour(RichDisplay):
         ]
 
 
+@boundary
 def ellipse_contour(R1=None, R2=None, delta0=None) -> EllipseContour:
     """Closed-form contour of the elliptic paraboloid (1.1): semi-axes and eccentricity (3.1).
 

@@ -87,6 +87,7 @@ from .. import symbols as S
 from .._checks import InputError, InputTypeError, parse_nu
 from .._checks import positive as _positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..parse import parse_number
 from ..punch import Punch, PunchError
@@ -206,6 +207,7 @@ def _positive_definite(K: sp.Matrix, name: str) -> None:
 # ---------------------------------------------------------------------------------------------
 # the result objects
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class ForceValues:
     """Numbers of the force law and the area law at one set of parameters.
@@ -292,6 +294,7 @@ def error_estimate(values: ForceValues, first_correction: float | None = None, o
     return {"force": force, "contact_area": area}
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class ForceLaw(RichDisplay):
     r"""``P(delta0)`` and ``|omega|(delta0)`` with their first corrections in H (1.8), (3.25).
@@ -640,6 +643,7 @@ def _compiled_closed_forms(law: ForceLaw, keys: tuple) -> Any:
 FORCE_LAW_CACHE = 256
 
 
+@boundary
 def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
     r"""Force--indentation law with its first correction in H (1.8), and the contact-area law (3.25).
 

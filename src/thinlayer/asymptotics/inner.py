@@ -30,6 +30,7 @@ from .. import symbols as S
 from .._checks import InputError, InputTypeError, check_bounded
 from .._checks import check_order as _check_order
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.coefficients import order_limit
 from ..layers.kernels import LayerKernel
 from ..parse import as_expr
@@ -39,6 +40,7 @@ from ..results import checked_lambdify
 METHODS = ("closed", "recursion")
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class InnerPressure(RichDisplay):
     """The inner expansion of the contact pressure for one layer and punch.
@@ -176,6 +178,7 @@ def _gap_dicts(punch: Punch) -> tuple[dict[Mono, Any], dict[Mono, Any]]:
     return gap, gap_s
 
 
+@boundary
 def inner_pressure(layer: LayerKernel, punch: Punch, order: int | None = None,
                    method: str = "closed") -> InnerPressure:
     """The inner expansion (2.26) of the contact pressure, terms (2.27)-(2.28) or (4.1).

@@ -108,6 +108,7 @@ import sympy as sp
 from .. import symbols as S
 from .._checks import InputError, InputTypeError, parse_nu, positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
 from ..results import latex_equation
@@ -257,6 +258,7 @@ def second_order_boundary_layer() -> SecondOrderBoundaryLayer:
 # ---------------------------------------------------------------------------------------------
 # the constants of a layer
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class EdgeConstants(RichDisplay):
     """``h^*`` (3.18), ``m_1`` (2.20) and ``r_3`` (SO.4) of one layer; ``r3_spread`` = largest difference of r_3
@@ -308,6 +310,7 @@ def _layer_of(key: Any) -> LayerKernel:
     return FrictionlessLayer() if key == "frictionless" else BondedLayer(key)
 
 
+@boundary
 def edge_constants(layer: Any, dps: int = 20) -> EdgeConstants:
     """``h^*``, ``m_1``, ``r_3`` of a layer (``BondedLayer(nu)`` with a numeric nu, ``FrictionlessLayer()``, or nu).
 
@@ -330,6 +333,7 @@ def edge_constants(layer: Any, dps: int = 20) -> EdgeConstants:
 # ---------------------------------------------------------------------------------------------
 # (SO.9), (SO.10): the laws
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class SecondOrderValues:
     """Numbers of the second-order laws at one point.  ``first`` the first-order :class:`ForceValues`
@@ -414,6 +418,7 @@ def _quadratic_edge_integrals(Phi: sp.Expr, phi_min: sp.Expr, perimeter: sp.Expr
     return E1, E2
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class SecondOrderLaw(RichDisplay):
     r"""``P(delta0)`` to ``O(P0 (H/a)^4)`` and ``|omega|(delta0)`` to ``O(|omega_0| (H/a)^3)`` (SO.9), (SO.10).
@@ -615,6 +620,7 @@ def _second_order_law(layer: LayerKernel, punch: Punch) -> SecondOrderLaw:
     return SecondOrderLaw(first, E1, E2, P2, area2, p2, P_in)
 
 
+@boundary
 def second_order_law(layer: LayerKernel, punch: Punch) -> SecondOrderLaw:
     """The force law (SO.9) and area law (SO.10) of a polynomial punch on a thin layer.
 

@@ -43,6 +43,7 @@ from .. import symbols as S
 from .._checks import InputError, InputTypeError, NotDerivedError, check_array_size, check_bounded, parse_nu
 from .._checks import positive as _positive
 from ..display import RichDisplay
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch, PunchError
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
@@ -110,6 +111,7 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     return layer, given
 
 
+@boundary
 def numeric_punch(punch: Any, parameters: dict | None = None) -> Punch:
     """The punch as a :class:`~thinlayer.Punch` with every parameter given a number (one clear error if not)."""
     if not isinstance(punch, Punch):
@@ -125,6 +127,7 @@ def numeric_punch(punch: Any, parameters: dict | None = None) -> Punch:
     return punch
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class ContactSolution(RichDisplay):
     r"""Contact solution for numeric parameters; made by :func:`compressible_solution`.
@@ -326,6 +329,7 @@ class ContactSolution(RichDisplay):
         return display_math(self.latex())
 
 
+@boundary
 def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,
           force: Any = None, parameters: dict | None = None, order: int = 1, terms: int = 2,
           boundary_layer: str = "exact", nu: Any = None, tol: Any = DEFAULT_TOL) -> ContactSolution:
@@ -487,6 +491,7 @@ def _second_order_indentation(layer, punch, per_mu, H, nu, guess):
                         f"depth {guess:.6g}; use order=1 or model='direct'", "force")
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class ForceArrays:
     """The compressible model's force (1.8) and contact area (3.25) over arrays of depths (:func:`force_arrays`).
@@ -521,6 +526,7 @@ def _array_law(law: Any, keys: tuple) -> Any:
     return sp.lambdify(keys, [law.P0, law.P1, law.area0, per], modules="numpy")
 
 
+@boundary
 def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 1.0, *, nu: Any = None,
                  parameters: dict | None = None, tol: Any = DEFAULT_TOL) -> ForceArrays:
     r"""The force law (1.8) with its first correction and the area law (3.25) over numpy arrays of ``delta0``.

@@ -92,6 +92,7 @@ from scipy import optimize, special
 
 from .._checks import InputError, InputTypeError, parse_nu
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 
 __all__ = [
@@ -423,6 +424,7 @@ def edge_cubic(nu: Any, kernel: str = "exact", normaliser: str = "alexandrov", d
     return _edge_cubic(_layer(_rational_nu(nu)), kernel, normaliser, _check_dps(dps))
 
 
+@boundary
 def edge_shift_exact(nu: Any, dps: int = 20, normaliser: str = "alexandrov") -> mpmath.mpf:
     """Exact edge shift ``h*`` (3.18) with the kernel (2.3): :func:`edge_shift` with ``kernel="exact"``.
 
@@ -439,6 +441,7 @@ def edge_shift_exact(nu: Any, dps: int = 20, normaliser: str = "alexandrov") -> 
     return edge_shift(nu, "exact", normaliser, dps)
 
 
+@boundary
 def edge_shift_alexandrov(nu: Any) -> mpmath.mpf:
     """Alexandrov's edge shift (3.25) ``h~ = 1/sqrt(C) - 1/(2B) = sqrt(A/B) - 1/(2B)``.
 
@@ -591,6 +594,7 @@ def _qhat_dehoog(laplace, tau: float, dps: int) -> mpmath.mpf:
         return mpmath.invertlaplace(laplace, tau, method="dehoog")
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class WienerHopfSolution(RichDisplay):
     r"""Boundary layer ``qhat(tau)`` of (3.22), normalised so that ``qhat ~ tau + h`` (``c = pi^2 A``).
@@ -794,6 +798,7 @@ def wiener_hopf_solution(nu: Any, kernel: str = "exact", normaliser: str = "alex
     return _solution(_rational_nu(nu), kernel, normaliser, _check_dps(dps), None if n is None else int(n))
 
 
+@boundary
 def boundary_layer_exact(nu: Any, dps: int = 20, n: int | None = None) -> WienerHopfSolution:
     """Exact boundary layer (3.15)-(3.18) of the bonded layer (2.3): see :func:`wiener_hopf_solution`."""
     return wiener_hopf_solution(nu, "exact", "alexandrov", dps, n)

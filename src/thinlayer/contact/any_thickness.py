@@ -39,6 +39,7 @@ from typing import Any
 import numpy as np
 
 from .._checks import InputError, InputTypeError, check_choice, positive
+from ..errors import boundary, boundary_methods
 
 __all__ = ["AnyThicknessLaw", "AnyThicknessValues", "CHI_HI", "CHI_LO", "NotTabulatedError", "TABLE_PATH",
            "anchor", "any_thickness_fields", "any_thickness_law", "any_thickness_source", "build_law",
@@ -277,6 +278,7 @@ def _band_estimate(data: dict, which: str, chi: np.ndarray, col: int) -> np.ndar
     return np.maximum(10.0 * e, 2e-6)
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class AnyThicknessLaw:
     r"""``P/P_Hertz`` and ``c/sqrt(R delta0)`` of the sphere as functions of ``chi = sqrt(R delta0)/H``, for one
@@ -465,6 +467,7 @@ def _law_cached(nu: float, base: str) -> AnyThicknessLaw:
     return build_law(_packaged_table(), nu if base == "bonded" else 0.3, base)
 
 
+@boundary
 def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
     """The sphere's any-thickness law for one Poisson ratio and base (cached; about 20 ms the first time).
 
@@ -489,6 +492,7 @@ def _shear_modulus(mu: Any, E: Any, nu: float) -> float:
     return positive(mu, "mu") if mu is not None else positive(E, "E") / (2.0 * (1.0 + nu))
 
 
+@boundary
 def force_any_thickness(delta0: Any, R: float, H: float, mu: float | None = None, nu: float = 0.5,
                         base: str = "bonded", *, E: float | None = None) -> np.ndarray:
     r"""Force of a sphere (paraboloid) of radius ``R`` pressed ``delta0`` into a layer of any thickness ``H``.

@@ -9,6 +9,19 @@ on a layer, by :func:`scipy.optimize.least_squares` with the analytic Jacobian. 
 * ``"dimitriadis2002"`` or ``"garcia2018"``: Hertz times a published thick-layer series in
   ``chi = sqrt(R delta)/H`` (printed coefficients, :data:`thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES`).
 
+Validity.  Hertz's law holds for the half-space and the published series are expansions for small ``chi``
+printed for ``nu = 1/2`` (Dimitriadis 2002 also fits ``alpha_0(nu)``, ``beta_0(nu)``, not used here); neither
+publication bounds ``chi`` in a form thinlayer could check, so the range is measured: every fit compares its
+model with the any-thickness law (itself within 2e-4 of the direct solver) at the data's ``nu``, base and
+``0 < chi <= chi_max`` and reports the largest relative difference of the force as ``model_error``.  Above
+:data:`MODEL_TOL` (5 %, the default tolerance of :func:`thinlayer.solve`) the result is returned marked
+``valid=False`` with the reason (``validity``) and a :class:`~thinlayer.errors.ValidityWarning` naming the range
+and the model that holds (``"any-thickness"``): a fit is often run to compare models on the same curve (Hertz's
+overestimate of E is the point of such a comparison), so the numbers come back, never unflagged.  At
+``nu = 1/2`` on a bonded layer the measured ranges are ``chi <= 0.044`` (Hertz), ``chi <= 0.40`` (Dimitriadis
+2002, bonded; 0.34 non-bonded) and ``chi <= 0.75`` (Garcia 2018).  A real sphere is a paraboloid to
+``delta/(4R)`` in the profile at the contact edge: ``R`` here is the paraboloid's radius of curvature.
+
 The parameters are ``log E`` (and ``log H``: both stay positive) and the contact point ``d_c`` (the depth is
 ``delta - d_c``; points before contact carry zero force).  Standard errors come from the Jacobian at the
 solution, ``cov = s^2 (J^T J)^{-1}`` with ``s^2 = sum r^2/(n - p)`` (residuals in force units), mapped to
@@ -18,6 +31,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -25,11 +39,14 @@ import numpy as np
 
 from .._checks import InputError, InputTypeError, check_array_size, check_choice, positive
 from ..display import RichDisplay
+from ..errors import ValidityWarning, boundary, boundary_methods
 from .any_thickness import BASES, any_thickness_law
 
-__all__ = ["FIT_MODELS", "FitResult", "fit"]
+__all__ = ["FIT_MODELS", "FitResult", "MODEL_TOL", "fit", "model_error"]
 
 FIT_MODELS = ("any-thickness", "hertz", "dimitriadis2002", "garcia2018")
+#: the largest relative difference in force from the any-thickness law over the data for a valid fit
+MODEL_TOL = 0.05
 #: a condition number of the scaled Jacobian above this means the data cannot separate the parameters
 MAX_CONDITION = 1e10
 #: more points than this are refused before any work or allocation: 1e6 points fit in 1.2 s and 0.27 GB on 2
@@ -37,6 +54,7 @@ MAX_CONDITION = 1e10
 MAX_POINTS = 1_000_000
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class FitResult(RichDisplay):
     """The result of :func:`fit`: estimates, standard errors, the residual and the model.
@@ -66,6 +84,13 @@ class FitResult(RichDisplay):
         Condition number of the column-scaled Jacobian.
     chi_max : float
         The largest ``sqrt(R delta)/H`` of the data (the thickness regime it probes).
+    valid : bool
+        Whether the model holds over the data: ``model_error <= MODEL_TOL`` (module docstring).
+    model_error : float
+        The largest relative difference of the model's force from the any-thickness law over ``0 < chi <=
+        chi_max`` (for ``"any-thickness"``: the law's own estimate against the direct solver).
+    validity : str
+        Why the result is (not) valid, one line.
     """
 
     E: float
@@ -85,6 +110,9 @@ class FitResult(RichDisplay):
     covariance: np.ndarray = field(default=None, repr=False)
     condition: float = math.nan
     chi_max: float = math.nan
+    valid: bool = True
+    model_error: float = 0.0
+    validity: str = ""
     equation = "T.7"
 
     @property
@@ -103,13 +131,16 @@ class FitResult(RichDisplay):
         return {"model": self.model, "base": self.base, "nu": self.nu, "R": self.R, "E": self.E, "E_se": self.E_se,
                 "H": self.H, "H_se": self.H_se, "offset": self.offset, "offset_se": self.offset_se,
                 "residual_rms": self.residual_rms, "n_points": self.n_points, "fitted": list(self.fitted),
-                "condition": self.condition, "chi_max": self.chi_max}
+                "condition": self.condition, "chi_max": self.chi_max, "valid": self.valid,
+                "model_error": self.model_error, "validity": self.validity}
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         lines = [f"FitResult ({self.model} model, {self.base} base, nu = {self.nu:.6g}, R = {self.R:.6g}), "
-                 f"{self.n_points} points, chi_max = {self.chi_max:.3g}",
-                 f"  E      = {self.E:.8g} +- {self.E_se:.2g}"]
+                 f"{self.n_points} points, chi_max = {self.chi_max:.3g}"]
+        if not self.valid:
+            lines.append(f"  NOT VALID: {self.validity}")
+        lines.append(f"  E      = {self.E:.8g} +- {self.E_se:.2g}")
         if "H" in self.fitted:
             lines.append(f"  H      = {self.H:.8g} +- {self.H_se:.2g}")
         else:
@@ -117,6 +148,12 @@ class FitResult(RichDisplay):
         if "offset" in self.fitted:
             lines.append(f"  offset = {self.offset:.8g} +- {self.offset_se:.2g}")
         lines.append(f"  residual rms = {self.residual_rms:.4g}")
+        if self.model == "any-thickness":
+            lines.append(f"  model error  = {100 * self.model_error:.2g} % (the law's own estimate, against the direct "
+                         "solver)")
+        else:
+            lines.append(f"  model error  = {100 * self.model_error:.2g} % against the any-thickness law"
+                         + ("" if self.valid else f" (a valid fit needs <= {100 * MODEL_TOL:.3g} %)"))
         return lines
 
     def latex(self) -> str:
@@ -166,6 +203,41 @@ def _shape_function(model: str, R: float, nu: float, base: str):
     return g
 
 
+_NAMES = {"hertz": "Hertz's half-space law", "dimitriadis2002": "the Dimitriadis et al. (2002) series",
+          "garcia2018": "the Garcia & Garcia (2018) series", "any-thickness": "the any-thickness law"}
+
+
+def model_error(model: str, R: float, nu: float, base: str, H: float, chi_max: float) -> tuple[float, float]:
+    """``(largest |P_model/P_any-thickness - 1| over 0 < chi <= chi_max, the chi where it is reached)``.
+
+    The any-thickness law (T.7) is the independent reference (within 2e-4 of the direct solver); for the law
+    itself, its own estimate at ``chi_max``.
+    """
+    law = any_thickness_law(nu, base)
+    if not chi_max > 0:
+        return 0.0, 0.0
+    if model == "any-thickness":
+        return float(law.error_estimate(np.array([chi_max]))[0][0]), chi_max
+    chi = np.geomspace(min(1e-4, chi_max), chi_max, 400)
+    ratio, _ = law.ratios(chi)
+    coef = np.array((1.0,) if model == "hertz" else _series_coefficients(model, base))
+    dev = np.abs(np.polynomial.polynomial.polyval(chi, coef) / ratio - 1.0)
+    k = int(np.argmax(dev))
+    return float(dev[k]), float(chi[k])
+
+
+def _validity(model: str, R: float, nu: float, base: str, H: float, chi_max: float) -> tuple[bool, float, str]:
+    err, at = model_error(model, R, nu, base, H, chi_max)
+    if model == "any-thickness" or err <= MODEL_TOL:
+        return True, err, (f"{_NAMES[model]} is within {100 * err:.2g} % of the any-thickness law up to chi_max = "
+                           f"{chi_max:.3g}")
+    printed = "" if model == "hertz" or nu == 0.5 else f", and it is printed for nu = 1/2 (here nu = {nu:.4g})"
+    return False, err, (f"{_NAMES[model]} differs from the any-thickness law by {100 * err:.3g} % at chi = "
+                        f"sqrt(R delta)/H = {at:.3g} (the data reach chi_max = {chi_max:.3g}; a valid fit needs "
+                        f"<= {100 * MODEL_TOL:.3g} %){printed}: outside its range; model='any-thickness' holds at "
+                        "every chi")
+
+
 def _points(delta: Any, force: Any) -> tuple[np.ndarray, np.ndarray]:
     for name, v in (("delta", delta), ("force", force)):
         check_array_size(v, name, MAX_POINTS, "1e6 points fit in 1.2 s and 0.27 GB; subsample the curve")
@@ -195,6 +267,7 @@ def _radius(punch: Any) -> float:
     return R
 
 
+@boundary
 def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5, base: str = "bonded", *,
         fit_H: bool = False, fit_offset: bool = False, model: str = "any-thickness", E0: float | None = None,
         sigma: Any = None) -> FitResult:
@@ -336,5 +409,8 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     off_se = se[-1] if fit_offset else 0.0
     resid_force = (r * fscale / w)
     chi_max = float(math.sqrt(R * max(float(np.max(d - dc)), 0.0)) / HH)
+    valid, err, why = _validity(model, R, nu, base, HH, chi_max)
+    if not valid:
+        warnings.warn(f"fit(): E = {E:.4g} is NOT VALID: {why}", ValidityWarning, stacklevel=2)
     return FitResult(E, E_se, HH, H_se, dc, off_se, float(np.sqrt(np.mean(resid_force**2))), resid_force, model,
-                     base, nu, R, int(d.size), tuple(names), cov, cond, chi_max)
+                     base, nu, R, int(d.size), tuple(names), cov, cond, chi_max, valid, err, why)

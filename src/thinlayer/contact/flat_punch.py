@@ -27,6 +27,7 @@ import numpy as np
 from .._checks import InputError, InputTypeError, check_array_size, check_bounded, check_choice, parse_nu, positive
 from ..asymptotics.flat_punch import thick_flat_punch, thin_flat_punch
 from ..display import RichDisplay
+from ..errors import boundary
 from ..layers.kernels import LayerKernel
 from ..numerics.flat_punch import MAX_A_OVER_H, check_numeric_layer, flat_punch_kappa, solve_flat_punch
 
@@ -151,6 +152,7 @@ def stiffness_table(layer: LayerKernel, a_over_H: Any, model: str = "auto", *,
     return kappa, est, [FLAT_PUNCH_MODELS[int(w)] for w in which.ravel()]
 
 
+@boundary
 def flat_punch_stiffness(layer: LayerKernel, a_over_H: Any, model: str = "exact", *,
                          max_error: float = 1e-2) -> Any:
     """The stiffness ``kappa(a/H)`` of a flat-ended cylindrical punch, ``P = 4 mu a w0 kappa/(1 - nu)`` (F.1).

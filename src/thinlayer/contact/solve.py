@@ -55,6 +55,7 @@ from ..asymptotics.incompressible import (
 )
 from ..asymptotics.solution import DEFAULT_TOL, ValidityError, compressible_solution, numeric_punch
 from ..display import RichDisplay
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import IncompressibleLayer, LayerKernel
 from ..punch import FlatPunch, Punch
 
@@ -103,6 +104,7 @@ def _shape(punch: Punch) -> _Shape:
 # =============================================================================================
 # the result
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class Indentation(RichDisplay):
     r"""The answer of :func:`solve`: force, contact size and pressure, with the model and its error estimate.
@@ -285,6 +287,7 @@ def _tex_num(x: float) -> str:
     return f"{x:.8g}" if -3 <= e <= 5 else rf"{float(m):.8g} \times 10^{{{e}}}"
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class DirectComparison(RichDisplay):
     """An :class:`Indentation` beside the direct solution of the same problem (:meth:`Indentation.compare_direct`).
@@ -675,6 +678,7 @@ def _direct(layer, punch, delta0, H, mu, nu, refine=False, previous=None, force=
 # =============================================================================================
 # the front door
 # =============================================================================================
+@boundary
 def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = None, *, E: Any = None,
           force: Any = None, nu: Any = None, model: str = "auto", tol: Any = DEFAULT_TOL,
           parameters: dict | None = None, n: int | None = None, **options: Any) -> Indentation:

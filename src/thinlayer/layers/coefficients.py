@@ -50,6 +50,7 @@ from .._series import (
     reciprocal_recurrence,
 )
 from ..display import RichDisplay, fmt
+from ..errors import boundary
 from ..parse import as_expr
 from ..results import checked_lambdify
 from . import _flint
@@ -350,6 +351,7 @@ def check_coefficient_order(layer: LayerKernel, order: int, name: str = "order")
 BACKENDS = ("auto", "python", "flint")
 
 
+@boundary
 def kernel_coefficients(layer: LayerKernel, order: int, *, backend: str | None = None) -> KernelCoefficients:
     """A, m_n (2.20) and M_k (4.2), for n, k <= ``order``.
 

@@ -30,6 +30,8 @@ from .._checks import InputError, check_bounded, parse_nu
 from .._checks import check_order as _check_order
 from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
 from ..display import RichDisplay, fmt
+from ..errors import boundary_methods
+from ..parse import sympy_value
 from . import numeric as kernel_numeric
 from .coefficients import incompressible_coefficients, kernel_coefficients
 from .moments import kernel_moment
@@ -71,6 +73,7 @@ def _is_half(nu: Any) -> bool:
         return False
 
 
+@boundary_methods
 class LayerKernel(RichDisplay, ABC):
     """Interface of a layer model: symbolic L(u), Maclaurin data of L(s)/s, numerics."""
 
@@ -190,10 +193,12 @@ class LayerKernel(RichDisplay, ABC):
 
     def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
         """Maclaurin polynomial of L(u) through u^(2*order+1): ``A u (1 + m_1 u^2 + ...)`` (2.4), (2.20)."""
+        u = sympy_value(u, "u")
         c = self.coefficients(order)
         return sp.Add(*[c.A_expr * c.m_expr(k) * u ** (2 * k + 1) for k in range(order + 1)])
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=True)
 class BondedLayer(LayerKernel):
     """Elastic layer bonded to a rigid base (the paper's layer), kernel (2.3)::
@@ -305,6 +310,7 @@ class BondedLayer(LayerKernel):
         return sp.Float(k, self.dps) if isinstance(k, mpmath.mpf) else k
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         k = self._kappa_expr()
         return (2 * k * sp.sinh(2 * u) - 4 * u) / (2 * k * sp.cosh(2 * u) + 1 + k**2 + 4 * u**2)
 
@@ -314,6 +320,7 @@ class BondedLayer(LayerKernel):
         Derivation: ``L - 1 = -(2 kappa e^{-2u} + 1 + kappa^2 + 4u + 4u^2)/(kappa e^{2u} + ...)``,
         so the remainder is ``O(u^2 e^{-2u})`` as printed in (2.4).
         """
+        u = sympy_value(u, "u")
         k = self._kappa_expr()
         return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
 
@@ -342,6 +349,7 @@ class BondedLayer(LayerKernel):
         return [f"BondedLayer(nu={fmt(self.nu, 15)})"]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class FrictionlessLayer(LayerKernel):
     """Layer lying on a rigid base without friction: ``L(u) = (cosh 2u - 1)/(sinh 2u + 2u)``.
@@ -371,6 +379,7 @@ class FrictionlessLayer(LayerKernel):
         return "frictionless"
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         return (sp.cosh(2 * u) - 1) / (sp.sinh(2 * u) + 2 * u)
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
@@ -392,6 +401,7 @@ class FrictionlessLayer(LayerKernel):
         return [f"{type(self).__name__}({'' if self.nu is None else 'nu=' + fmt(self.nu, 15)})"]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class HalfSpace(LayerKernel):
     """The elastic half-space, ``L = 1``: the limit of every layer as H -> oo.
@@ -405,6 +415,7 @@ class HalfSpace(LayerKernel):
     has_compressible_expansion: ClassVar[bool] = False
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         return sp.Integer(1)
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
@@ -433,6 +444,7 @@ class HalfSpace(LayerKernel):
         return [f"{type(self).__name__}()"]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class GenericLayer(LayerKernel):
     """A layer known only through its coefficients: ``A`` and ``m_n`` stay plain symbols.
@@ -457,6 +469,7 @@ class GenericLayer(LayerKernel):
         return sp.Symbol(f"m_{n}")
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         raise InputError("a GenericLayer has no closed-form L(u); use BondedLayer or FrictionlessLayer")
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
@@ -479,6 +492,7 @@ def _kernel_23(kappa: sp.Expr, u: sp.Expr) -> sp.Expr:
     return (2 * kappa * sp.sinh(2 * u) - 4 * u) / (2 * kappa * sp.cosh(2 * u) + 1 + kappa**2 + 4 * u**2)
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class IncompressibleLayer(LayerKernel):
     """The incompressible layer bonded to a rigid base: kernel (2.3) at ``nu = 1/2``, ``kappa = 1``::
@@ -541,10 +555,12 @@ class IncompressibleLayer(LayerKernel):
 
     # ---- symbolic --------------------------------------------------------------------------
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         return _kernel_23(self.kappa, u)
 
     def large_u(self, u: sp.Expr = S.u) -> sp.Expr:
         """Leading behaviour of ``L(u) - 1`` as u -> oo: ``-(4u^2 + 4u + 2) e^{-2u}`` (kappa = 1 in (2.4))."""
+        u = sympy_value(u, "u")
         k = self.kappa
         return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
 
@@ -554,6 +570,7 @@ class IncompressibleLayer(LayerKernel):
 
     def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
         """Maclaurin polynomial of L(u) through ``u^(2 order + 1)``: ``c_1 u^3 + c_2 u^5 + ...`` (I.1)."""
+        u = sympy_value(u, "u")
         c = incompressible_coefficients(_check_order(order, "order")).c
         return sp.Add(*[c[k] * u ** (2 * k + 1) for k in range(order + 1)])
 

@@ -68,6 +68,7 @@ from scipy import integrate, optimize, special
 from .. import symbols as S
 from .._checks import InputError, InputTypeError, check_bounded, positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
 from ._layer import GAUSS, U_MAX, numeric_layer_nu, panel_count
@@ -83,6 +84,7 @@ r = sp.Symbol("r", nonnegative=True)
 
 
 # --------------------------------------------------------------------------- result
+@boundary_methods
 @dataclass(frozen=True)
 class AxisymmetricContact(RichDisplay):
     """Direct numerical solution of the axisymmetric unilateral contact problem (1.5)-(1.8).
@@ -182,6 +184,7 @@ def _as_punch(punch: Any) -> Punch:
     return punch
 
 
+@boundary
 def radial_profile(punch: Any) -> sp.Expr:
     """The profile ``Phi(r)`` of an axisymmetric punch, as a sympy expression in :data:`r`.
 
@@ -332,6 +335,7 @@ def _result(layer, punch, nu, mu, H, delta0, c, disc, x1, xP, d0c, errs) -> Axis
 
 
 # --------------------------------------------------------------------------- prescribed radius
+@boundary
 def contact_for_radius(layer: LayerKernel, punch: Any, radius: float, H: float | None = None, mu: float = 1.0,
                        n: int | None = None, *, nu: float | None = None,
                        error_estimate: bool = True) -> AxisymmetricContact:
@@ -422,6 +426,7 @@ def _radius_for_depth(layer, phi, delta0, H, N, c_int):
     return c, disc, d0c, x1, xP
 
 
+@boundary
 def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0,
                        n: int | None = None, *, nu: float | None = None,
                        error_estimate: bool = True) -> AxisymmetricContact:
@@ -501,6 +506,7 @@ def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float |
 
 
 # --------------------------------------------------------------------------- displacement (check route)
+@boundary
 def surface_displacement(result: AxisymmetricContact, r: Any) -> np.ndarray:
     """Surface displacement u3(r) produced by the computed pressure, by a route independent of the solver.
 

@@ -126,6 +126,7 @@ from scipy import interpolate, optimize, special
 
 from .. import symbols as S
 from .._checks import ComputationError, InputError, InputTypeError, check_bounded, positive
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
 from ._layer import U_MAX, gauss_panels, numeric_layer_nu, panel_count
@@ -180,6 +181,7 @@ class CoarseGridWarning(UserWarning):
 
 
 # --------------------------------------------------------------------------- result
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class Contact2D:
     """Direct numerical solution of the two-dimensional contact problem (1.5)-(1.8).
@@ -280,6 +282,7 @@ def _t_quadrature(rho_max: float) -> tuple[np.ndarray, np.ndarray]:
     return gauss_panels(U_MAX, panel_count(U_MAX, min(0.5, 2.0 * math.pi / max(rho_max, 1e-300))), 16)
 
 
+@boundary
 def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
     """``g_c(r) = (1/(2 pi H)) int_0^oo (L(t) - 1) J0(t r/H) dt``: the layer's correction to Boussinesq.
 
@@ -337,6 +340,7 @@ def _uniform_spline(spline: interpolate.CubicSpline) -> Callable[[np.ndarray], n
     return ev
 
 
+@boundary
 def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, n: int, *,
                            nu: float | None = None, mu: float = 1.0) -> np.ndarray:
     """Influence coefficients ``C[k, l]``: u3 at offset ``(k Delta, l Delta)`` from a cell under unit pressure.
@@ -915,6 +919,7 @@ def _package(prob: _Problem, p: np.ndarray, g: np.ndarray, iters: int, res: floa
     return result
 
 
+@boundary
 def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: float | None = None,
              mu: float = 1.0, n: int = 256, extent: Any = None, tol: float = 1e-10, maxiter: int = 5000,
              *, force: float | None = None, nu: float | None = None, workers: int | None = None) -> Contact2D:

@@ -19,6 +19,7 @@ import sympy as sp
 
 from .. import symbols as S
 from .._checks import ComputationError, InputError, InputTypeError, check_bounded, parse_nu, positive
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ..punch import Punch
 
@@ -35,6 +36,7 @@ RANGE_HINT = ("the incompressible/two-term models need m_1 > 0, so that -m_1 H^2
 # =============================================================================================
 # numerics on a grid: (I.3)-(I.4) and (I.10) for any punch
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class GridContact:
     """Grid solution of the obstacle problem (I.3)-(I.4) / (I.10).
@@ -257,6 +259,7 @@ def _check_box(box: Any, phi: Callable, d0: float) -> tuple[float, float, float,
     return bx
 
 
+@boundary
 def solve_obstacle_grid(layer: LayerKernel, punch: Any, delta0: float | None = None, H: float | None = None,
                         mu: float = 1.0, *, n: int = 161, box: Any = None, parameters: dict | None = None,
                         maxit: int = 500, nu: Any = None) -> GridContact:

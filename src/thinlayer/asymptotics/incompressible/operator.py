@@ -20,7 +20,9 @@ import sympy as sp
 
 from ... import symbols as S
 from ..._checks import InputError, InputTypeError, check_order, parse_nu
+from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
+from ...parse import sympy_value
 from ...punch import Punch
 from ...results import checked_lambdify, latex_equation
 from ...symbols import laplacian
@@ -46,6 +48,7 @@ RANGE_HINT = ("the incompressible/two-term models need m_1 > 0, so that -m_1 H^2
 # =============================================================================================
 # (I.2) the operator series
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class ThinLayerOperator:
     """The thin-layer operator (2.22)-(2.23) in dimensional form (I.2)::
@@ -82,6 +85,8 @@ class ThinLayerOperator:
     def apply_scaled(self, f: sp.Expr, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2,
                      Lam: sp.Expr = S.Lambda) -> sp.Expr:
         """The operator series (2.23) on a density ``f(xi)``: ``sum_n w_n Lambda^{-2n-2} Delta^n f``."""
+        f, v1, v2, Lam = (sympy_value(f, "f"), sympy_value(v1, "v1", symbol=True),
+                         sympy_value(v2, "v2", symbol=True), sympy_value(Lam, "Lam"))
         return sp.Add(*[w * Lam ** (-2 * n - 2) * laplacian(f, v1, v2, n) for n, w in enumerate(self.weights())])
 
     def pairing(self, phi: sp.Expr, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2,
@@ -90,6 +95,8 @@ class ThinLayerOperator:
 
         Comparing it with :meth:`apply_scaled` checks the moments against the Laplacian form (2.22).
         """
+        phi, v1, v2, Lam = (sympy_value(phi, "phi"), sympy_value(v1, "v1", symbol=True),
+                         sympy_value(v2, "v2", symbol=True), sympy_value(Lam, "Lam"))
         terms = []
         for total in range(2 * self.order + 2):
             for a1 in range(total + 1):
@@ -104,6 +111,7 @@ class ThinLayerOperator:
 
     def apply(self, p: sp.Expr, v1: sp.Symbol = S.x1, v2: sp.Symbol = S.x2) -> sp.Expr:
         """``u_3`` of (I.2) for a pressure ``p(x1, x2)`` (dimensional)."""
+        p, v1, v2 = sympy_value(p, "p"), sympy_value(v1, "v1", symbol=True), sympy_value(v2, "v2", symbol=True)
         return self.vartheta ** -1 * sp.Add(*[(-1) ** n * cn * S.H ** (2 * n + 1) * laplacian(p, v1, v2, n)
                                              for n, cn in enumerate(self.c)])
 
@@ -132,6 +140,7 @@ class ThinLayerOperator:
         return checked_lambdify([prm] if prm is not None else [], list(self.c), backend)
 
 
+@boundary
 def thin_layer_operator(layer: LayerKernel, order: int = 1) -> ThinLayerOperator:
     """The operator series (I.2) through ``Delta^order``, from the moment expansion (2.22).
 
@@ -255,6 +264,7 @@ def model_coefficients(layer: LayerKernel, nu: sp.Basic) -> tuple[sp.Expr, sp.Ex
 # =============================================================================================
 # (I.3), (I.4), (I.10): the free-boundary problem
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class ObstacleProblem:
     """The thin-layer free-boundary problem for one punch, (I.3)-(I.4) at ``nu = 1/2``, (I.10) below::
@@ -301,12 +311,14 @@ class ObstacleProblem:
 
     def residual(self, p: sp.Expr) -> sp.Expr:
         """``-Delta p + k^2 p - f`` for a candidate pressure ``p(x1, x2)`` (zero inside the contact)."""
+        p = sympy_value(p, "p")
         return -laplacian(p, S.x1, S.x2) + self.k2 * p - self.source
 
     def boundary_values(self, p: sp.Expr, x1: sp.Expr, x2: sp.Expr) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """``(p, dp/dx1, dp/dx2)`` at a point -- all three vanish on the contour (I.4)."""
-        at = {S.x1: x1, S.x2: x2}
-        return p.subs(at), sp.diff(p, S.x1).subs(at), sp.diff(p, S.x2).subs(at)
+        p = sympy_value(p, "p")
+        at = {S.x1: sympy_value(x1, "x1"), S.x2: sympy_value(x2, "x2")}
+        return p.xreplace(at), sp.diff(p, S.x1).xreplace(at), sp.diff(p, S.x2).xreplace(at)
 
     @property
     def arguments(self) -> tuple[sp.Symbol, ...]:
@@ -334,6 +346,7 @@ class ObstacleProblem:
         return " \\\\\n".join(lines)
 
 
+@boundary
 def obstacle_problem(layer: LayerKernel, punch: Punch | None = None, nu: Any = None) -> ObstacleProblem:
     """The free-boundary problem (I.3)-(I.4) (``nu = 1/2``) or the two-term problem (I.10) (``1/4 < nu < 1/2``).
 

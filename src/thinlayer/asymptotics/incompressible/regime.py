@@ -11,6 +11,7 @@ import sympy as sp
 
 from ... import symbols as S
 from ..._checks import InputTypeError, parse_nu, positive
+from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...results import checked_lambdify
 
@@ -20,6 +21,7 @@ __all__ = ["Regime", "regime"]
 # =============================================================================================
 # (I.13): which model where
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class Regime:
     """Where the compressible expansion and the incompressible model hold (I.13).
@@ -83,6 +85,7 @@ def _regime_layer(layer: Any) -> LayerKernel:
     return out
 
 
+@boundary
 def regime(layer: LayerKernel, H_over_a: float, tol: float = 0.05) -> Regime:
     """Which thin-layer model to use for a layer at ``H/a`` (I.13).
 

@@ -21,6 +21,7 @@ import sympy as sp
 from ... import symbols as S
 from ..._checks import InputError, InputTypeError, positive
 from ..._series import quotient_field
+from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...punch import Punch
 from ...results import checked_lambdify, latex_equation
@@ -240,6 +241,7 @@ def _ratio_series_list() -> list:
     return [float(v) for v in _ratio_series()]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class SphereValues:
     """Numbers of a sphere model: contact radius (model edge and corrected by (I.12)) and force."""
@@ -264,6 +266,7 @@ class SphereValues:
 k_sym = sp.Symbol("k", positive=True)
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class TwoTermSphere:
     """The two-term model (I.10) for the sphere ``Phi = r^2/(2R)``, in parametric form in the radius c (I.11).
@@ -418,6 +421,7 @@ def _two_term_sphere(layer: LayerKernel) -> TwoTermSphere:
                          force.subs(F, Fv))
 
 
+@boundary
 def two_term_sphere(layer: LayerKernel | None = None) -> TwoTermSphere:
     """The sphere in the two-term model (I.10)/(I.11): ``delta0(c)``, ``P(c)``, ``p(r)`` in closed form.
 
