@@ -713,6 +713,8 @@ def any_thickness_fields(layer: Any, punch: Any, delta0: Any = None, force: Any 
                 f"sqrt(R delta0)/H = {chi:.3g} ({regime}{'; the half-space: Hertz' if chi < 1e-3 else ''}); "
                 "express the lengths (delta0, R, H) and the moduli in other units", "force", eP, tol, "other units")
     P, c, Pr, cr = math.exp(log_P), math.exp(log_c0 + log_cr), math.exp(log_Pr), math.exp(log_cr)
+    if force is not None:
+        P = positive(force, "force")  # the given force (exp(log P) rounds it in the last digits)
     why = (f"any-thickness law for the sphere at chi = sqrt(R delta0)/H = {chi:.4g} ({regime}; "
            f"estimates force {eP:.2g}, radius {ec:.2g})")
     detail = AnyThicknessValues(chi, regime, Pr, cr, eP, ec)

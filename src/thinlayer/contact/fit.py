@@ -39,7 +39,7 @@ import numpy as np
 
 from .._checks import InputError, InputTypeError, check_array_size, check_choice, positive
 from ..display import RichDisplay
-from ..errors import ValidityWarning, boundary, boundary_methods
+from ..errors import ComputationError, ValidityWarning, boundary, boundary_methods
 from .any_thickness import BASES, any_thickness_law
 
 __all__ = ["FIT_MODELS", "FitResult", "MODEL_TOL", "fit", "model_error"]
@@ -244,7 +244,7 @@ def _points(delta: Any, force: Any) -> tuple[np.ndarray, np.ndarray]:
     try:
         d = np.asarray(delta, dtype=float).ravel()
         f = np.asarray(force, dtype=float).ravel()
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise InputError("delta and force must be sequences of numbers") from None
     if d.size != f.size:
         raise InputError(f"delta and force must have the same length, got {d.size} and {f.size}")
@@ -314,6 +314,17 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     >>> round(r.E, 8), bool(r.E_se < 1e-8)
     (3.0, True)
     """
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # checked below
+        res = _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma)
+    if not all(math.isfinite(v) for v in (res.E, res.E_se, res.H, res.H_se, res.offset, res.residual_rms)):
+        raise ComputationError(f"fit(): the fitted numbers are not finite (E = {res.E!r}, E_se = {res.E_se!r}): the "
+                               "data's numbers leave the double range; express depths and forces in other units")
+    if res.valid is False:
+        warnings.warn(f"fit(): E = {res.E:.4g} is NOT VALID: {res.validity}", ValidityWarning, stacklevel=3)
+    return res
+
+
+def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) -> FitResult:
     d, f = _points(delta, force)
     if punch is None:
         raise InputTypeError("fit() needs punch= (the sphere radius R or Punch.paraboloid(R))")
@@ -410,7 +421,5 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     resid_force = (r * fscale / w)
     chi_max = float(math.sqrt(R * max(float(np.max(d - dc)), 0.0)) / HH)
     valid, err, why = _validity(model, R, nu, base, HH, chi_max)
-    if not valid:
-        warnings.warn(f"fit(): E = {E:.4g} is NOT VALID: {why}", ValidityWarning, stacklevel=2)
     return FitResult(E, E_se, HH, H_se, dc, off_se, float(np.sqrt(np.mean(resid_force**2))), resid_force, model,
                      base, nu, R, int(d.size), tuple(names), cov, cond, chi_max, valid, err, why)

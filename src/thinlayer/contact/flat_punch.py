@@ -148,7 +148,9 @@ def stiffness_table(layer: LayerKernel, a_over_H: Any, model: str = "auto", *,
     tol = _check_max_error(max_error)
     x, _ = _as_ratios(a_over_H, MAX_EXACT_POINTS if model in ("exact", "auto") else MAX_POINTS)
     x = np.atleast_1d(x)
-    kappa, est, which = _models(layer, x, model, tol)
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # refused below
+        kappa, est, which = _models(layer, x, model, tol)
+    _check_kappa(x, kappa)
     return kappa, est, [FLAT_PUNCH_MODELS[int(w)] for w in which.ravel()]
 
 
@@ -194,8 +196,19 @@ def flat_punch_stiffness(layer: LayerKernel, a_over_H: Any, model: str = "exact"
     model = check_choice(model, FLAT_PUNCH_MODELS, "model")
     tol = _check_max_error(max_error)
     x, scalar = _as_ratios(a_over_H, MAX_EXACT_POINTS if model == "exact" else MAX_POINTS)
-    kappa, _, _ = _models(layer, x, model, tol)
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # refused below
+        kappa, _, _ = _models(layer, x, model, tol)
+    _check_kappa(x, kappa)
     return float(kappa) if scalar else kappa
+
+
+def _check_kappa(x: np.ndarray, kappa: np.ndarray) -> None:
+    """Every kappa a positive double: at a/H = 1e300 the thin-layer law's (a/H)^3 is beyond the double range."""
+    bad = ~(np.isfinite(kappa) & (kappa > 0))
+    if np.any(bad):
+        i = int(np.argmax(bad))
+        raise InputError(f"kappa at a/H = {np.ravel(x)[i]:.3g} is {np.ravel(kappa)[i]!r}, beyond the double range: "
+                         "express the lengths in other units")
 
 
 @dataclass(frozen=True)
@@ -295,7 +308,9 @@ def flat_punch_contact(layer: LayerKernel, radius: float, H: float, *, w0: float
     check_choice(model, FLAT_PUNCH_MODELS, "model")
     tol = _check_max_error(max_error)
     x = np.asarray(a / Hv)
-    kappa, est, which = _models(layer, x, model, tol)
+    with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # refused below
+        kappa, est, which = _models(layer, x, model, tol)
+    _check_kappa(x, kappa)
     k = float(kappa)
     factor = 4.0 * mu_v * a / (1.0 - nu_v)  # P = factor w0 kappa (F.1)
     if w0 is not None:
@@ -364,6 +379,7 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
             kappa, est, which = np.asarray(st.kappa), np.asarray(st.error), np.asarray(0)
         else:
             kappa, est, which = _models(layer, x, "exact", tol)
+    _check_kappa(x, kappa)
     model = SOLVE_NAMES[FLAT_PUNCH_MODELS[int(which)]]
     k, e = float(kappa), max(float(est), 1e-16)
     # P = 4 mu a w0 kappa/(1 - nu) (F.1), in logarithms: mu a can underflow where P does not

@@ -83,7 +83,13 @@ _MAX_MODES = 600
 r = sp.Symbol("r", nonnegative=True)
 
 
+#: the largest H/c the solver takes: the layer correction is below double precision long before (it solves
+#: H/c = 1e100 to rounding; its Bessel recurrences overflow from H/c ~ 1e150)
+MAX_H_OVER_C = 1e100
+
+
 # --------------------------------------------------------------------------- result
+
 @boundary_methods
 @dataclass(frozen=True)
 class AxisymmetricContact(RichDisplay):
@@ -247,9 +253,11 @@ def _vectorised(Phi_r: Any) -> Callable[[np.ndarray], np.ndarray]:
 
     def phi(rr: np.ndarray) -> np.ndarray:
         rr = np.asarray(rr, dtype=float)
-        out = np.broadcast_to(np.asarray(f(rr), dtype=float), rr.shape)
+        with np.errstate(over="ignore", invalid="ignore"):  # refused below, in one line
+            out = np.broadcast_to(np.asarray(f(rr), dtype=float), rr.shape)
         if not np.all(np.isfinite(out)):
-            raise InputError("Phi_r returned non-finite values on [0, c]")
+            raise InputError(f"Phi_r returned non-finite values on [0, {float(np.max(rr)):.3g}] (beyond the double "
+                             "range): express the lengths in other units")
         return out
 
     return phi
@@ -394,8 +402,8 @@ def _intersection_radius(phi: Callable, delta0: float, scale_hint: float) -> flo
     if phi(np.array([0.0]))[0] >= delta0:
         raise InputError(f"Phi(0) = {phi(np.array([0.0]))[0]} >= delta0 = {delta0}: the punch does not "
                          "touch the layer; Phi must be normalised with Phi(0) = 0 and increase with r")
-    hi = scale_hint
-    for _ in range(200):
+    hi = min(scale_hint, 1.0)  # (from H = 1e300 the first Phi(hi) would overflow)
+    for _ in range(2200):
         if phi(np.array([hi]))[0] > delta0:
             break
         hi *= 2.0
@@ -489,6 +497,9 @@ def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float |
     H, mu, nu_val = _material(layer, H, mu, nu)
     N_given = _check_modes(n)
     c_int = _intersection_radius(phi, delta0, H)
+    if H is not None and H > MAX_H_OVER_C * c_int:  # its Bessel recurrences overflow from H/c ~ 1e150
+        raise InputError(f"H/c = {H / c_int:.3g} exceeds {MAX_H_OVER_C:.0e}: the layer's correction to the half-space "
+                         "is far below double precision there; solve the half-space (thinlayer.HalfSpace(), with nu=)")
     N = N_given or _default_modes(c_int / H)
     _check_work(layer, H, 0.3 * c_int, c_int + 6.0 * min(H, c_int), N,
                 f"(estimated from the rigid overlap Phi(c) = delta0 = {delta0:.3g})")
