@@ -150,9 +150,10 @@ def _exact_binary(x: float | mpmath.mpf) -> sp.Rational:
 #: a Poisson ratio written as text: a decimal number (exponent allowed) or a fraction of two integers
 _NU_TEXT = re.compile(r"(?P<sign>[+-]?)(?P<int>\d*)(?:\.(?P<frac>\d*))?(?:[eE](?P<exp>[+-]?\d+))?"
                       r"(?:\s*/\s*(?P<den>[+-]?\d+))?")
-#: the most digits of an exact Poisson ratio written as text (numerator or denominator, exponent included): the
-#: order limits of the kernel coefficients are measured with short fractions such as 3/10
-MAX_NU_DIGITS = 30
+#: the most digits of an exact Poisson ratio written as text (numerator or denominator, exponent included; the
+#: derivation files allow 6 too): the exact coefficients grow with the digits -- order 200 took 2.7 s with 3/10,
+#: 7 s with 6 digits, 12 s with 10 and 57 s with 30 (2 cores, load 4)
+MAX_NU_DIGITS = 6
 
 
 def _exact_nu(text: str, example: str) -> sp.Rational:
@@ -162,7 +163,10 @@ def _exact_nu(text: str, example: str) -> sp.Rational:
     from the text first.
     """
     t = text.strip()
-    m = _NU_TEXT.fullmatch(t) if len(t) <= 100 else None
+    if len(t) > 100:
+        raise WorkLimitError(f"nu={t[:30] + ' ...'!r} has {len(t)} characters, more than 100: give a float (e.g. 0.3) "
+                             "or a short fraction (e.g. '3/10')")
+    m = _NU_TEXT.fullmatch(t)
     if m is None or not (m["int"] or m["frac"]):
         shown = t if len(t) <= 40 else t[:30] + " ..."
         raise InputError(f"nu={shown!r} is not a number; give e.g. {example}")
@@ -170,7 +174,8 @@ def _exact_nu(text: str, example: str) -> sp.Rational:
     exp = int(m["exp"]) if m["exp"] and len(m["exp"].lstrip("+-")) <= 6 else (0 if not m["exp"] else 10**6)
     size = max(digits + max(exp, 0), len(m["frac"] or "") - min(exp, 0), len((m["den"] or "").lstrip("+-0")))
     if size > MAX_NU_DIGITS:
-        raise WorkLimitError(f"nu={t if len(t) <= 40 else t[:30] + ' ...'!r} has about {size} digits as an exact "
+        shown = "more than a million" if size >= 10**6 else f"about {size}"
+        raise WorkLimitError(f"nu={t if len(t) <= 40 else t[:30] + ' ...'!r} has {shown} digits as an exact "
                              f"fraction, above the limit {MAX_NU_DIGITS}: exact coefficients grow with its digits; "
                              "give a float (e.g. 0.3) or a short fraction (e.g. '3/10')")
     try:

@@ -21,7 +21,7 @@ import sympy as sp
 from . import symbols as S
 from .display import RichDisplay, fmt
 from .errors import InputError, InputTypeError, WorkLimitError, boundary_methods
-from .parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, parse_expression, sympy_value
+from .parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, expression_cost, parse_expression, sympy_value
 from .symbols import laplacian
 
 
@@ -32,6 +32,13 @@ class PunchError(InputError):
 class PunchTooLargeError(PunchError, WorkLimitError):
     """A punch whose degree, terms or parameters exceed a documented limit (refused before any work)."""
 
+
+#: Most terms of a punch once expanded, and its largest total degree in all symbols (coordinates and parameters).
+#: Measured on 2 cores at load 12 (about 3x an idle machine): Punch.general(20), 230 terms of degree 21, inner
+#: expansion 4 s; x_1**2 (a+b)**58 + x_2**2 (degree 60) force law 9 s; x_1**2 (a+b+c+d+e)**8 (495 terms)
+#: force law 40 s and the punch itself 8 s; (x_1**2 + x_2**2)(a+...+j)**3 (440 terms) over 300 s.
+MAX_TERMS = 300
+MAX_TOTAL_DEGREE = 60
 
 #: Largest total degree of a punch.  Measured: the inner expansion of a degree-40 punch (21 terms) takes
 #: 3.0 s with a symbolic nu (10.8 s at degree 60), 0.55 s with nu = 3/10.
@@ -109,9 +116,18 @@ class Punch(RichDisplay):
         expr = expr.xreplace({x1: S.x1, x2: S.x2})
         if _degree_bound(expr) <= 4 * MAX_DEGREE:  # (a degree above it is refused below, naming x_1, x_2)
             try:
-                check_cost(expr, "punch")  # a sympy expression given directly: the same limits as a string
+                cost = expression_cost(expr)
+                check_cost(expr, "punch", cost=cost)  # a sympy expression given directly: the limits of a string
             except WorkLimitError as exc:
                 raise PunchTooLargeError(str(exc)) from None
+            for value, limit, what in ((cost.terms, MAX_TERMS, "terms once expanded"),
+                                       (cost.degree, MAX_TOTAL_DEGREE, "as total degree in x_1, x_2 and its "
+                                                                       "parameters")):
+                if value > limit:
+                    raise PunchTooLargeError(
+                        f"the punch has {value} {what}, above the limit {limit} of a punch: deriving its force law "
+                        f"then takes minutes (Punch.general(20), 230 terms of degree 21, is the largest measured "
+                        "in seconds); give numbers for some parameters (Punch.subs) or a smaller polynomial")
         if expr.has(sp.zoo, sp.oo, sp.nan):
             raise PunchError(f"the punch expression {expr} is not finite")
         if not expr.is_polynomial(S.x1, S.x2):
