@@ -298,9 +298,10 @@ class EdgeConstants(RichDisplay):
 def _edge_constants(key: Any, dps: int) -> EdgeConstants:
     from .wiener_hopf import edge_cubic, edge_shift
 
-    rs = [edge_cubic(key, normaliser=n, dps=dps) for n in ("alexandrov", "sqrt", "tanh")]
-    lay = _layer_of(key)
-    return EdgeConstants(key, float(lay.A), float(lay.m(1)), float(edge_shift(key, dps=dps)), float(rs[0]),
+    nu = key if key == "frictionless" else sp.Rational(*key)
+    rs = [edge_cubic(nu, normaliser=n, dps=dps) for n in ("alexandrov", "sqrt", "tanh")]
+    lay = _layer_of(nu)
+    return EdgeConstants(str(nu), float(lay.A), float(lay.m(1)), float(edge_shift(nu, dps=dps)), float(rs[0]),
                          float(max(rs) - min(rs)))
 
 
@@ -327,7 +328,8 @@ def edge_constants(layer: Any, dps: int = 20) -> EdgeConstants:
         key = layer
     else:
         key = parse_nu(layer, floats="exact", symbols=False, example="0.3, '3/10' or BondedLayer(0.3)")
-    return _edge_constants(str(key), int(dps))
+    # cached by (numerator, denominator): a float's exact binary value has 17 digits, more than nu text may have
+    return _edge_constants(key if key == "frictionless" else (int(key.p), int(key.q)), int(dps))
 
 
 # ---------------------------------------------------------------------------------------------

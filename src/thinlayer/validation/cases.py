@@ -429,7 +429,7 @@ def bonded_layer(nu: float):
     """The bonded layer of the study at ``nu`` (an exact rational close to the float)."""
     from ..layers.kernels import BondedLayer
 
-    return BondedLayer(str(Fraction(float(nu)).limit_denominator(10**6)))
+    return BondedLayer(Fraction(float(nu)).limit_denominator(10**6))  # exact, no text round trip
 
 
 def _second_order(layer: Any, punch: Any, H: float) -> Any:
