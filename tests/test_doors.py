@@ -187,10 +187,12 @@ INVENTORY: dict[str, list] = {
     "thinlayer.Punch.laplacian": [lambda s: F().P.laplacian(s)],
     "thinlayer.Punch.scaled": [lambda s: tl.Punch.paraboloid().scaled(s), lambda s: F().P.scaled(v1=s),
                                lambda s: F().P.scaled(v2=s)],
-    "thinlayer.Punch.subs": [lambda s: tl.Punch.paraboloid().subs({"R": s}), lambda s: tl.Punch.paraboloid().subs({s: 1}),
+    "thinlayer.Punch.subs": [lambda s: tl.Punch.paraboloid().subs({"R": s}),
+        lambda s: tl.Punch.paraboloid().subs({s: 1}),
                              lambda s: tl.Punch.paraboloid().subs(s)],
     # the stages
-    "thinlayer.kernel_coefficients": [lambda s: tl.kernel_coefficients(s, 2), lambda s: tl.kernel_coefficients(F().L, s),
+    "thinlayer.kernel_coefficients": [lambda s: tl.kernel_coefficients(s, 2),
+        lambda s: tl.kernel_coefficients(F().L, s),
                                       lambda s: tl.kernel_coefficients(F().L, 2, backend=s)],
     "thinlayer.kernel_moment": [lambda s: tl.kernel_moment(s, 1, 1), lambda s: tl.kernel_moment(F().L, s, 1),
                                 lambda s: tl.kernel_moment(F().L, 1, s)],
@@ -198,13 +200,15 @@ INVENTORY: dict[str, list] = {
     "thinlayer.inner_pressure": [lambda s: tl.inner_pressure(s, F().P), lambda s: tl.inner_pressure(F().L, s),
                                  lambda s: tl.inner_pressure(F().L, F().P, order=s),
                                  lambda s: tl.inner_pressure(F().L, F().P, method=s)],
-    "thinlayer.contact_contour": [lambda s: tl.contact_contour(s, 0.1), lambda s: tl.contact_contour("x_1**2 + x_2**2", s),
+    "thinlayer.contact_contour": [lambda s: tl.contact_contour(s, 0.1),
+        lambda s: tl.contact_contour("x_1**2 + x_2**2", s),
                                   lambda s: tl.contact_contour("x_1**2 + x_2**2", 0.1, n=s),
                                   lambda s: tl.contact_contour("x_1**2 + x_2**2", 0.1, tol=s)],
     "thinlayer.ellipse_contour": [lambda s: tl.ellipse_contour(s), lambda s: tl.ellipse_contour(1, s),
                                   lambda s: tl.ellipse_contour(1, 2, s)],
     "thinlayer.alexandrov_solution": [lambda s: tl.alexandrov_solution(s)],
-    "thinlayer.boundary_layer_exact": [lambda s: tl.boundary_layer_exact(s), lambda s: tl.boundary_layer_exact(0.3, dps=s),
+    "thinlayer.boundary_layer_exact": [lambda s: tl.boundary_layer_exact(s),
+        lambda s: tl.boundary_layer_exact(0.3, dps=s),
                                        lambda s: tl.boundary_layer_exact(0.3, n=s)],
     "thinlayer.edge_shift_exact": [lambda s: tl.edge_shift_exact(s), lambda s: tl.edge_shift_exact(0.3, dps=s),
                                    lambda s: tl.edge_shift_exact(0.3, normaliser=s)],
@@ -222,7 +226,8 @@ INVENTORY: dict[str, list] = {
     "thinlayer.obstacle_problem": [lambda s: tl.obstacle_problem(s), lambda s: tl.obstacle_problem(F().LI, s),
                                    lambda s: tl.obstacle_problem(tl.BondedLayer(), F().P, nu=s)],
     "thinlayer.two_term_sphere": [lambda s: tl.two_term_sphere(s)],
-    "thinlayer.regime": [lambda s: tl.regime(s, 0.1), lambda s: tl.regime(F().L, s), lambda s: tl.regime(F().L, 0.1, s)],
+    "thinlayer.regime": [lambda s: tl.regime(s, 0.1), lambda s: tl.regime(F().L, s),
+        lambda s: tl.regime(F().L, 0.1, s)],
     # the user's question
     "thinlayer.solve": [
         lambda s: tl.solve(s, F().P, delta0=0.1, H=0.05, mu=1.0),
@@ -254,8 +259,10 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.solve_axisymmetric(F().L, F().P, 0.1, 0.05, n=s),
         lambda s: tl.solve_axisymmetric(tl.FrictionlessLayer(), F().P, 0.1, 0.05, nu=s)],
     "thinlayer.solve_2d": [
-        lambda s: tl.solve_2d(s, F().P, delta0=0.1, H=1.0, n=32), lambda s: tl.solve_2d(F().L, s, delta0=0.1, H=1.0, n=32),
-        lambda s: tl.solve_2d(F().L, F().P, delta0=s, H=1.0, n=32), lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=s, n=32),
+        lambda s: tl.solve_2d(s, F().P, delta0=0.1, H=1.0, n=32),
+        lambda s: tl.solve_2d(F().L, s, delta0=0.1, H=1.0, n=32),
+        lambda s: tl.solve_2d(F().L, F().P, delta0=s, H=1.0, n=32),
+        lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=s, n=32),
         lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=0.1, mu=s, n=32),
         lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=0.1, n=s),
         lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=1.0, n=32, extent=s),
@@ -264,8 +271,10 @@ INVENTORY: dict[str, list] = {
     "thinlayer.force_any_thickness": [
         lambda s: tl.force_any_thickness(s, 10.0, 2.0, mu=1.0), lambda s: tl.force_any_thickness(0.1, s, 2.0, mu=1.0),
         lambda s: tl.force_any_thickness(0.1, 10.0, s, mu=1.0), lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, mu=s),
-        lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, E=s), lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, 1.0, nu=s),
-        lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, 1.0, base=s), lambda s: tl.force_any_thickness([0.1, s], 10.0, 2.0, 1.0)],
+        lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, E=s),
+        lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, 1.0, nu=s),
+        lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, 1.0, base=s),
+        lambda s: tl.force_any_thickness([0.1, s], 10.0, 2.0, 1.0)],
     "thinlayer.any_thickness_law": [lambda s: tl.any_thickness_law(s), lambda s: tl.any_thickness_law(0.5, s)],
     "thinlayer.fit": [
         lambda s: tl.fit(s, [1, 2, 3], punch=1.0, H=1.0), lambda s: tl.fit([0.1, 0.2, 0.3], s, punch=1.0, H=1.0),
@@ -338,8 +347,10 @@ INVENTORY: dict[str, list] = {
                                                    lambda s: F().grid.pressure_at(0.0, s)],
     # the results' methods that take values
     "thinlayer.asymptotics.force_law.ForceLaw.evaluate": [
-        lambda s: F().law.evaluate(s, 0.05), lambda s: F().law.evaluate(0.1, s), lambda s: F().law.evaluate(0.1, 0.05, s),
-        lambda s: F().law.evaluate(0.1, 0.05, edge_shift=s), lambda s: F().law_sym.evaluate(0.1, 0.05, parameters={"R": s}),
+        lambda s: F().law.evaluate(s, 0.05), lambda s: F().law.evaluate(0.1, s),
+        lambda s: F().law.evaluate(0.1, 0.05, s),
+        lambda s: F().law.evaluate(0.1, 0.05, edge_shift=s),
+        lambda s: F().law_sym.evaluate(0.1, 0.05, parameters={"R": s}),
         lambda s: F().law_sym.evaluate(0.1, 0.05, parameters={s: 10}), lambda s: F().law.evaluate(0.1, 0.05, nu=s),
         lambda s: F().law.evaluate(0.1, 0.05, contour=s)],
     "thinlayer.asymptotics.force_law.ForceLaw.indentation": [
@@ -352,7 +363,8 @@ INVENTORY: dict[str, list] = {
     "thinlayer.asymptotics.force_law.ForceLaw.lambdify": [lambda s: F().law.lambdify(args=[s]),
                                                           lambda s: F().law.lambdify(backend=s)],
     "thinlayer.asymptotics.second_order.SecondOrderLaw.evaluate": [
-        lambda s: F().law2.evaluate(s, 0.05), lambda s: F().law2.evaluate(0.1, s), lambda s: F().law2.evaluate(0.1, 0.05, s),
+        lambda s: F().law2.evaluate(s, 0.05), lambda s: F().law2.evaluate(0.1, s),
+        lambda s: F().law2.evaluate(0.1, 0.05, s),
         lambda s: F().law2.evaluate(0.1, 0.05, parameters={"R": s}), lambda s: F().law2.evaluate(0.1, 0.05, nu=s)],
     "thinlayer.asymptotics.second_order.SecondOrderLaw.lambdify": [lambda s: F().law2.lambdify(args=[s]),
                                                                    lambda s: F().law2.lambdify(backend=s)],
@@ -376,7 +388,8 @@ INVENTORY: dict[str, list] = {
             tl.FrictionlessLayer(), F().P, delta0=0.1, H=0.05, nu=s)],
     "thinlayer.asymptotics.solution.ContactSolution.pressure": [lambda s: F().sol.pressure(s, 0.0)],
     "thinlayer.asymptotics.solution.ContactSolution.contains": [lambda s: F().sol.contains(s, 0.0)],
-    "thinlayer.asymptotics.composite.CompositePressure.__call__": [lambda s: F().comp(s, 0.0), lambda s: F().comp(0.0, s)],
+    "thinlayer.asymptotics.composite.CompositePressure.__call__": [lambda s: F().comp(s, 0.0),
+        lambda s: F().comp(0.0, s)],
     "thinlayer.asymptotics.composite.CompositePressure.local": [lambda s: F().comp.local(s, 0.0),
                                                                 lambda s: F().comp.local(0.0, s)],
     "thinlayer.asymptotics.contour.ContactContour.b1": [lambda s: F().contour.b1(s)],
@@ -399,7 +412,8 @@ INVENTORY: dict[str, list] = {
     "thinlayer.asymptotics.contour.ContactContour.local_to_cartesian": [
         lambda s: F().contour.local_to_cartesian(s, 0.0), lambda s: F().contour.local_to_cartesian(0.0, s)],
     "thinlayer.asymptotics.contour.ContactContour.normal": [lambda s: F().contour.normal(s)],
-    "thinlayer.asymptotics.contour.ContactContour.phi": [lambda s: F().contour.phi(s, 0.0), lambda s: F().contour.phi(0.0, s)],
+    "thinlayer.asymptotics.contour.ContactContour.phi": [lambda s: F().contour.phi(s, 0.0),
+        lambda s: F().contour.phi(0.0, s)],
     "thinlayer.asymptotics.contour.ContactContour.rho": [lambda s: F().contour.rho(s)],
     "thinlayer.asymptotics.contour.ContactContour.tangent": [lambda s: F().contour.tangent(s)],
     "thinlayer.asymptotics.contour.EllipseContour.curvature_radius": [lambda s: F().ellipse.curvature_radius(s, 0),
@@ -409,13 +423,15 @@ INVENTORY: dict[str, list] = {
                                                            lambda s: F().inner.lambdify(scaled=s)],
     "thinlayer.asymptotics.moment_expansion.MomentExpansion.apply": [
         lambda s: F().mexp.apply(s), lambda s: F().mexp.apply(sp.Symbol("xi_1") ** 2, v1=s),
-        lambda s: F().mexp.apply(sp.Symbol("xi_1") ** 2, v2=s), lambda s: F().mexp.apply(sp.Symbol("xi_1") ** 2, Lam=s)],
+        lambda s: F().mexp.apply(sp.Symbol("xi_1") ** 2, v2=s),
+        lambda s: F().mexp.apply(sp.Symbol("xi_1") ** 2, Lam=s)],
     "thinlayer.asymptotics.moment_expansion.MomentExpansion.pairing": [
         lambda s: F().mexp.pairing(s), lambda s: F().mexp.pairing(sp.Symbol("xi_1") ** 2, v1=s),
         lambda s: F().mexp.pairing(sp.Symbol("xi_1") ** 2, Lam=s)],
     "thinlayer.asymptotics.moment_expansion.MomentExpansion.lambdify": [lambda s: F().mexp.lambdify(backend=s)],
     "thinlayer.asymptotics.boundary_layer.AlexandrovSolution.dimensional": [lambda s: F().alex.dimensional(s)],
-    "thinlayer.asymptotics.boundary_layer.AlexandrovSolution.laplace_transform": [lambda s: F().alex.laplace_transform(s)],
+    "thinlayer.asymptotics.boundary_layer.AlexandrovSolution.laplace_transform": [
+        lambda s: F().alex.laplace_transform(s)],
     "thinlayer.asymptotics.boundary_layer.AlexandrovSolution.q": [lambda s: F().alex.q(s)],
     "thinlayer.asymptotics.boundary_layer.AlexandrovSolution.q_general": [lambda s: F().alex.q_general(s),
                                                                           lambda s: F().alex.q_general(h=s)],
@@ -455,7 +471,8 @@ INVENTORY: dict[str, list] = {
     "thinlayer.contact.any_thickness.AnyThicknessLaw.log_force_ratio": [lambda s: F().atl.log_force_ratio(s)],
     "thinlayer.contact.any_thickness.AnyThicknessLaw.ratios": [lambda s: F().atl.ratios(s)],
     "thinlayer.contact.any_thickness.AnyThicknessLaw.regime": [lambda s: F().atl.regime(s)],
-    "thinlayer.contact.fit.FitResult.predict": [lambda s: F().fitres.predict(s), lambda s: F().fitres.predict([0.1, s])],
+    "thinlayer.contact.fit.FitResult.predict": [lambda s: F().fitres.predict(s),
+        lambda s: F().fitres.predict([0.1, s])],
 }
 
 #: public callables that take no user value, each with the reason
@@ -464,7 +481,7 @@ NO_USER_VALUES: dict[str, str] = {
     **{f"thinlayer.{k}.{m}": "prints the object" for k in ("Punch", "FlatPunch", "Indentation") for m in ("latex",
                                                                                                           "text_lines")},
     "thinlayer.Punch.codegen_expressions": "returns the punch's own expressions",
-    "thinlayer.LayerKernel": "the abstract base of the layers: it has no constructor (Python refuses to instantiate it)",
+    "thinlayer.LayerKernel": "the abstract base of the layers: no constructor (Python refuses to instantiate it)",
     "thinlayer.Indentation.as_dict": "returns the numbers it holds",
     "thinlayer.errors.boundary": "a decorator for thinlayer's own functions (its argument is code, not a value)",
     "thinlayer.errors.boundary_methods": "a class decorator for thinlayer's own classes",
@@ -482,7 +499,8 @@ RESULT_CLASSES = (
     "thinlayer.asymptotics.second_order.SecondOrderLaw", "thinlayer.asymptotics.second_order.SecondOrderValues",
     "thinlayer.asymptotics.solution.ContactSolution", "thinlayer.asymptotics.solution.ForceArrays",
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution", "thinlayer.contact.any_thickness.AnyThicknessLaw",
-    "thinlayer.contact.fit.FitResult", "thinlayer.contact.solve.DirectComparison", "thinlayer.numerics.AxisymmetricContact",
+    "thinlayer.contact.fit.FitResult", "thinlayer.contact.solve.DirectComparison",
+    "thinlayer.numerics.AxisymmetricContact",
     "thinlayer.numerics.Contact2D", "thinlayer.numerics.GridContact",
 )
 for _cls in RESULT_CLASSES:

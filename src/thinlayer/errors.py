@@ -134,10 +134,10 @@ def translate(exc: BaseException, where: str) -> ThinlayerError:
     if isinstance(exc, NotImplementedError):
         return NotDerivedError(_one_line(exc) if own else f"{where}: not derived for these inputs "
                                f"({type(exc).__name__}: {_one_line(exc, 160)})")
-    if own and isinstance(exc, TypeError):
-        return InputTypeError(_one_line(exc))
+    if own and isinstance(exc, TypeError):  # thinlayer's own words, kept whole
+        return InputTypeError(_one_line(exc, 10**6))
     if own and isinstance(exc, ValueError):
-        return InputError(_one_line(exc))
+        return InputError(_one_line(exc, 10**6))
     detail = f"{type(exc).__name__}: {_one_line(exc, 160) or '-'}"
     text = str(exc)
     if isinstance(exc, RecursionError):

@@ -695,9 +695,9 @@ def region_curve(P: Poly2, delta0: float, expr):
     return region(P, delta0, expr)[:3]
 
 
-def too_elongated(expr, delta0: float, ratio: float) -> ValueError:
+def too_elongated(expr, delta0: float, ratio: float) -> InputError:
     """The one-line error for a contour whose aspect ratio leaves the double range."""
-    return ValueError(
+    return InputError(
         f"the contact contour of Phi = {expr} at delta0 = {short(delta0)} is too elongated for double precision: "
         f"its aspect ratio (longest/shortest principal axis) is {ratio:.3g}, above the supported limit "
         f"{ASPECT_MAX:g} (the tip curvature, about ratio^2/length, and the powers of the frame lengths "

@@ -545,6 +545,8 @@ def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 
     >>> out.valid.tolist(), bool(np.isnan(out.force[0]))        # 1e-4: contact too small for H = 0.02
     ([False, True, True], True)
     """
+    for name, v in (("delta0", delta0), ("H", H)):  # before any other work
+        check_array_size(v, name, MAX_ARRAY_VALUES, _ARRAY_REASON)
     layer, nu_value = _check_layer(layer, nu)
     tol_v = _check_tol(tol)
     mm = _positive(mu, "mu")
@@ -553,8 +555,6 @@ def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 
     if law.kind == "contour":
         raise InputError("force_arrays needs a punch with a closed-form law (quadratic or (x1^2 + x2^2)^k); "
                          "this one needs its contour at every depth: use compressible_solution per depth")
-    for name, v in (("delta0", delta0), ("H", H)):
-        check_array_size(v, name, MAX_ARRAY_VALUES, _ARRAY_REASON)
     try:
         d0 = np.asarray(delta0, dtype=float)
         HH = np.asarray(H, dtype=float)

@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import InputError, InputTypeError, check_choice, positive
+from .._checks import InputError, InputTypeError, check_array_size, check_choice, positive
 from ..errors import boundary, boundary_methods
 
 __all__ = ["AnyThicknessLaw", "AnyThicknessValues", "CHI_HI", "CHI_LO", "NotTabulatedError", "TABLE_PATH",
@@ -57,6 +57,8 @@ SERIES_ORDER = 16
 CHI_MIN, CHI_MAX = 1e-3, 1e8
 #: points of the uniform fine grid in log chi evaluated by linear interpolation
 FINE = 8192
+#: most depths :func:`force_any_thickness` takes in one call (checked before any allocation)
+MAX_VALUES = 10_000_000
 BASES = ("bonded", "frictionless")
 
 
@@ -145,12 +147,9 @@ def anchor(chi: np.ndarray, nu: float, base: str, two_term: bool | None = None) 
 
 
 def log_anchor(chi: np.ndarray, nu: float, base: str) -> tuple[np.ndarray, np.ndarray]:
-    r"""``(log w, g)`` of :func:`anchor`, in logarithms: finite for every finite ``chi`` (``c^6`` overflows at 1e51).
-
-    The two-term force ``P/P_Hertz = (3 pi/(8 c_1)) t^3 chi^3 X(k c)`` with ``c^2 = t chi^2`` is written with
-    ``x^2 X(x) = 1/4 - psi(x)`` (the definition of ``X``; the series below ``x = 2``) as
-    ``(3 pi/(8 c_0)) t^2 chi x^2 X(x)``, ``x = k c``, ``c_1 k^2 = c_0``; at ``c_0 = 0`` (nu = 1/2) the first form,
-    in logarithms.
+    r"""``(log w, g)`` of :func:`anchor` in logarithms, finite for every finite ``chi`` (``c^6`` overflows at 1e51):
+    ``P/P_Hertz = (3 pi/(8 c_1)) t^3 chi^3 X(k c)``, ``c^2 = t chi^2``, is ``(3 pi/(8 c_0)) t^2 chi x^2 X(x)`` with
+    ``x^2 X(x) = 1/4 - psi(x)`` (the series below x = 2), ``x = k c``, ``c_1 k^2 = c_0`` (at c_0 = 0 the first form).
     """
     chi = np.asarray(chi, dtype=float)
     c0, c1 = _taylor(nu, base)
@@ -528,11 +527,15 @@ def force_any_thickness(delta0: Any, R: float, H: float, mu: float | None = None
     >>> round(float(P[0]) / (16 / 3 * 1e-12), 4), round(float(P[1]) / (2 * math.pi * 1e18), 4)
     (1.0001, 1.0)
     """
+    check_array_size(delta0, "delta0", MAX_VALUES, "1e6 depths take 30 ms but about 80 bytes each; split the array")
     nu, base = _check_nu_base(nu, base)
     RR, HH = positive(R, "R"), positive(H, "H")
     mm = _shear_modulus(mu, E, nu)
     law = any_thickness_law(nu, base)
-    d0 = np.asarray(delta0, dtype=float)
+    try:
+        d0 = np.asarray(delta0, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise InputTypeError("delta0 must be a number or an array of numbers") from None
     d = d0.ravel()
     if not np.all(np.isfinite(d)):
         raise InputError("delta0 must be finite (no nan or inf)")
@@ -706,15 +709,13 @@ def any_thickness_fields(layer: Any, punch: Any, delta0: Any = None, force: Any 
     for what, lv in (("force", log_P), ("contact area", log_A)):
         if not math.log(sys.float_info.min) <= lv <= math.log(sys.float_info.max):
             from ..asymptotics.solution import ValidityError
-
             side = "below" if lv < 0 else "beyond"
             raise ValidityError(
                 f"any-thickness: the {what} is 1e{lv / math.log(10):.1f}, {side} the double range, at chi = "
                 f"sqrt(R delta0)/H = {chi:.3g} ({regime}{'; the half-space: Hertz' if chi < 1e-3 else ''}); "
                 "express the lengths (delta0, R, H) and the moduli in other units", "force", eP, tol, "other units")
     P, c, Pr, cr = math.exp(log_P), math.exp(log_c0 + log_cr), math.exp(log_Pr), math.exp(log_cr)
-    if force is not None:
-        P = positive(force, "force")  # the given force (exp(log P) rounds it in the last digits)
+    P = P if force is None else positive(force, "force")  # the given force: exp(log P) rounds its last digits
     why = (f"any-thickness law for the sphere at chi = sqrt(R delta0)/H = {chi:.4g} ({regime}; "
            f"estimates force {eP:.2g}, radius {ec:.2g})")
     detail = AnyThicknessValues(chi, regime, Pr, cr, eP, ec)

@@ -350,7 +350,12 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
     if sigma is None:
         w = np.ones_like(f)
     else:
-        s = np.broadcast_to(np.asarray(sigma, dtype=float), f.shape)
+        check_array_size(sigma, "sigma", MAX_POINTS, "one standard deviation per point")
+        try:
+            s = np.broadcast_to(np.asarray(sigma, dtype=float), f.shape)
+        except (TypeError, ValueError, OverflowError):
+            raise InputError(f"sigma must be one positive number or one per point ({f.size}), got "
+                             f"{np.size(sigma)} values") from None
         if not (np.all(np.isfinite(s)) and np.all(s > 0)):
             raise InputError("sigma must be positive and finite")
         w = 1.0 / s

@@ -192,10 +192,10 @@ def flat_punch_stiffness(layer: LayerKernel, a_over_H: Any, model: str = "exact"
     >>> round(float(flat_punch_stiffness(layer, 30.0, "thin")), 4)
     58.1975
     """
-    layer = check_numeric_layer(layer)
     model = check_choice(model, FLAT_PUNCH_MODELS, "model")
+    x, scalar = _as_ratios(a_over_H, MAX_EXACT_POINTS if model == "exact" else MAX_POINTS)  # sizes first
+    layer = check_numeric_layer(layer)
     tol = _check_max_error(max_error)
-    x, scalar = _as_ratios(a_over_H, MAX_EXACT_POINTS if model == "exact" else MAX_POINTS)
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # refused below
         kappa, _, _ = _models(layer, x, model, tol)
     _check_kappa(x, kappa)
@@ -366,6 +366,12 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
     x = np.asarray(math.exp(math.log(radius) - math.log(H)))  # a/H of 1e-300/0.05 without underflow
     if not 0 < float(x) < math.inf:
         raise InputError(f"a/H = {radius:.3g}/{H:.3g} is beyond the double range: express the lengths in other units")
+    lo, hi = math.log(sys.float_info.min), math.log(sys.float_info.max)
+    log_area = math.log(math.pi) + 2 * math.log(radius)
+    if not lo <= log_area <= hi:  # before any model: the disc's area alone leaves the double range
+        raise InputError(f"the flat punch's contact area pi a^2 is 1e{log_area / math.log(10):.1f}, "
+                         f"{'below' if log_area < 0 else 'beyond'} the double range (a = {radius:.3g}): express the "
+                         "lengths in other units")
     with np.errstate(over="ignore", under="ignore", divide="ignore"):  # an estimate of inf just declines a model
         if choice == "asymptotic":
             try:
@@ -386,9 +392,7 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
     log_factor = math.log(4.0) + math.log(mu) + math.log(radius) - math.log1p(-nv) + math.log(k)
     log_w = math.log(w0) if w0 is not None else math.log(force) - log_factor
     log_P = log_factor + log_w
-    log_area = math.log(math.pi) + 2 * math.log(radius)
-    lo, hi = math.log(sys.float_info.min), math.log(sys.float_info.max)
-    for what, lv in (("force", log_P), ("depth", log_w), ("contact area pi a^2", log_area)):
+    for what, lv in (("force", log_P), ("depth", log_w)):
         if not lo <= lv <= hi:
             raise InputError(f"the flat punch's {what} is 1e{lv / math.log(10):.1f}, {'below' if lv < 0 else 'beyond'}"
                              f" the double range (a = {radius:.3g}, a/H = {float(x):.3g}): express the lengths, mu "
