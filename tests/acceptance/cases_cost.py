@@ -65,6 +65,8 @@ def run(t, tmp: Path) -> None:
                    x1**2 * (a + b + c + d + e) ** 8 + x2**2, x1**2 * sp.Integer(9) ** 4000 + x2**2]
     for expr in sympy_built:
         attempt(t, cat, lambda expr=expr: _refused_fast(lambda: tl.Punch(expr)), str(expr)[:50])
+    for phi in ((x1 + x2 + 1) ** 1000 + x1**2, x1**100 + x2**2, "(x_1 + x_2 + 1)**1000 + x_1**2"):
+        attempt(t, cat, lambda phi=phi: _refused_fast(lambda: tl.contact_contour(phi, 0.1)), f"contour {phi}"[:50])
     attempt(t, cat, lambda: _refused_fast(lambda: tl.force_law(L, tl.Punch(" + ".join(f"a{k}*x_1**2" for k in range(
         13)) + " + x_2**2"))), "quadratic punch with 13 parameters")
     attempt(t, cat, lambda: _refused_fast(lambda: tl.force_law(L, tl.Punch("x_1**2*(a+b)**58 + x_2**2"))),

@@ -13,8 +13,9 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import ComputationError, InputError, InputTypeError
-from ..parse import as_expr, parse_expression
+from .._checks import ComputationError, InputError, InputTypeError, WorkLimitError
+from ..parse import as_expr, check_cost, expression_cost, parse_expression
+from ..punch import MAX_DEGREE
 
 
 def as_polynomial(Phi) -> tuple[sp.Expr, list[tuple[int, int, float]]]:
@@ -32,6 +33,11 @@ def as_polynomial(Phi) -> tuple[sp.Expr, list[tuple[int, int, float]]]:
     ren = {q: {S.x1.name: S.x1, S.x2.name: S.x2}[q.name] for q in expr.free_symbols
            if q.name in (S.x1.name, S.x2.name)}
     expr = expr.xreplace(ren)
+    cost = expression_cost(expr)  # a sympy expression given directly: bounded like a string, before any work
+    check_cost(expr, "Phi", cost=cost)
+    if cost.degree > MAX_DEGREE:
+        raise WorkLimitError(f"Phi has degree up to {cost.degree}, above the limit {MAX_DEGREE} of a punch: the "
+                             "contour's polynomial arithmetic grows with it; give a polynomial of lower degree")
     other = sorted(expr.free_symbols - {S.x1, S.x2}, key=lambda q: q.name)
     if other:
         names = ", ".join(q.name for q in other)
