@@ -155,7 +155,7 @@ def _layer_doors() -> dict[str, list]:
         out[f"{k}.series_parts"] = [lambda s, lay=lay: lay.series_parts(s, None),
                                     lambda s, lay=lay: lay.series_parts(1, s)]
         out[f"{k}.small_u"] = [lambda s, lay=lay: lay.small_u(s), lambda s, lay=lay: lay.small_u(2, s)]
-        if hasattr(lay, "large_u"):
+        if hasattr(getattr(tl, cls), "large_u"):
             out[f"{k}.large_u"] = [lambda s, lay=lay: lay.large_u(s)]
     return out
 
@@ -307,6 +307,7 @@ INVENTORY: dict[str, list] = {
                                          lambda s: PA.parse_expression("a + b", names=[s])],
     "thinlayer.parse.parse_number": [lambda s: PA.parse_number(s, "x")],
     "thinlayer.parse.as_expr": [lambda s: PA.as_expr(s)],
+    "thinlayer.parse.sympy_value": [lambda s: PA.sympy_value(s, "x"), lambda s: PA.sympy_value(s, "x", symbol=True)],
     "thinlayer.parse.check_cost": [lambda s: PA.check_cost(s)],
     "thinlayer.parse.expression_cost": [lambda s: PA.expression_cost(s)],
     "thinlayer.parse.Cost": [lambda s: PA.Cost(s, s, s)],

@@ -24,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import InputError, InputTypeError, check_array_size, check_bounded, check_choice, parse_nu, positive
+from .._checks import InputError, InputTypeError, array_size, check_bounded, check_choice, parse_nu, positive
 from ..asymptotics.flat_punch import thick_flat_punch, thin_flat_punch
 from ..display import RichDisplay
 from ..errors import boundary
@@ -53,8 +53,8 @@ def _as_ratios(a_over_H: Any, limit: int) -> tuple[np.ndarray, bool]:
     """``a/H`` as a float array (and whether it was a scalar): finite, positive, at most ``limit`` values."""
     if isinstance(a_over_H, bool):
         raise InputTypeError("a_over_H must be a positive number or an array of them, got a bool")
-    check_array_size(a_over_H, "a_over_H", limit, "each value is one solve of the exact model (0.12 s at a/H = "
-                                                  "200); the thin model takes 1.1 s for 1e6 values (21 s for 1e7)")
+    check_bounded(array_size(a_over_H), "the number of a/H values", limit, "each value is one solve of the exact "
+                  "model (0.12 s at a/H = 200); the thin model takes 1.1 s for 1e6 values (21 s for 1e7)")
     if isinstance(a_over_H, (str, bytes)) or np.asarray(a_over_H).dtype.kind in "USOb":
         raise InputTypeError(f"a_over_H must be a positive number or an array of numbers, got {a_over_H!r}")
     try:
