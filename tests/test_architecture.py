@@ -7,7 +7,7 @@ and two groups of the same rank (the asymptotic stages and the direct numerics) 
 other.  Inside ``asymptotics/`` the stages import only earlier ones, in the paper's order
 (:data:`STAGES`).  Also checked: no private name crosses a module boundary, no import cycle, the
 symbolic pipeline loads neither scipy nor the numerics, no code outside ``layers/`` asks a layer
-for its concrete type or name, and no module is over 900 lines without a one-line reason at its top.
+for its concrete type or name, and no module is over 900 lines (no exemptions).
 """
 from __future__ import annotations
 
@@ -242,6 +242,8 @@ def test_module_size():
     bad = []
     for mod, path in MODULES.items():
         lines = path.read_text().splitlines()
-        if len(lines) > 900 and not any(line.startswith("# size:") for line in lines[:3]):
-            bad.append(f"{mod}: {len(lines)} lines and no '# size: <reason>' line at its top")
+        if len(lines) > 900:
+            bad.append(f"{mod}: {len(lines)} lines, more than 900: split it where a reader would (issue 29)")
+        if any(line.startswith("# size:") for line in lines[:3]):
+            bad.append(f"{mod}: a '# size:' exemption line; no module carries one (issue 29 item 7)")
     assert not bad, "\n".join(bad)
