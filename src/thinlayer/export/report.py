@@ -27,7 +27,6 @@ from typing import Any
 
 import sympy as sp
 
-from .. import errata
 from .. import symbols as S
 from ..display import latex_escape
 from ..parse import as_expr
@@ -134,6 +133,7 @@ def marked(body: str) -> str:
 PREAMBLE = r"""\documentclass[10pt]{article}
 \usepackage[margin=2cm]{geometry}
 \usepackage{amsmath,amssymb,graphicx}
+\usepackage{float,longtable}
 \allowdisplaybreaks
 \numberwithin{figure}{section}
 \numberwithin{table}{section}
@@ -216,13 +216,13 @@ class Document:
 
     def float_table(self, caption: str, tabular: str, label: str | None = None) -> "Document":
         lab = rf"\label{{{label}}}" if label else ""
-        self.parts.append(rf"\begin{{table}}[htbp]\centering\caption{{{caption}}}{lab}" + "\n" + tabular
+        self.parts.append(rf"\begin{{table}}[H]\centering\caption{{{caption}}}{lab}" + "\n" + tabular
                           + "\n" + r"\end{table}" + "\n")
         return self
 
     def figure(self, path: str, caption: str) -> "Document":
         """A numbered figure at the text width with its caption below."""
-        self.parts.append(rf"\begin{{figure}}[htbp]\centering\includegraphics[width=\linewidth]{{{path}}}"
+        self.parts.append(rf"\begin{{figure}}[H]\centering\includegraphics[width=\linewidth]{{{path}}}"
                           rf"\caption{{{caption}}}\end{{figure}}" + "\n")
         return self
 
@@ -231,71 +231,13 @@ class Document:
         return marked("\n".join(self.parts + [r"\end{document}", ""]))
 
 
-def prose(text: str) -> str:
-    r"""Project prose with inline math (the errata's fields): ``$...$`` kept as math, the rest escaped.
+def errata_section(doc: Document, der: Any) -> Document:
+    """The errata that concern the report so far (:mod:`thinlayer.export._errata_section`)."""
+    from .. import errata
+    from ._errata_section import errata_section as section
+    from ._errata_section import report_errata
 
-    Only for thinlayer's own text; a user's text goes through :func:`escape` whole.
-
-    >>> prose("with $p = -\\sigma_{33} > 0$ & more")
-    'with $p = -\\sigma_{33} > 0$ \\& more'
-    """
-    parts = text.split("$")
-    if len(parts) % 2 == 0:
-        raise ValueError(f"unbalanced $ in {text!r}")
-    # a long file or module name may break after an underscore rather than run into the margin
-    return "".join(f"${q}$" if k % 2 else escape(q).replace(r"\_", r"\_\allowbreak{}") for k, q in enumerate(parts))
-
-
-_VALUE = re.compile(r"\\kappa\(([^()]*)\) = ([-\d.]+)")
-#: widest printed-and-derived pair (visible characters, roughly) set on one line
-_ONE_LINE = 70
-
-
-def _values(form: str) -> list[tuple[str, str]] | None:
-    r"""``[(x, y), ...]`` of a form that is exactly a list ``\kappa(x) = y,\ ...``, else None."""
-    pairs = _VALUE.findall(form)
-    return pairs if pairs and r",\ ".join(rf"\kappa({x}) = {y}" for x, y in pairs) == form else None
-
-
-def _visible(form: str) -> int:
-    """About how many symbols a LaTeX formula shows (commands count as one, braces and scripts as none)."""
-    s = re.sub(r"\\(?:frac|tfrac|left|right|quad|qquad|mathcal|boldsymbol|text)\b", "", form)
-    s = re.sub(r"\\[a-zA-Z]+", "x", s)
-    return len(re.sub(r"\\.|[{}^_ ]", "", s))
-
-
-def _errata_forms(doc: Document, e: Any) -> None:
-    """The printed and derived forms: a table of values, one line, or two lines when they are long."""
-    p, d = _values(e.printed), _values(e.derived)
-    if p and d and [x for x, _ in p] == [x for x, _ in d]:
-        tables = []
-        for k in range(0, len(p), 9):
-            cols = list(zip(p[k:k + 9], d[k:k + 9]))
-            tables.append("\n".join([
-                rf"\begin{{tabular}}{{l{'r' * len(cols)}}}", r"\hline",
-                "$a/h$ & " + " & ".join(f"${x}$" for (x, _), _ in cols) + r" \\ \hline",
-                r"printed $\kappa$ & " + " & ".join(f"${y}$" for (_, y), _ in cols) + r" \\",
-                r"derived $\kappa$ & " + " & ".join(f"${y}$" for _, (_, y) in cols) + r" \\", r"\hline",
-                r"\end{tabular}"]))
-        doc.text(r"\begin{center}\footnotesize" + "\n" + "\n\\\\[1ex]\n".join(tables) + "\n" + r"\end{center}")
-    elif _visible(e.printed) + _visible(e.derived) > _ONE_LINE:
-        doc.lines([rf"\text{{printed: }} {e.printed}", rf"\text{{derived: }} {e.derived}"])
-    else:
-        doc.math(rf"\text{{printed: }} {e.printed}\qquad \text{{derived: }} {e.derived}")
-
-
-def errata_section(doc: Document) -> Document:
-    """The errata registry: each entry with its printed and derived forms displayed, and the evidence."""
-    doc.section("Errata").text(
-        rf"Where the derivation differs from the printed paper, \emph{{{PAPER}}}. Each entry is re-derived by "
-        r"an independent check (\texttt{thinlayer.errata}), which confirms the derived form and refutes the "
-        r"printed one.")
-    kinds = {"misprint": "misprint", "notation": "notation", "ambiguous": "ambiguous reading"}
-    for e in errata.ENTRIES:
-        doc.text(rf"\paragraph{{({e.equation}) {prose(e.quantity)} ({kinds.get(e.kind, escape(e.kind))}).}} "
-                 rf"{prose(e.evidence)}")
-        _errata_forms(doc, e)
-    return doc
+    return section(doc, report_errata(der, "\n".join(doc.parts)), len(errata.ENTRIES))
 
 
 def alexandrov_generic_latex() -> str:
@@ -536,10 +478,11 @@ def derivation_document(der: Any, figure_dir: str | Path | None = None, force: b
     doc = Document(der.title)
     layer = der.layer
     doc.text(
-        rf"This report carries out, with \texttt{{thinlayer}}, the asymptotic analysis of \emph{{{PAPER}}} "
-        r"for the punch and the layer of the derivation file below. Equation numbers in parentheses are those "
-        r"of that paper; (I.$n$) numbers the incompressible-layer extension of \texttt{thinlayer}. Every "
-        r"formula is derived here, not copied: where the printed paper differs, the section Errata says so.")
+        rf"This report carries out, with \texttt{{thinlayer}}, the asymptotic analysis of \emph{{{PAPER}}}"
+        r"~\cite{argatov} for the punch and the layer of the derivation file below. Equation numbers in parentheses "
+        r"are those of that paper; (I.$n$), (F.$n$), (SO.$n$) number the extensions of \texttt{thinlayer} (the "
+        r"incompressible layer, the flat punch, the second order). Every formula is derived here, not copied: "
+        r"where a printed source differs, the section Errata says so.")
     _kernel_part(doc, der)
     if der.punch is None:  # the flat-ended cylinder: its own section below
         pass
@@ -563,7 +506,10 @@ def derivation_document(der: Any, figure_dir: str | Path | None = None, force: b
         from ._flat_section import flat_punch_part
 
         flat_punch_part(doc, layer, der.flat_punch)
-    errata_section(doc)
+    errata_section(doc, der)
+    from ._references_section import references_section
+
+    references_section(doc)
     return doc.latex()
 
 
@@ -648,8 +594,8 @@ def _boundary_part(doc: Document, der: Any) -> None:
     tau, v, h = sp.Symbol(r"\tau", positive=True), sp.Symbol("v", real=True), sp.Symbol("h", real=True)
     doc.section("Boundary layer").text(
         r"Near the edge of the contact area the inner expansion fails; the boundary layer (3.15)--(3.18) is "
-        r"solved with Alexandrov's approximation of the kernel, (3.19), whose constants $B$ and $C$ match "
-        r"$\mathcal{A}$ and $m_1$, (3.20) and (3.21) (the latter corrected, see Errata):")
+        r"solved with Alexandrov's approximation of the kernel~\cite{alexandrov}, (3.19), whose constants $B$ and $C$ "
+        r"match $\mathcal{A}$ and $m_1$, (3.20) and (3.21) (the latter corrected, see Errata):")
     sol = AlexandrovSolution(AlexandrovParameters(A=A, m1=m1, B=B, C=C), 1 / sp.sqrt(C) - 1 / (2 * B))
     doc.math(rf"\tilde{{\mathcal{{L}}}}(s) = {_nl(sp.S.One * sp.Symbol('s') * sp.sqrt(B**2 + sp.Symbol('s')**2) / (C + sp.Symbol('s')**2))} \tag{{3.19}}")  # noqa: E501 (one formula)
     doc.math(r"B = \frac{1}{\mathcal{A} + \sqrt{\mathcal{A}^2 + 2 m_1}},\quad C = \frac{B}{\mathcal{A}}"
@@ -689,7 +635,8 @@ def _boundary_part(doc: Document, der: Any) -> None:
     if layer.base == "frictionless":
         from ..asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
-        doc.table(r"Edge shift of the frictionless base: exact (Wiener--Hopf) and Alexandrov's (3.25).", "rr",
+        doc.table(r"Edge shift of the frictionless base: exact (Wiener--Hopf) and Alexandrov's "
+                  r"(3.25)~\cite{alexandrov}.", "rr",
                   [r"$h^*$ exact", r"$h^*$ (3.25)"],
                   [[f"${_num(edge_shift_exact(layer), 8)}$", f"${_num(edge_shift_alexandrov(layer), 8)}$"]])
 
@@ -810,7 +757,7 @@ def _edge_shift_part(doc: Document, nus: tuple) -> None:
     doc.section("Edge shift of the contact area").text(
         r"The contour of the contact area lies the distance $h^* H$ inside $\Gamma_0$ (Table~\ref{tab:edge}).")
     doc.table(r"Alexandrov's constants $B$, $C$, (3.20)--(3.21), and the edge shift $h^*$: exact "
-              r"(Wiener--Hopf) and Alexandrov's approximation (3.25).", "rrrrr",
+              r"(Wiener--Hopf) and Alexandrov's approximation (3.25)~\cite{alexandrov}.", "rrrrr",
               [r"$\nu$", "$B$", "$C$", r"$h^*$ exact", r"$h^*$ (3.25)"], rows, label="tab:edge")
 
 
@@ -893,5 +840,10 @@ def _figures(study: Any, folder: Path, force: bool = False) -> tuple[list[str], 
     try:
         paths = study.plots(folder, formats=("pdf",), force=force)
     except ImportError:
-        return [], r"matplotlib is not installed; \texttt{pip install 'thinlayer[plot]'}"
+        import logging
+
+        # the install hint goes to the console (the log), never onto the page
+        logging.getLogger(__name__).warning("validation figures omitted from the report: matplotlib is not "
+                                            "installed; pip install 'thinlayer[plot]'")
+        return [], "matplotlib is not installed"
     return [p.name for p in paths if p.suffix == ".pdf"], ""
