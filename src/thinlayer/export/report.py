@@ -808,7 +808,10 @@ def _validation_part(doc: Document, v: dict, figure_dir: str | Path | None, forc
         r"contact problem (1.5)--(1.8) (\texttt{thinlayer.numerics}): relative errors, their observed orders in "
         r"$H/a$, and the edge shift measured from the numerical contact radius (Table~\ref{tab:validation}).")
     doc.float_table(r"Validation: errors of the asymptotics against the direct numerics; observed orders "
-                    r"against the claimed ones; the edge shift extrapolated to $H/a = 0$.",
+                    r"against the claimed ones; the edge shift extrapolated to $H/a = 0$. The study is "
+                    r"dimensionless, independent of the units of the contact solution: $\mu = 1$, the sphere "
+                    r"$R = 1$, the elliptic paraboloid $R_1 = 4$, $R_2 = R = 1$, $\delta_0 = R/2$; the numerical "
+                    r"force $P_{\rm num}$ is given in units of $\mu R^2$, the errors are relative.",
                     "{\\footnotesize\\setlength{\\tabcolsep}{3pt}\n"
                     + study.latex().replace("contact\\_area", "contact area")
                     .replace("force\\_leading", "force, leading").replace("contact area\\_leading",

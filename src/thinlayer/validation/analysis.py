@@ -253,7 +253,8 @@ class ValidationStudy:
             return rf"${m}\cdot 10^{{{int(k)}}}$"
 
         out = [r"\begin{tabular}{lrrrrrrrrrrr}", r"\hline",
-               (r"shape & $\nu$ & $H/a$ & $P_{\rm num}$ & err $P$ & err $P^{(2)}$ & err $P_0$ & err $|\omega|$ & "
+               (r"shape & $\nu$ & $H/a$ & $P_{\rm num}/(\mu R^2)$ & err $P$ & err $P^{(2)}$ & err $P_0$ & "
+                r"err $|\omega|$ & "
                 r"err $|\omega|^{(2)}$ & err $|\omega_0|$ & $(a-c)/H$ & err $p_c$ \\"), r"\hline"]
         for r in self.rows:
             out.append(f"{r.shape} & {r.nu:g} & {r.H_over_a:.4g} & {r.force_numeric:.7g} & {e(r.force_error)} & "
