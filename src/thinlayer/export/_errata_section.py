@@ -170,7 +170,7 @@ def _heading(e: Any) -> str:
     escape = latex_escape
     kind = _KINDS.get(e.kind, escape(e.kind))
     if e.source == "argatov":
-        return rf"({e.where.strip('()') or e.equation}) {prose(e.quantity)} ({kind}, \cite{{argatov}})"
+        return rf"({e.where.strip('()') or e.equation}) {prose(e.quantity)} ({kind})"
     where = f", {escape(e.where)}" if e.where else ""
     return rf"{escape(e.equation)}~\cite{{{e.source}}}{where}: {prose(e.quantity)} ({kind})"
 
@@ -190,8 +190,9 @@ def errata_section(doc: Any, entries: Iterable[Any], total: int) -> Any:
     """The section Errata of a report: ``entries`` (those that concern it) out of ``total`` in the registry."""
     entries = tuple(entries)
     doc.section("Errata")
-    lead = (r"Where the derivation differs from the publications it rests on: the seed paper \cite{argatov} and "
-            r"the published series and tables set beside the engine's results. Each entry is re-derived by an "
+    lead = (r"Where the derivation differs from the publications it rests on: the seed paper \cite{argatov}, whose "
+            r"equation numbers head its entries, and the published series and tables set beside the engine's "
+            r"results, each headed by its publication. Each entry is re-derived by an "
             r"independent check (\texttt{thinlayer.errata}) that confirms the derived form and refutes the printed "
             rf"one. This report lists the {len(entries)} of the registry's {total} entries that concern its "
             r"equations, punch and layer; the whole registry is the document \texttt{thinlayer report errata}.")
@@ -230,6 +231,8 @@ def errata_document(doc: Any) -> str:
         if not entries:
             continue
         doc.section(rf"{title} \protect\cite{{{key}}}")
+        if key == "argatov":
+            doc.text(r"Each entry is headed by the number of the paper's equation whose print it corrects.")
         for e in entries:
             _entry(doc, e)
     references_section(doc)

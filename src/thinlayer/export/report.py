@@ -811,8 +811,9 @@ def _validation_part(doc: Document, v: dict, figure_dir: str | Path | None, forc
     doc.float_table(r"Validation: errors of the asymptotics against the direct numerics; observed orders "
                     r"against the claimed ones; the edge shift extrapolated to $H/a = 0$. The study is "
                     r"dimensionless, independent of the units of the contact solution: $\mu = 1$, the sphere "
-                    r"$R = 1$, the elliptic paraboloid $R_1 = 4$, $R_2 = R = 1$, $\delta_0 = R/2$; the numerical "
-                    r"force $P_{\rm num}$ is given in units of $\mu R^2$, the errors are relative.",
+                    r"$R = 1$, the elliptic paraboloid $R_1 = 4$, $R_2 = R = 1$, $\delta_0 = R/2$; "
+                    r"$\bar P_{\rm num} = P_{\rm num}/(\mu R^2)$ is the numerical force in units of $\mu R^2$, the "
+                    r"errors are relative.",
                     "{\\footnotesize\\setlength{\\tabcolsep}{3pt}\n"
                     + study.latex().replace("contact\\_area", "contact area")
                     .replace("force\\_leading", "force, leading").replace("contact area\\_leading",

@@ -271,7 +271,7 @@ class ValidationStudy:
             return rf"${m}\cdot 10^{{{int(k)}}}$"
 
         out = [r"\begin{tabular}{lrrrrrrrrrrr}", r"\hline",
-               (r"shape & $\nu$ & $H/a$ & $P_{\rm num}/(\mu R^2)$ & err $P$ & err $P^{(2)}$ & err $P_0$ & "
+               (r"shape & $\nu$ & $H/a$ & $\bar P_{\rm num}$ & err $P$ & err $P^{(2)}$ & err $P_0$ & "
                 r"err $|\omega|$ & "
                 r"err $|\omega|^{(2)}$ & err $|\omega_0|$ & $(a-c)/H$ & err $p_c$ \\"), r"\hline"]
         for r in self.rows:
@@ -375,6 +375,9 @@ def _diagnosis(rows: Sequence[Any], use: Sequence[Any], quantity: str, claimed: 
         if abs(local[-1] - claimed) <= ORDER_TOLERANCE:
             reasons.append(f"local orders {text} from the largest to the smallest H/a reach the claimed {claimed} "
                            f"between H/a = {err[-2][0]:g} and {err[-1][0]:g}: the larger H/a are pre-asymptotic")
+        elif local[-1] > claimed:
+            reasons.append(f"local orders {text}: above the claimed {claimed} between the two smallest H/a (the "
+                           "remainder falls at least as fast as claimed)")
         else:
             reasons.append(f"local orders {text}: not yet at the claimed {claimed} at the smallest H/a "
                            f"(pre-asymptotic; smaller H/a: thinlayer validate --full)")
