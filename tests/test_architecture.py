@@ -27,6 +27,7 @@ RANK = {
     "thinlayer.results": 1,      # Result protocol, checked_lambdify
     "thinlayer.display": 1,      # text and Jupyter display
     "thinlayer.parse": 1,        # the restricted grammar for user formulas (never eval)
+    "thinlayer.references": 2,   # the bibliography: every cited publication by key (uses display)
     "thinlayer.layers": 2,       # (2.3)-(2.4), (2.15), (2.20), (2.21), (4.2), (I.1): the kernels and their data
     "thinlayer.punch": 3,        # (1.1), (2.13): the punch catalogue
     "thinlayer.asymptotics": 4,  # (2.14)-(3.25), (4.1), (I.2)-(I.13): the stages of the paper
