@@ -557,10 +557,16 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool | None = False,
 
     Every file the run would write is checked before anything is written: the .tex is replaced
     only when thinlayer wrote it and nobody edited it since (the hash in its first line) or with
-    ``force``; an existing PDF, log or validation figure only with ``force``.  The text is
-    generated completely first, each file is replaced atomically, the PDF is compiled in a
-    temporary folder, and the whole run holds a lock on ``<out_dir>/<name>`` so that a concurrent
-    run of the same name stops with an error instead of mixing files.
+    ``force``; an existing PDF, log or validation figure only with ``force``.  A link at any of
+    these counts as an existing file (with ``force`` the link itself is replaced, never the file it
+    points to); a link at the lock file or the figure folder is refused even with ``force``.  The
+    text is generated completely first; with ``pdf`` it is compiled in a private temporary folder
+    inside ``out_dir`` and only then are the PDF, the log and the .tex each replaced atomically, so a
+    run interrupted before the end (a LaTeX error, Ctrl-C, SIGTERM, SIGKILL) leaves the earlier .tex
+    and PDF as they were.  The whole run holds a lock on ``<out_dir>/<name>`` so that a concurrent
+    run of the same name stops with an error instead of mixing files; under it the temporary files
+    left by a killed earlier run of the same name are removed.  ``out_dir`` itself may be a link (the
+    user's choice: it is followed).
 
     Parameters
     ----------
@@ -575,40 +581,51 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool | None = False,
     force : bool
         Whether to overwrite existing files.
     temp_root : str or Path, optional
-        Where the PDF's temporary folder is created (default: the system's).
+        Where the PDF's temporary folder is created (default: ``out_dir``).
 
     Returns
     -------
     Path
         The .tex file.
     """
-    from ..validation.output import output_lock, refuse_existing
-    from .report import check_writable, compile_pdf, latex_available, latex_engine, pdf_outputs, write_tex
+    from ..validation.output import atomic_write, check_folder, output_lock, refuse_existing
+    from .latex_files import build_pdf, check_writable, latex_available, latex_engine, pdf_outputs, write_tex
 
     missing_engine = bool(pdf) and not latex_available()
     pdf = latex_available() if pdf is None else bool(pdf) and not missing_engine
     out = Path(out_dir)
     tex = out / f"{der.name}.tex"
     figures = out / f"{der.name}-figures" if der.validation is not None else None
+    targets = [tex, *pdf_outputs(tex)]
+    if figures is not None:
+        from ..validation.plots import figure_files
+
+        targets += figure_files(figures, "validation", ("pdf",))
 
     def check() -> None:
         check_writable(tex, force)
         if pdf:
             refuse_existing(pdf_outputs(tex), force)
         if figures is not None:
-            from ..validation.plots import figure_files
-
-            refuse_existing(figure_files(figures, "validation", ("pdf",)), force)
+            check_folder(figures)
+            refuse_existing(targets[3:], force)
 
     if out.exists() and not out.is_dir():
         raise NotADirectoryError(f"--out {out} is a file, not a folder")
     check()
-    with output_lock(out, der.name):
+    with output_lock(out, der.name, targets):
         check()  # again, now that no concurrent run can write these files
         text = report_latex(der, figures, force=force)
-        write_tex(text, tex, force)
         if pdf:
-            compile_pdf(tex, temp_root)
+            try:
+                pdf_bytes, log = build_pdf(text, der.name, out if temp_root is None else temp_root, figures, tex)
+            except RuntimeError:  # LaTeX's error: the .tex is written for reading it, the PDF is not
+                write_tex(text, tex, force)
+                raise
+            pdf_path, log_path = pdf_outputs(tex)
+            atomic_write(pdf_path, pdf_bytes)
+            atomic_write(log_path, log)
+        write_tex(text, tex, force)
     if missing_engine:
         latex_engine()  # NoLatexEngineError, after the .tex is written
     return tex
