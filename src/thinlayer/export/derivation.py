@@ -20,6 +20,7 @@ except ModuleNotFoundError:  # pragma: no cover
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..punch import Punch
 from .report import ReportTextError, check_symbol_names, check_title
+from .units import unit_latex  # noqa: F401 - kept importable from here
 
 
 class DerivationFileError(ValueError):
@@ -69,8 +70,9 @@ SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
                    "shapes": ((list,), "a list of shape names")},
     "second_order": {"nu": ((list,), "a list of 1 to 12 Poisson ratios in (-1, 1/2) (numbers, or exact strings "
                                      "like '3/10') or 'frictionless' (the rows of the table of r_3)")},
-    "units": {"length": ((str,), "a unit such as 'mm'"), "stress": ((str,), "a unit such as 'MPa' (of mu and E)"),
-              "force": ((str,), "a unit such as 'N'")},
+    "units": {"length": ((str,), "a length unit such as 'mm' or 'um'"),
+              "stress": ((str,), "a stress unit such as 'MPa' or 'N/mm^2' (of mu and E)"),
+              "force": ((str,), "a force unit such as 'N' or 'mN'")},
 }
 _TOP_KEYS = set(SCHEMA)
 _REQUIRED = ("derivation", "layer", "punch")
@@ -142,35 +144,44 @@ def _validation_table(vt: Any) -> dict | None:
     return out
 
 
-#: a unit: letters with optional integer powers, joined by spaces, '*', '.' or '/' ("mm", "N/mm^2", "kg m/s^2")
-_UNIT = re.compile(r"[A-Za-z]{1,8}(\^-?[0-9])?([ *./][A-Za-z]{1,8}(\^-?[0-9])?){0,3}")
-
-
-def unit_latex(text: str) -> str:
-    r"""A unit of ``[units]`` (letters and digits only, :data:`_UNIT`) as math: ``\mathrm{N}/\mathrm{mm}^{2}``.
-
-    >>> unit_latex("N/mm^2"), unit_latex("kg m")
-    ('\\mathrm{N}/\\mathrm{mm}^{2}', '\\mathrm{kg}\\,\\mathrm{m}')
-    """
-    out = []
-    for m in re.finditer(r"([A-Za-z]+)(?:\^(-?[0-9]))?|([ *./])", text):
-        if m.group(1):
-            out.append(rf"\mathrm{{{m.group(1)}}}" + (f"^{{{m.group(2)}}}" if m.group(2) else ""))
-        else:
-            out.append("/" if m.group(3) == "/" else r"\,")
-    return "".join(out)
+#: the dimension (kg, m, s) of each key of [units] and examples of it
+UNIT_KINDS = {"length": ((0, 1, 0), "'mm', 'um', 'nm', 'm'"),
+              "force": ((1, 1, -2), "'N', 'mN', 'uN', 'nN', 'kg m/s^2'"),
+              "stress": ((1, -1, -2), "'MPa', 'kPa', 'GPa', 'Pa', 'N/mm^2'")}
 
 
 def _units_table(ut: Any) -> dict | None:
-    """Validate ``[units]``: the units of lengths, of the moduli and of forces, for the report's numbers."""
+    """Validate ``[units]``: the units of lengths, of the moduli and of forces, for the report's numbers.
+
+    Each is parsed by the unit grammar (:func:`thinlayer.export.units.parse_unit`, never evaluated),
+    must have the dimension of its key, and, when all three are given, stress = force / length^2
+    (one consistent system: the report computes forces from moduli and lengths).  The values are the
+    units' LaTeX (:class:`~thinlayer.export.units.UnitLatex`, which also sets a power of the unit).
+    """
+    from .units import FORMS, UnitError, UnitLatex, dimension_name, parse_unit
+
     if ut is None:
         return None
     out = {}
     for key, val in ut.items():
-        if not _UNIT.fullmatch(val):
-            raise DerivationFileError(f"[units] {key} = {_short(val)}: a unit is letters with optional integer "
-                                      "powers joined by spaces, '*', '.' or '/', e.g. 'mm', 'MPa', 'N/mm^2'")
-        out[key] = unit_latex(val)
+        try:
+            unit = parse_unit(val)
+        except UnitError as exc:
+            raise DerivationFileError(f"[units] {key} = {_short(val)}: {exc}; {FORMS}") from exc
+        dim, examples = UNIT_KINDS[key]
+        if unit.dimension != dim:
+            raise DerivationFileError(f"[units] {key} = {_short(val)} is {dimension_name(unit.dimension)} "
+                                      f"({unit.text()}), not {dimension_name(dim)}: give {dimension_name(dim)} "
+                                      f"unit such as {examples}")
+        out[key] = UnitLatex(unit)
+    if len(out) == 3:
+        length, force, stress = (out[k].unit for k in ("length", "force", "stress"))
+        implied = force.decade - 2 * length.decade
+        if implied != stress.decade:
+            raise DerivationFileError(
+                f"[units] are inconsistent: force/length^2 = {force.text()}/({length.text()})^2 is 10^{implied} Pa but "
+                f"stress = {stress.text()} is 10^{stress.decade} Pa; the report's forces come from moduli times "
+                "lengths squared, so give one system, e.g. mm, N, MPa or m, N, Pa or um, uN, MPa")
     return out
 
 

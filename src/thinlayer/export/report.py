@@ -4,7 +4,9 @@ The stages return LaTeX as tagged lines joined by ``" \\\\\n"``; the report spli
 displayed equations, keeps each ``\tag{..}`` (the paper's equation number) and sets the body with
 ``\fiteq``, which scales an equation down to the line width only when it would run off the page.
 The files (the generated mark, the .tex, the PDF compile in a private temporary folder) are handled by
-:mod:`thinlayer.export.latex_files`, whose names are importable from here too.
+:mod:`thinlayer.export.latex_files`, whose names are importable from here too.  A title's long runs
+without a space get break points (:func:`title_latex`) and a long user name in a table cell is scaled
+to its column (``\fitcell``), so that no line runs off the page.
 
 Untrusted text never reaches LaTeX raw: the title goes through :func:`title_latex` (every special
 character escaped, Greek letters as math symbols, any other character LaTeX cannot set refused by
@@ -103,11 +105,31 @@ def check_title(title: object, where: str = "title") -> str:
     return title
 
 
+#: a run of more than :data:`LONG_RUN` characters without a space gets a break point after every :data:`BREAK_EVERY`th
+#: (at the title's \LARGE size 12 of the widest letters take 200 pt of the 483 pt line)
+LONG_RUN, BREAK_EVERY = 24, 12
+
+
 def title_latex(title: str) -> str:
-    """A checked title (:func:`check_title`) in LaTeX: special characters escaped, Greek letters as math."""
+    r"""A checked title (:func:`check_title`) in LaTeX: special characters escaped, Greek letters as math.
+
+    A run of more than :data:`LONG_RUN` characters without a space (a file name, a formula) gets a
+    break point (``\allowbreak{}``) after every :data:`BREAK_EVERY` characters, so that it wraps
+    instead of running off the page; ordinary words are left whole.
+
+    >>> title_latex("a_b " + "x" * 26).count(r"\allowbreak{}")
+    2
+    """
     check_title(title)
-    return "".join((rf"\ensuremath{{{_GREEK[ch]}}}" if _GREEK[ch].startswith("\\") else _GREEK[ch])
-                   if ch in _GREEK else latex_escape(ch) for ch in title)
+    out = []
+    for word in re.split(r"( )", title):
+        long_run = len(word) > LONG_RUN
+        for k, ch in enumerate(word):
+            if long_run and k and k % BREAK_EVERY == 0:
+                out.append(r"\allowbreak{}")
+            out.append((rf"\ensuremath{{{_GREEK[ch]}}}" if _GREEK[ch].startswith("\\") else _GREEK[ch])
+                       if ch in _GREEK else latex_escape(ch))
+    return "".join(out)
 
 
 def check_symbol_names(names: Iterable[str], where: str = "punch") -> None:
@@ -143,6 +165,9 @@ PREAMBLE = r"""\documentclass[10pt]{article}
   \ifdim\wd\fitbox>\dimexpr\linewidth-5em\relax
     \resizebox{\dimexpr\linewidth-5em\relax}{!}{\usebox{\fitbox}}%
   \else\usebox{\fitbox}\fi}
+% a table cell at its natural size, or scaled to the given width if wider (a long user name)
+\newcommand{\fitcell}[2]{\sbox{\fitbox}{#2}%
+  \ifdim\wd\fitbox>#1\relax\resizebox{#1}{!}{\usebox{\fitbox}}\else\usebox{\fitbox}\fi}
 """
 
 _TAG = re.compile(r"\\tag\{([^{}]*)\}\s*$")
@@ -344,11 +369,12 @@ def _nu_latex(layer: Any) -> str:
 
 
 def _unit(units: dict | None, kind: str, power: int = 1) -> str:
-    r"""``\,\mathrm{mm}^{2}``: the unit of [units] for ``kind`` (length, stress, force), or nothing."""
+    r"""``\,\mathrm{mm}^{2}``: the unit of [units] for ``kind`` (length, stress, force) to ``power``, or nothing."""
     if not units or kind not in units:
         return ""
-    u = units[kind]
-    return rf"\,{u}" if power == 1 else rf"\,\left({u}\right)^{{{power}}}" if " " in u else rf"\,{u}^{{{power}}}"
+    from .units import unit_power
+
+    return rf"\,{unit_power(units[kind], power)}"
 
 
 def _lines(*rows: str) -> str:
@@ -654,6 +680,41 @@ def _edge_shift_part(doc: Document, nus: tuple) -> None:
               [r"$\nu$", "$B$", "$C$", r"$h^*$ exact", r"$h^*$ (3.25)"], rows, label="tab:edge")
 
 
+def parameter_length_powers(expr: Any, names: list[str]) -> dict[str, int | None]:
+    r"""The power of length of each punch parameter, from :math:`\Phi` being a length in lengths :math:`x_1, x_2`.
+
+    Each term of the expanded punch, a number times powers of :math:`x_1, x_2` and of the parameters,
+    gives one linear equation for the parameters' powers :math:`d_k` (:math:`i + j + \sum_k e_k d_k = 1`);
+    terms without a parameter fix nothing (a number's unit is the user's).  A power the terms do not fix
+    as one integer is None (the report then prints no unit for it).
+
+    >>> import sympy as sp; from thinlayer import symbols as S
+    >>> R, K = sp.symbols("R K", positive=True)
+    >>> parameter_length_powers((S.x1**2 + S.x2**2) / (2 * R) + S.x1**4 / K**3, ["R", "K"])
+    {'R': 1, 'K': 1}
+    """
+    unknown = {n: sp.Symbol(f"d_{k}") for k, n in enumerate(names)}
+    rows = []
+    for term in sp.Add.make_args(sp.expand(expr)):
+        if not any(getattr(s, "name", None) in unknown for s in term.free_symbols):
+            continue  # a number's unit is the user's: it fixes no parameter
+        eq = -sp.S.One
+        for base, e in term.as_powers_dict().items():
+            if base.is_number:
+                continue
+            if not (base.is_Symbol and e.is_Rational):
+                return dict.fromkeys(names)
+            eq += e * (1 if base in (S.x1, S.x2) else unknown.get(base.name, sp.nan))
+        if eq.has(sp.nan):
+            return dict.fromkeys(names)
+        rows.append(eq)
+    sol = sp.linsolve(rows, list(unknown.values())) if rows else sp.S.EmptySet
+    if not isinstance(sol, sp.FiniteSet) or len(sol) != 1:
+        return dict.fromkeys(names)
+    values = next(iter(sol))
+    return {n: int(v) if v.is_Integer else None for n, v in zip(names, values)}
+
+
 def _contact_part(doc: Document, der: Any) -> None:
     from ..contact.solve import solve
 
@@ -667,12 +728,13 @@ def _contact_part(doc: Document, der: Any) -> None:
         rf"are within the tolerance ${_num(100 * ans.tol)}\,\%$; otherwise the direct numerical solver. "
         r"Table~\ref{tab:contact} lists the data and the results; the estimates are relative"
         + ("." if u else r" (no \texttt{[units]} in the derivation file: numbers in any consistent units)."))
-    pars = ", ".join(f"${sp.latex(sp.Symbol(k))} = {_num(v)}{L()}$" for k, v in c["parameters"].items())
+    powers = parameter_length_powers(der.punch.expr, list(c["parameters"]))
+    pars = [rf"\fitcell{{0.7\linewidth}}{{${sp.latex(sp.Symbol(k))} = {_num(v)}{L(powers[k]) if powers[k] else ''}$}}"
+            for k, v in c["parameters"].items()]
     modulus = (rf"$E = {_num(c['E'])}{Sg}$" if "E" in c else rf"$\mu = {_num(ans.mu)}{Sg}$")
     rows = [[r"indentation $\delta_0$", f"${_num(ans.delta0)}{L()}$"], [r"thickness $H$", f"${_num(ans.H)}{L()}$"],
             ["modulus", modulus], [r"Poisson ratio $\nu$", f"${_num(ans.nu)}$"]]
-    if pars:
-        rows.append(["punch", pars])
+    rows += [["punch" if k == 0 else "", p] for k, p in enumerate(pars)]
     est = ans.error_estimate
     rows += [[r"force $P$", rf"${_num(ans.force)}{F} \pm {_num(100 * est['force'], 2)}\,\%$"],
              [r"contact area $|\omega|$", rf"${_num(ans.contact_area)}{L(2)} \pm "
