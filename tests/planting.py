@@ -199,6 +199,7 @@ class Outcome:
     err: str
     outside_changed: list[str]
     planted_now: dict[str, str]
+    seconds: float = 0.0
 
     def safe(self, refused_expected: bool | None = None) -> tuple[bool, str]:
         """Safe: nothing outside changed, and either a one-line refusal (exit 2) or every planted path replaced
@@ -236,8 +237,10 @@ def attack(writer: Writer, rels: list[str], kind: str, overwrite: bool, work: Pa
         plant(out / rel, kind, outside)
     argv = writer.argv(work, out) + (["--overwrite"] if overwrite else [])
     with environment(PATH=fake_tex(work / "bin")), quick_validation():
+        start = time.monotonic()
         code, err = run_cli(argv)
-    outcome = Outcome(code, err, outside.changed(), {r: _state(out / r) for r in rels})
+        seconds = time.monotonic() - start
+    outcome = Outcome(code, err, outside.changed(), {r: _state(out / r) for r in rels}, seconds)
     shutil.rmtree(work / "outside")
     return outcome
 
@@ -294,6 +297,7 @@ class Killed:
     next_left: list
     next_files: dict
     next_lock: bool
+    stop_seconds: float = 0.0  # from the signal to the end of the run
 
     def problems(self) -> list[str]:
         """What went wrong (empty: the earlier files kept, the temporary ones gone or cleaned by the next run)."""
@@ -348,7 +352,9 @@ def killed_run(work: Path, stage: str, sig: int) -> Killed:
             return Killed(stage, sig, p.pid, None, "never reached the stage: " + p.stderr.read().decode()[-500:],
                           before, report_files(out), leftovers(out), -1, "", [], {}, False)
         p.send_signal(sig)
+        start = time.monotonic()
         _, raw = p.communicate(timeout=300)
+        stop = time.monotonic() - start
     finally:
         if p.poll() is None:
             p.kill()
@@ -359,4 +365,4 @@ def killed_run(work: Path, stage: str, sig: int) -> Killed:
     with environment(PATH=path):
         next_code, next_err = run_cli(argv + ["--pdf"])
     return Killed(stage, sig, p.pid, p.returncode, raw.decode(errors="replace"), before, after, left, next_code,
-                  next_err, leftovers(out), report_files(out), (out / ".inj.lock").exists())
+                  next_err, leftovers(out), report_files(out), (out / ".inj.lock").exists(), stop)
