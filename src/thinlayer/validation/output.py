@@ -306,7 +306,7 @@ def _open_lock(lock: Path) -> tuple[int, bool]:
     except FileNotFoundError:
         return -1, False  # removed by its holder in between: try again
     except OSError as exc:
-        kind = "a symbolic link" if exc.errno == errno.ELOOP or (lock.is_symlink()) else exc.strerror
+        kind = "a symbolic link" if exc.errno == errno.ELOOP or lock.is_symlink() else exc.strerror
         raise UnsafeOutputError(f"{lock} is {what} ({kind}); thinlayer never writes through a link: remove "
                                 "it") from None
     st = os.fstat(fd)
