@@ -74,7 +74,8 @@ def test_shell_line_runs(line, tmp_path):
             argv[0] = sys.executable
         if "--pdf" in argv and shutil.which("pdflatex") is None and shutil.which("latexmk") is None:
             argv.remove("--pdf")
-        res = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600)
+        res = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600,
+                             stdin=subprocess.DEVNULL)
         assert res.returncode == 0, f"{line!r} failed ({res.returncode}):\n{res.stdout[-2000:]}\n{res.stderr[-2000:]}"
 
 

@@ -19,6 +19,7 @@ import sympy as sp
 
 from .. import symbols as S
 from ._normal import float_latex, normal_latex
+from .units import unit_power
 
 __all__ = ["second_order_part"]
 
@@ -195,8 +196,7 @@ def _numbers(doc: Any, der: Any, law: Any) -> None:
         return
     u = der.units or {}
     F = rf"\,{u['force']}" if "force" in u else ""
-    L2 = "" if "length" not in u else (rf"\,\left({u['length']}\right)^{{2}}" if " " in u["length"]
-                                       else rf"\,{u['length']}^{{2}}")
+    L2 = "" if "length" not in u else rf"\,{unit_power(u['length'], 2)}"
     doc.text(r"At the numbers of the contact solution below (first order: $P_0 + P_1$ and (3.25)):")
     doc.lines([rf"P_0 + P_1 = {float_latex(v.force_first)}{F},\quad P_2 = {float_latex(v.P2)}{F},\quad "
                rf"P = {float_latex(v.force)}{F}",

@@ -482,7 +482,7 @@ def _cmd_codegen_any_thickness(args) -> int:
     out_dir = Path(args.out)
     targets = {lang: out_dir / f"{name}.{'py' if lang == 'python' else 'c'}" for lang in langs}
     refuse_existing(targets.values(), args.overwrite)
-    with output_lock(out_dir, name):
+    with output_lock(out_dir, name, targets.values()):
         refuse_existing(targets.values(), args.overwrite)
         written = [str(atomic_write(targets[lang], src)) for lang, src in sources.items()]
     if args.json:
@@ -518,7 +518,7 @@ def _cmd_codegen(args) -> int:
     targets = [out_dir / fname for c in codes for fname in c.files]
     refuse_existing(targets, args.overwrite)  # every file checked before any is written
     written = []
-    with output_lock(out_dir, codes[0].function_name):
+    with output_lock(out_dir, codes[0].function_name, targets):
         refuse_existing(targets, args.overwrite)
         for c in codes:
             written += [str(p) for p in c.write(out_dir, force=True)]

@@ -334,7 +334,7 @@ class ValidationStudy:
             targets += figure_files(d, stem, ("png", "pdf"))
         refuse_existing(targets, force)
         files = []
-        with output_lock(d, stem):
+        with output_lock(d, stem, targets):
             refuse_existing(targets, force)  # again, now that no other run can write them
             for p, (_, text) in zip(targets, texts):
                 files.append(atomic_write(p, text))
