@@ -112,13 +112,15 @@ def test_keyboard_interrupt_is_one_line_and_130(monkeypatch, capsys):
 
 def _run(args: list[str], **kw) -> subprocess.CompletedProcess:
     env = {**os.environ, "PYTHONPATH": SRC}
-    return subprocess.run([sys.executable, "-m", "thinlayer", *args], capture_output=True, env=env, **kw)
+    # stdin closed: the test does not depend on how pytest was started (a terminal, `pytest &`, CI without stdin)
+    return subprocess.run([sys.executable, "-m", "thinlayer", *args], capture_output=True, env=env,
+                          stdin=subprocess.DEVNULL, **kw)
 
 
 def test_closed_pipe_ends_quietly():
     env = {**os.environ, "PYTHONPATH": SRC}
     p = subprocess.Popen([sys.executable, "-m", "thinlayer", "errata", "--json"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, env=env)
+                         stderr=subprocess.PIPE, stdin=subprocess.DEVNULL, env=env)
     first = p.stdout.read(10)
     p.stdout.close()  # the reader goes away, like `| head -c 10`
     err = p.stderr.read().decode()
