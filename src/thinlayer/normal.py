@@ -626,7 +626,11 @@ class NormalTextPrinter(StrPrinter):
         return "√" + (inner if isinstance(b, (sp.Symbol, sp.Integer, sp.NumberSymbol)) else f"({inner})")
 
     def _join(self, parts: list[str], number: str | None = None) -> str:
-        """Factors of a product: juxtaposed in Unicode (``2ν``, ``π R``, ``(1 - ν)(1 - 2ν)``), ``*`` in ASCII."""
+        """Factors of a product: juxtaposed in Unicode (``2ν``, ``π R``, ``(1 - ν)(1 - 2ν)``), ``*`` in ASCII.
+
+        A number binds to what follows (``2ν``, ``3(1 - ν)``), two parenthesised sums to each other; any other
+        pair is spaced, so that a function's argument never runs into a following group (``E(k) (1 - ν)``).
+        """
         items = ([number] if number is not None else []) + parts
         if not self.unicode:
             return "*".join(items)
@@ -636,8 +640,7 @@ class NormalTextPrinter(StrPrinter):
                 out = item
                 continue
             prev = items[k - 1]
-            tight = (k == 1 and number is not None and prev.isdigit()) or (prev.endswith(")") and item.startswith("("))
-            tight = tight or (_ends_in_power_of_group(prev) and item.startswith("("))
+            tight = (k == 1 and number is not None and prev.isdigit()) or (_is_group(prev) and _is_group(item))
             out += ("" if tight else " ") + item
         return out
 
@@ -671,9 +674,17 @@ class NormalTextPrinter(StrPrinter):
         return f"{num or '1'}/({den})" if n_den > 1 else f"{num or '1'}/{den}", negative
 
 
-def _ends_in_power_of_group(text: str) -> bool:
+def _is_group(text: str) -> bool:
+    """``(..)`` or ``(..)ⁿ``: one parenthesised sum, perhaps to a power (not a function call ``f(..)``)."""
     stripped = text.rstrip("⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-    return stripped != text and stripped.endswith(")")
+    if not (stripped.startswith("(") and stripped.endswith(")")):
+        return False
+    depth = 0
+    for i, ch in enumerate(stripped):
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth == 0 and i < len(stripped) - 1:
+            return False
+    return True
 
 
 def normal_text(expr: Any, unicode: bool = True, digits: int = TEXT_DIGITS) -> str:

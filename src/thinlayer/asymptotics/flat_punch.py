@@ -120,6 +120,7 @@ from .. import symbols as S
 from .._checks import check_bounded, check_int
 from ..display import RichDisplay, fmt
 from ..layers.kernels import FrictionlessLayer, GenericLayer, IncompressibleLayer, LayerKernel
+from ..normal import join_signed, normal_latex
 from ..punch import Punch
 from .incompressible import thin_layer_operator, two_term_edge_shift
 from .inner import inner_pressure
@@ -371,10 +372,10 @@ class ThinFlatPunch(RichDisplay):
         d = thin_flat_punch_derivation()
         if self.regime == "incompressible":
             expr = d.incompressible_resummed.subs({d.c1: sp.Rational(2, 3), d.h: sp.Float(self.h, 10)})
-            return rf"\kappa \simeq {sp.latex(expr)} \tag{{F.14}}"
+            return rf"\kappa \simeq {normal_latex(expr)} \tag{{F.14}}"
         if self.regime == "compressible":
             expr = d.resummed.subs({d.A: sp.Float(self.A, 10), d.h: sp.Float(self.h, 10)})
-            return rf"\kappa \simeq {sp.latex(expr)} \tag{{F.12}}"
+            return rf"\kappa \simeq {normal_latex(expr)} \tag{{F.12}}"
         return (rf"\kappa \simeq \frac{{\pi (\lambda + {self.h_model:.6g})^4}}{{32 \cdot {self.c1:.6g}\,\lambda}}"
                 rf"\,\psi\!\left(\frac{{\lambda + {self.h_model:.6g}}}{{{math.sqrt(self.m1):.6g}}}\right) \tag{{F.15}}")
 
@@ -404,11 +405,11 @@ class ThinFlatPunch(RichDisplay):
     def text_lines(self) -> list[str]:
         lines = [f"ThinFlatPunch: {self.layer}, {self.regime}   (F.10)-(F.16)"]
         if self.regime != "incompressible":
-            lines.append(f"  A = {self.A:.12g}, m_1 = {self.m1:.12g}, h* = {self.h:.12g}")
-            lines.append("  kappa ~ (pi/(4A)) (lambda + 2 h*)   (F.11)")
+            lines.append(f"  𝒜 = {self.A:.12g}, m₁ = {self.m1:.12g}, h* = {self.h:.12g}")
+            lines.append("  κ ~ (π/(4𝒜)) (λ + 2h*)   (F.11)")
         else:
-            lines.append(f"  c_1 = {self.c1:.12g}, h = {self.h:.12g}")
-            lines.append("  kappa ~ (3 pi/64) (lambda^3 + 4 h lambda^2)   (F.14)")
+            lines.append(f"  c₁ = {self.c1:.12g}, h = {self.h:.12g}")
+            lines.append("  κ ~ (3π/64) (λ³ + 4h λ²)   (F.14)")
         if self.regime == "two-term":
             lines.append(f"  two-term operator (I.10): h (I.12) = {self.h_model:.12g}   (F.15)")
         return lines
@@ -590,12 +591,14 @@ class ThickFlatPunch(RichDisplay):
         return (x,), {"kappa": kappa, "error_estimate": sp.Piecewise((est, x < THICK_LIMIT), (1, True))}
 
     def latex(self) -> str:
-        terms = " + ".join([f"{self.coefficients[k]:.6g}\\,\\lambda^{{{k}}}" for k in range(1, min(self.order, 4) + 1)])
-        return rf"\kappa = 1 + {terms} + \dots \tag{{F.18}}"
+        terms = join_signed(["1"] + [f"{self.coefficients[k]:.6g}\\,\\lambda" + (f"^{{{k}}}" if k > 1 else "")
+                                     for k in range(1, min(self.order, 4) + 1)])
+        return rf"\kappa = {terms} + \dots \tag{{F.18}}"
 
     def text_lines(self) -> list[str]:
-        lines = [f"ThickFlatPunch: {self.layer}, kappa = 1 + sum c_k (a/H)^k through order {self.order}   (F.18)"]
-        lines += [f"  c_{k} = {fmt(self.coefficients[k])}" for k in range(1, min(self.order, 6) + 1)]
+        lines = [f"ThickFlatPunch: {self.layer}, κ = 1 + Σ c_k (a/H)^k through order {self.order}   (F.18)"]
+        sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+        lines += [f"  c{str(k).translate(sub)} = {fmt(self.coefficients[k])}" for k in range(1, min(self.order, 6) + 1)]
         return lines
 
 
