@@ -378,7 +378,21 @@ class ForceLaw(RichDisplay):
         if not self.perimeter.has(sp.elliptic_e):
             outs["contact_area"] = self.contact_area
         free = set().union(*(e.free_symbols for e in outs.values()))
-        return tuple(a for a in self.arguments if a in free), outs
+        constants = self.codegen_constants() if h_star in free else {}
+        return tuple(a for a in self.arguments if a in free and a not in constants), outs
+
+    def codegen_constants(self) -> dict:
+        """``{h^*: (number, note)}`` when the layer has one edge shift (a numeric nu, the frictionless base), else
+        ``{}`` (a symbolic nu: ``h^*`` stays an argument).  Generated code defines it as a named constant.
+        """
+        try:
+            key = self.layer.edge_shift_key
+        except ValueError:
+            return {}
+        from .wiener_hopf import edge_shift
+
+        return {h_star: (sp.Float(edge_shift(key, kernel="exact"), 17),
+                         f"edge shift h*({layer_label(self.layer)}), exact Wiener-Hopf solution (3.18), (3.25)")}
 
     def latex(self) -> str:
         th = self.layer.vartheta
@@ -548,6 +562,19 @@ class ForceLaw(RichDisplay):
                     f"  c  = {fmt(self.coefficient)}",
                     "  no closed form: use .evaluate(delta0, H, mu, ...) (integrals over the contact contour)"]
         return out
+
+
+def layer_label(layer: LayerKernel) -> str:
+    """The layer a number belongs to, as a note of generated code says it: ``nu=0.3``, ``frictionless base``.
+
+    >>> from thinlayer import BondedLayer, FrictionlessLayer
+    >>> layer_label(BondedLayer("3/10")), layer_label(FrictionlessLayer())
+    ('nu=3/10', 'frictionless base')
+    """
+    text = str(layer)
+    if getattr(layer, "base", None) == "frictionless":
+        return "frictionless base"
+    return text[text.index("(") + 1:-1] if text.startswith("BondedLayer(") and text.endswith(")") else text
 
 
 def law_arguments(*exprs: sp.Expr | None) -> tuple[sp.Symbol, ...]:

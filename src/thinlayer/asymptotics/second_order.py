@@ -114,7 +114,16 @@ from ..layers.kernels import LayerKernel
 from ..normal import join_signed, normal_latex
 from ..punch import Punch
 from ..results import latex_equation
-from .force_law import ForceLaw, ForceValues, force_law, h_star, lambdify_law, law_arguments, radial_monomial
+from .force_law import (
+    ForceLaw,
+    ForceValues,
+    force_law,
+    h_star,
+    lambdify_law,
+    law_arguments,
+    layer_label,
+    radial_monomial,
+)
 from .inner import inner_pressure
 
 __all__ = [
@@ -461,8 +470,16 @@ class SecondOrderLaw(RichDisplay):
         return law_arguments(self.force, self.contact_area)
 
     def _constants_sub(self) -> dict:
-        c = edge_constants(self.layer)
-        return {r_3: sp.Float(c.r3, 17), h_star: sp.Float(c.h_star, 17)}
+        return {k: v for k, (v, _) in self.codegen_constants().items()}
+
+    def codegen_constants(self) -> dict:
+        """``{r_3: (number, note), h^*: (number, note)}``: the layer's constants (SO.4), (3.25), defined as named
+        constants in generated code.
+        """
+        c, lay = edge_constants(self.layer), layer_label(self.layer)
+        return {r_3: (sp.Float(c.r3, 17),
+                      f"r_3({lay}): log Phi(p) = -h* p - m_1 p^2/2 + r_3 p^3 + ..., Wiener-Hopf (SO.4)"),
+                h_star: (sp.Float(c.h_star, 17), f"edge shift h*({lay}), exact Wiener-Hopf solution (3.18), (3.25)")}
 
     def lambdify(self, args=None, backend: str = "numpy"):
         """``(P, |omega|)`` as one numeric function of :attr:`arguments` with ``r_3``, ``h^*`` substituted."""
@@ -476,20 +493,20 @@ class SecondOrderLaw(RichDisplay):
     codegen_name = "force_law_second_order"
 
     def codegen_expressions(self):
-        """``(arguments, {"force": ..., "contact_area": ...})`` with the layer's constants substituted
-        (closed forms without elliptic integrals: a circle or a radial monomial).
+        """``(arguments, {"force": ..., "contact_area": ...})`` in the layer's constants ``r_3``, ``h^*``
+        (:meth:`codegen_constants`; closed forms without elliptic integrals: a circle or a radial monomial).
         """
         if self.P2 is None:
             raise ValueError(f"no closed-form second-order law for {self.punch.name}; code generation needs one")
-        sub = self._constants_sub()
-        outs = {"force": self.force.subs(sub)}
-        area = self.contact_area.subs(sub)
+        sub = self.codegen_constants()  # r_3 and h^* stay named: the generated code defines them as constants
+        outs = {"force": self.force}
+        area = self.contact_area
         if not area.has(sp.elliptic_e, sp.elliptic_k):
             outs["contact_area"] = area
         if outs["force"].has(sp.elliptic_e, sp.elliptic_k):
             raise ValueError("the elliptic paraboloid's second-order force has complete elliptic integrals K, E, "
                              "which the target languages lack; use .lambdify() or .evaluate()")
-        free = set().union(*(e.free_symbols for e in outs.values()))
+        free = set().union(*(e.free_symbols for e in outs.values())) - set(sub)
         return tuple(a for a in self.arguments if a in free), outs
 
     def latex(self) -> str:
