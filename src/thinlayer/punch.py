@@ -227,7 +227,7 @@ class Punch(RichDisplay):
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         pars = ", ".join(q.name for q in self.parameters) or "none"
-        return [f"Punch ({self.name}): Phi(x_1, x_2) = {fmt(self.expr)}   (1.1)",
+        return [f"Punch ({self.name}): Φ(x₁, x₂) = {fmt(self.expr)}   (1.1)",
                 f"  degree {self.degree}, parameters: {pars}"]
 
 
