@@ -44,6 +44,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
 import mpmath
@@ -116,12 +117,17 @@ def ordered_terms(add: sp.Expr) -> list[sp.Expr]:
     """The terms of a sum in print order: ascending powers of a one-parameter polynomial, else sympy's order
     with a positive term first when there is one.
     """
+    return list(_ordered_terms(add))
+
+
+@lru_cache(maxsize=4096)
+def _ordered_terms(add: sp.Expr) -> tuple[sp.Expr, ...]:
     v = _parameter_poly(add)
     if v is not None:
-        return sorted(sp.Add.make_args(add), key=lambda t: sp.degree(t, v))
+        return tuple(sorted(sp.Add.make_args(add), key=lambda t: sp.degree(t, v)))
     terms = list(add.as_ordered_terms())
     first = next((i for i, t in enumerate(terms) if not t.could_extract_minus_sign()), 0)
-    return terms[first:first + 1] + terms[:first] + terms[first + 1:]
+    return tuple(terms[first:first + 1] + terms[:first] + terms[first + 1:])
 
 
 def _all_fractions(add: sp.Expr) -> bool:
@@ -201,12 +207,17 @@ def _merge(term: Term, sub: Term) -> None:
     term.outside += sub.outside
 
 
-def _factorable(base: sp.Expr) -> bool:
-    """A polynomial sum small enough to factor for printing (no floats; total degree at most 8)."""
+@lru_cache(maxsize=4096)
+def _factored(base: sp.Expr) -> sp.Expr | None:
+    """``factor(base)`` of a polynomial sum small enough to factor for printing (no floats; total degree at most
+    8), else None.  Cached: the same few factors (``1 - 2 nu``, ``1 - nu``) recur in every coefficient.
+    """
     if base.has(sp.Float) or not base.is_polynomial():
-        return False
+        return None
     gens = sorted(base.free_symbols, key=sp.default_sort_key)
-    return not gens or sp.Poly(base, *gens).total_degree() <= _FACTOR_DEGREE
+    if gens and sp.Poly(base, *gens).total_degree() > _FACTOR_DEGREE:
+        return None
+    return sp.factor(base)
 
 
 def _add_factor(term: Term, base: sp.Expr, e: sp.Expr) -> None:
@@ -220,8 +231,8 @@ def _add_factor(term: Term, base: sp.Expr, e: sp.Expr) -> None:
                     term.coefficient, base = -term.coefficient, sp.expand(-base)
                 term.outside.append(base)
                 return
-        if _factorable(base):
-            factored = sp.factor(base)
+        factored = _factored(base)
+        if factored is not None:
             if not isinstance(factored, sp.Add):  # reducible: each factor by the policy
                 _merge(term, normal_term(factored**e))
                 return
