@@ -17,7 +17,10 @@ def test_default_derivation_report(tmp_path):
         assert rf"\tag{{{tag}}}" in text
     from thinlayer import errata
 
-    assert "Errata" in text and text.count(r"\paragraph{(") == len(errata.ENTRIES)
+    # issue 28: its own errata, not the registry: the eight entries of the seed paper that concern the quartic
+    # punch's equations (test_report_quality.EXPECTED_ERRATA spells them out), none of the other publications
+    assert "Errata" in text and text.count(r"\paragraph{(") == 8 < len(errata.ENTRIES)
+    assert text.count(r"\paragraph{") == 8
 
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="needs pdflatex (installed by .ci/run)")

@@ -86,7 +86,7 @@ def _boundary_layer(doc: Any) -> None:
              r"constant) and the force defect:")
     doc.math(rf"h = {normal_latex(bl.edge_shift.subs(sub))} \tag{{SO.5}}")
     doc.math(rf"\int_0^\infty \hat q\, e^{{-p\tau}}\, d\tau = {normal_latex(transform)} \tag{{SO.6}}")
-    doc.math(rf"\hat q(v) = {normal_latex(bl.far_field.subs(sub))} + o(1),\quad v \to \infty")
+    doc.math(rf"\hat q(v) = {normal_latex(bl.far_field.subs(sub))} + o(1),\quad v \to \infty \tag{{SO.7}}")
     doc.math(rf"\mathcal{{A}} D = {normal_latex(bl.force_defect.subs(sub))} \tag{{SO.8}}")
     doc.text(r"with $\Phi = \Phi(p)$ and $\Phi' = d\Phi/dp$.")
 

@@ -537,8 +537,10 @@ def _add_report(sub: Any, fmt: type) -> None:
                        help="carry out a derivation file and write its LaTeX report (and PDF)",
                        description="Carry out a derivation file (derivations/*.toml) and write <out>/<name>.tex.\n"
                                    "JSON keys: tex, pdf (null without --pdf).",
-                       epilog="example:\n  thinlayer report derivations/sphere.toml --out build --pdf")
-    r.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml")
+                       epilog="examples:\n  thinlayer report derivations/sphere.toml --out build --pdf\n"
+                              "  thinlayer report errata --out build     # the whole errata registry")
+    r.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml, a catalogue name "
+                                "(sphere), or errata (the whole errata registry as one document)")
     r.add_argument("--out", default="build", help="output folder, created if missing (default: build)")
     r.add_argument("--pdf", action="store_true",
                    help="also compile the report (pdflatex; shell escape off, reading and writing only in its "

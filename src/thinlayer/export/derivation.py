@@ -44,6 +44,21 @@ class Derivation:
     second_order: dict | None = None
 
 
+@dataclass(frozen=True)
+class ErrataDocument:
+    """The document ``thinlayer report errata``: the whole errata registry (:mod:`thinlayer.errata`), no derivation
+    file; :func:`write_report` writes it like a report (``<out>/errata.tex``).
+    """
+
+    name: str = "errata"
+    title: str = "Errata of the publications thinlayer re-derives"
+    validation: None = None
+
+
+#: bare names the report command takes beside the catalogue's: documents that are no derivation file
+DOCUMENTS = {"errata": ErrataDocument}
+
+
 #: the schema: table -> {key: (python types, what is valid)}; any other key is an error
 SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
     "derivation": {"name": ((str,), "a file-name-safe string (letters, digits, '-', '_')"),
@@ -450,13 +465,13 @@ def resolve_derivation(name_or_path: str | Path) -> Path:
     bare = path.parent in (Path(""), Path(".")) or path.parent.name == "derivations"
     if bare and _CATALOGUE_NAME.fullmatch(stem) and stem in cat and path.suffix in ("", ".toml"):
         return cat[stem]
-    names = ", ".join(cat) or "none installed"
+    names = ", ".join([*cat, *DOCUMENTS]) or "none installed"
     raise DerivationFileError(f"{name_or_path}: does not exist, and it is no name of the derivation catalogue "
                               f"({names})")
 
 
-def load_derivation(path: str | Path) -> Derivation:
-    """Read and validate a derivation file.
+def load_derivation(path: str | Path) -> Derivation | ErrataDocument:
+    """Read and validate a derivation file (or name a document of :data:`DOCUMENTS`, e.g. ``errata``).
 
     Parameters
     ----------
@@ -477,6 +492,8 @@ def load_derivation(path: str | Path) -> Derivation:
         one line starting with the file's name, naming the table, the key and what is valid
         (unknown keys, wrong types, values out of range, contradictions between tables).
     """
+    if isinstance(path, str) and path in DOCUMENTS and not Path(path).exists():
+        return DOCUMENTS[path]()
     path = resolve_derivation(path) if not Path(path).is_dir() else Path(path)
     try:
         return _load(path)
@@ -545,6 +562,11 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: b
     """
     from .report import derivation_document
 
+    if isinstance(der, ErrataDocument):
+        from ._errata_section import errata_document
+        from .report import Document
+
+        return errata_document(Document(der.title))
     if der.punch is not None:
         check_symbol_names((q.name for q in der.punch.expr.free_symbols), "punch")
     return derivation_document(der, figure_dir, force)
