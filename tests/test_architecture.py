@@ -24,6 +24,7 @@ RANK = {
     "thinlayer._series": 0,      # power-series arithmetic
     "thinlayer._lazy": 0,        # package names imported on first use (PEP 562)
     "thinlayer.symbols": 0,      # the paper's symbols
+    "thinlayer.normal": 0,       # the normal form of printed formulas (LaTeX and text): imports nothing of thinlayer
     "thinlayer.results": 1,      # Result protocol, checked_lambdify
     "thinlayer.display": 1,      # text and Jupyter display
     "thinlayer.parse": 1,        # the restricted grammar for user formulas (never eval)

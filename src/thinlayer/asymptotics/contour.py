@@ -108,6 +108,7 @@ import sympy as sp
 
 from .. import symbols as S
 from ..display import RichDisplay, fmt
+from ..normal import normal_latex
 from ..parse import as_expr
 from ._contour_elongated import FramedCurve
 from ._contour_region import (
@@ -433,7 +434,7 @@ class ContactContour(RichDisplay):
     def latex(self) -> str:
         """LaTeX summary: the contour equation and its measured size."""
         return (
-            r"\Gamma_0:\ " + sp.latex(self.Phi) + rf" = {sp.latex(sp.Float(self.delta0, 12))}"
+            r"\Gamma_0:\ " + normal_latex(self.Phi) + rf" = {normal_latex(sp.Float(self.delta0, 12), digits=12)}"
             rf",\quad |\Gamma_0| = {self.perimeter:.12g},\quad |\omega_0| = {self.area:.12g}"
         )
 
@@ -441,8 +442,8 @@ class ContactContour(RichDisplay):
         """The lines of ``str(self)``."""
         acc = self.accuracy
         return [
-            f"ContactContour: Gamma_0 = {{{fmt(self.Phi)} = {fmt(self.delta0)}}}   (3.3)-(3.14)",
-            f"  perimeter |Gamma_0| = {fmt(self.perimeter)}, area |omega_0| = {fmt(self.area)}",
+            f"ContactContour: Γ₀ = {{{fmt(self.Phi)} = {fmt(self.delta0)}}}   (3.3)-(3.14)",
+            f"  perimeter |Γ₀| = {fmt(self.perimeter)}, area |ω₀| = {fmt(self.area)}",
             f"  centroid ({fmt(self.centroid[0])}, {fmt(self.centroid[1])}), {len(self.nodes)} nodes",
             (f"  accuracy: distance from Gamma_0 {acc.level_distance:.1e}, arc-length speed {acc.speed_error:.1e}, "
             f"turning number {acc.turning_number:.12g}"),
@@ -665,18 +666,23 @@ class EllipseContour(RichDisplay):
 
     def latex(self) -> str:
         return (
-            rf"a = {sp.latex(self.a)},\quad b = {sp.latex(self.b)},\quad "
-            rf"e^2 = {sp.latex(self.e2)} \tag{{3.1}}"
+            rf"a = {normal_latex(self.a)},\quad b = {normal_latex(self.b)},\quad "
+            rf"e^2 = {normal_latex(self.e2)} \tag{{3.1}} \\" + "\n"
+            rf"|\omega_0| = {normal_latex(self.area)},\quad |\Gamma_0| = {normal_latex(self.perimeter)}"
+            + (r",\quad \mathrm{E}(k) = \int_0^{\pi/2}\sqrt{1 - k^2 \sin^2\theta}\,d\theta,\ k = e"
+               if self.perimeter.has(sp.elliptic_e) else "")
         )
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         return [
-            "EllipseContour: x_1**2/a**2 + x_2**2/b**2 = 1   (3.1)",
-            f"  a   = {fmt(self.a)}",
-            f"  b   = {fmt(self.b)}",
-            f"  e^2 = {fmt(self.e2)}",
-            f"  area |omega_0| = {fmt(self.area)}, perimeter |Gamma_0| = {fmt(self.perimeter)}",
+            "EllipseContour: x₁²/a² + x₂²/b² = 1   (3.1)",
+            f"  a  = {fmt(self.a)}",
+            f"  b  = {fmt(self.b)}",
+            f"  e² = {fmt(self.e2)}",
+            f"  area |ω₀| = {fmt(self.area)}, perimeter |Γ₀| = {fmt(self.perimeter)}"
+            + ("   (E(k): complete elliptic integral of the second kind, modulus k = e)"
+               if self.perimeter.has(sp.elliptic_e) else ""),
         ]
 
 

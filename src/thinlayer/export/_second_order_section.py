@@ -136,12 +136,12 @@ def _laws(doc: Any, der: Any) -> None:
     if elliptic:
         doc.text(r"For a quadratic punch $\Phi = \mathbf{x}^T K \mathbf{x}/2 + \dots$ with eigenvalues "
                  r"$\lambda_1 \ge \lambda_2$ of $K$ (here the curvatures $1/R_1$, $1/R_2$), "
-                 r"$m = 1 - \lambda_2/\lambda_1$ and $D_0 = \delta_0 - \min\Phi$, the edge integrals are "
-                 r"($ds/|\nabla\Phi| = dt/\sqrt{\lambda_1\lambda_2}$ on the ellipse; $K$ and $E$ the complete "
-                 r"elliptic integrals):")
+                 r"$k = \sqrt{1 - \lambda_2/\lambda_1}$ and $D_0 = \delta_0 - \min\Phi$, the edge integrals are "
+                 r"($ds/|\nabla\Phi| = dt/\sqrt{\lambda_1\lambda_2}$ on the ellipse; $\mathrm{K}(k)$ and "
+                 r"$\mathrm{E}(k)$ the complete elliptic integrals of the first and second kind of modulus $k$):")
         doc.lines([r"\oint_{\Gamma_0}\left(\Delta\Phi + \Phi_{nn}\right) ds = (\lambda_1 + \lambda_2)|\Gamma_0| + "
-                   r"4\sqrt{\frac{2 D_0}{\lambda_1\lambda_2}}\left((\lambda_1 + \lambda_2)\sqrt{\lambda_1}\,E(m) - "
-                   r"\lambda_2\sqrt{\lambda_1}\,K(m)\right)",
+                   r"4\sqrt{\frac{2 D_0}{\lambda_1\lambda_2}}\left((\lambda_1 + \lambda_2)\sqrt{\lambda_1}\,"
+                   r"\mathrm{E}(k) - \lambda_2\sqrt{\lambda_1}\,\mathrm{K}(k)\right)",
                    r"\oint_{\Gamma_0}\frac{\Delta\Phi}{|\nabla\Phi|}\, ds = "
                    r"\frac{2\pi(\lambda_1 + \lambda_2)}{\sqrt{\lambda_1\lambda_2}}"])
     else:

@@ -132,13 +132,12 @@ def _num(x: Any) -> float | None:
 
 
 def _expr_json(e: Any) -> dict:
-    """``{"expr": sympy string, "latex": LaTeX, "value": float or null}``."""
-    import sympy as sp
-
+    """``{"expr": sympy string, "latex": LaTeX (the normal form of thinlayer.normal), "value": float or null}``."""
+    from ..normal import normal_latex
     from ..parse import as_expr
 
     e = as_expr(e)
-    return {"expr": str(e), "latex": sp.latex(e), "value": _num(e) if e.is_number else None}
+    return {"expr": str(e), "latex": normal_latex(e), "value": _num(e) if e.is_number else None}
 
 
 def _print(obj: Any, as_json: bool) -> None:
