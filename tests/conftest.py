@@ -1,11 +1,69 @@
-"""Test configuration: long validation runs are marked ``slow`` and run only with THINLAYER_SLOW=1."""
+"""Test configuration: long validation runs are marked ``slow`` and run only with THINLAYER_SLOW=1.
+
+The README's command runs the suite on two pytest-xdist workers with ``--dist loadgroup``.  A test that uses a
+module- or session-scoped fixture of this suite is put into an ``xdist_group`` named after that fixture (tests
+that share any such fixture or explicit group end up in one group), so that all the tests sharing it run in one
+worker and the fixture is built once, not once per worker.
+"""
 import os
 
 import mpmath
 import pytest
 
+TESTS = os.path.dirname(os.path.abspath(__file__))
+#: shared fixtures that join a named group: tests that build the same things without the fixture join it too
+FIXTURE_GROUPS = {"catalogue_report": "catalogue-reports", "sphere_latex": "catalogue-reports"}
 
+
+def _shared_fixtures(item) -> set[str]:
+    """The module-, package- and session-scoped fixtures of this suite that ``item`` uses."""
+    info = getattr(item, "_fixtureinfo", None)
+    out = set()
+    for name, defs in (info.name2fixturedefs.items() if info is not None else ()):  # doctests have none
+        fd = defs[-1]
+        code = getattr(fd.func, "__code__", None)
+        where = os.path.abspath(code.co_filename) if code is not None else ""
+        if fd.scope in ("module", "package", "session") and where.startswith(TESTS + os.sep):
+            out.add(f"{os.path.relpath(where, TESTS)}::{name}")
+    return out
+
+
+def _explicit_groups(item) -> set[str]:
+    return {str(m.args[0] if m.args else m.kwargs.get("name", "default")) for m in item.iter_markers("xdist_group")}
+
+
+@pytest.hookimpl(tryfirst=True)  # before pytest-xdist turns the xdist_group marks into node ids
 def pytest_collection_modifyitems(config, items):
+    # one group per connected set of shared fixtures and explicit groups (a test using fixtures A and B joins
+    # every test of A and of B): pytest-xdist would make a test marked A and B a group "A_B" of its own
+    parent: dict[str, str] = {}
+
+    def find(x: str) -> str:
+        while parent.setdefault(x, x) != x:
+            x = parent[x]
+        return x
+
+    nodes = {}
+    for item in items:
+        fixtures = _shared_fixtures(item)
+        ns = {f"g:{g}" for g in _explicit_groups(item)} | {f"f:{f}" for f in fixtures}
+        ns |= {f"g:{FIXTURE_GROUPS[f.split('::')[1]]}" for f in fixtures if f.split("::")[1] in FIXTURE_GROUPS}
+        nodes[item] = ns
+        for a, b in zip(sorted(ns), sorted(ns)[1:]):
+            parent[find(b)] = find(a)
+    members: dict[str, set[str]] = {}
+    for ns in nodes.values():
+        for n in ns:
+            members.setdefault(find(n), set()).add(n)
+    name = {}
+    for root, ms in members.items():  # an explicit group's name if the set has one, else its first fixture's
+        explicit = sorted(m for m in ms if m.startswith("g:"))
+        name[root] = explicit[0][2:] if explicit else min(ms)[2:]
+    for item, ns in nodes.items():
+        if ns:
+            group = name[find(next(iter(ns)))]
+            if group not in _explicit_groups(item):
+                item.add_marker(pytest.mark.xdist_group(group))
     if os.environ.get("THINLAYER_SLOW") == "1" or "slow" in (config.getoption("-m") or ""):
         return
     skip = pytest.mark.skip(reason="long validation run: set THINLAYER_SLOW=1 to run it")

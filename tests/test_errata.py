@@ -46,3 +46,48 @@ def test_prose_fields_are_typeset(entry):
 def test_ascii_prose_check_can_fail():
     assert _ascii_prose("nu = 1/2 (chi = sqrt(R delta)/h)") and _ascii_prose("b_1 s^2") and _ascii_prose("to 1e-10")
     assert not _ascii_prose(r"$\nu = 1/2$ ($\chi = \sqrt{R\delta}/h$), thinlayer.numerics.flat_punch, to $10^{-10}$")
+
+
+# --------------------------------------------------------------------------- provenance (issue 28 item 2)
+def test_every_entry_quotes_its_publication_or_names_its_secondary_source():
+    # an erratum of a publication quotes the publication itself (its table or equation); a value read only in
+    # another source is typed "secondary" and names that source, until it is checked against the original
+    from thinlayer import references
+
+    for e in errata.ENTRIES:
+        references.get(e.source)  # a known publication
+        if e.source == "argatov":
+            assert e.where == f"({e.equation})" and e.kind != "secondary", e.quantity
+        elif e.kind == "secondary":
+            assert e.quoted_from.strip() and e.quoted_from not in e.where, e.quantity
+        else:
+            assert re.fullmatch(r"(?:Table \d+|Eq\. \(?[\w.]+\)?|\([\w.]+\))", e.where), (e.equation, e.where)
+
+
+def test_secondary_entries_say_so_where_the_report_prints_them():
+    from thinlayer.export._errata_section import _heading
+
+    hayes = errata.get("Hayes 1972")
+    assert len(hayes) == 4
+    for e in hayes:
+        assert e.kind == "secondary" and "as quoted in" in e.quantity and "secondary source" in _heading(e)
+        assert "Table 1" not in e.where  # the table itself was not read: no claim about it
+        assert e.quoted_from.split(",")[0] in e.quantity and "file" in e.quoted_from
+
+
+def test_every_entry_says_what_it_concerns():
+    for e in errata.ENTRIES:
+        c = e.concerns
+        assert c.equations and all(c.equations), e.quantity
+    with pytest.raises(ValueError, match="punch"):
+        errata.Concern(("1.1",), ("cylinder",))
+
+
+def test_concern_rules_select_and_refuse():
+    ellipse = errata.Concern(("3.1",), ("elliptic paraboloid",))
+    assert ellipse.selects(["3.1"], ["smooth", "elliptic paraboloid"], ["compressible"])
+    assert not ellipse.selects(["3.1"], ["smooth", "sphere"], ["compressible"])  # the punch
+    assert not ellipse.selects(["2.21"], ["elliptic paraboloid"], ["compressible"])  # the equations
+    moments = errata.Concern(("2.21",), layers=("compressible",))
+    assert not moments.selects(["2.21"], ["sphere"], ["incompressible"])  # the layer
+    assert {e.equation for e in errata.select(["F.1"], ["flat"], ["compressible"])} == {"Hayes 1972"}

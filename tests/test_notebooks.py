@@ -167,5 +167,5 @@ def test_results_render_as_latex_in_jupyter(monkeypatch):
     assert data["text/plain"].startswith("KernelCoefficients of BondedLayer(nu=3/10), n <= 1")
     assert "layer=BondedLayer" not in data["text/plain"]
     text = nb.cells[1].outputs[0]["text"]
-    assert text.startswith("Punch (paraboloid of revolution): Phi(x_1, x_2) = x_1**2/2 + x_2**2/2   (1.1)")
+    assert text.startswith("Punch (paraboloid of revolution): Φ(x₁, x₂) = x₁²/2 + x₂²/2   (1.1)")
 

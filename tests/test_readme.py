@@ -1,7 +1,12 @@
 """Every code block of the README runs: Python blocks are executed, shell blocks run line by line.
 
 Two lines are not run here, each for a stated reason: the README's test command (``python3 -m pytest``,
-this very suite; CI runs it) and the full benchmark table (minutes; run with ``THINLAYER_SLOW=1``).
+this very suite; CI runs it, and ``test_ci_runs_the_readme_test_command`` checks that it is the same command) and
+the full benchmark table (minutes; run with ``THINLAYER_SLOW=1``).
+A ``thinlayer ...`` command runs in this process through ``thinlayer.export.cli.main(argv)``, the function the
+``thinlayer`` script calls (the installed script itself runs in tests/export/test_wheel.py, ``python -m thinlayer``
+in tests/export/test_cli_errors.py): no interpreter start per line, and the per-process caches (h*, the
+Wiener-Hopf tables) are shared with the report tests of the same xdist group.
 A ``text`` block is a picture of the source tree and is compared with the tree instead.
 """
 from __future__ import annotations
@@ -55,27 +60,50 @@ def _why_not_run(line: str) -> str | None:
     return None
 
 
-@pytest.mark.parametrize("line", _shell_lines())
-def test_shell_line_runs(line, tmp_path):
+def _params() -> list:
+    """The shell lines; a ``report`` line runs in the worker of the report tests (their caches are warm there)."""
+    return [pytest.param(line, marks=[pytest.mark.xdist_group("catalogue-reports")] if " report " in line else [])
+            for line in _shell_lines()]
+
+
+@pytest.mark.parametrize("line", _params())
+def test_shell_line_runs(line, tmp_path, monkeypatch, capsys):
     reason = _why_not_run(line)
     if reason:
         pytest.skip(reason)
+    from thinlayer.export.cli import main
+
     # a copy of what the commands read (derivation files, benchmarks), so outputs land in tmp_path
     for folder in ("derivations", "benchmarks"):
         shutil.copytree(ROOT / folder, tmp_path / folder)
+    monkeypatch.chdir(tmp_path)
     env = dict(os.environ)
     for part in line.split("&&"):
         argv = shlex.split(part)
         if argv[:4] == ["python3", "-m", "pip", "install"]:
             continue  # the package is installed already (CI installs it with the test extra)
-        if argv[0] == "thinlayer":
-            argv = [sys.executable, "-m", "thinlayer", *argv[1:]]
-        elif argv[0] == "python3":
-            argv[0] = sys.executable
         if "--pdf" in argv and shutil.which("pdflatex") is None and shutil.which("latexmk") is None:
             argv.remove("--pdf")
-        res = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600)
+        if argv[0] == "thinlayer":
+            code = main(argv[1:])
+            out = capsys.readouterr()
+            assert code == 0, f"{line!r} failed ({code}):\n{out.out[-2000:]}\n{out.err[-2000:]}"
+            continue
+        if argv[0] == "python3":
+            argv[0] = sys.executable
+        res = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600,
+                             stdin=subprocess.DEVNULL)
         assert res.returncode == 0, f"{line!r} failed ({res.returncode}):\n{res.stdout[-2000:]}\n{res.stderr[-2000:]}"
+
+
+def test_ci_runs_the_readme_test_command():
+    """.ci/run runs exactly the README's test command (the line with ``-m pytest``), nothing else of pytest."""
+    (readme_cmd,) = [ln for ln in _shell_lines() if "-m pytest" in ln]
+    test_cmd = readme_cmd.split("&&")[-1].strip()
+    ci = [ln.strip() for ln in (ROOT / ".ci" / "run").read_text().splitlines()
+          if ln.strip() and not ln.lstrip().startswith("#")]
+    assert [ln for ln in ci if "pytest" in ln and "pip install" not in ln] == [test_cmd]
+    assert "-n 2" in test_cmd  # two workers (pytest-xdist, in the test extra): the suite's time on two cores
 
 
 def test_tree_picture_matches_the_package():

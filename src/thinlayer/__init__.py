@@ -101,8 +101,34 @@ _MOVED = {
 }
 
 
+def _version() -> str:
+    """The installed distribution's version; from ``pyproject.toml`` beside the sources when not installed."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("thinlayer")
+    except PackageNotFoundError:
+        from pathlib import Path
+
+        pyproject = Path(__file__).resolve().parents[2] / "pyproject.toml"
+        try:
+            try:
+                import tomllib
+            except ModuleNotFoundError:  # Python 3.10
+                import tomli as tomllib
+            return str(tomllib.loads(pyproject.read_text())["project"]["version"])
+        except (OSError, KeyError, ValueError, ModuleNotFoundError):
+            return "0+unknown"
+
+
 def __getattr__(name: str) -> Any:
-    """A public name, imported on first use; a name moved out of ``__all__``, with a DeprecationWarning."""
+    """A public name, imported on first use; a name moved out of ``__all__``, with a DeprecationWarning.
+
+    ``__version__`` is read on first use too (:func:`importlib.metadata.version`), not at import.
+    """
+    if name == "__version__":
+        value = globals()["__version__"] = _version()
+        return value
     if name in _PUBLIC:
         value = getattr(importlib.import_module(_PUBLIC[name]), name)
     elif name in _MODULES:
@@ -120,4 +146,4 @@ def __getattr__(name: str) -> Any:
 
 def __dir__() -> list[str]:
     """The current names only (loaded or not): the deprecated aliases are not advertised."""
-    return sorted(set(globals()) | set(__all__))
+    return sorted(set(globals()) | set(__all__) | {"__version__"})

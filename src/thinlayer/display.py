@@ -5,9 +5,11 @@ nothing else:
 
 * ``_repr_latex_()`` -- Jupyter (and nbconvert) render the object's own ``latex()`` as one
   display block, each line tagged with the paper's equation number;
-* ``__str__()`` -- ``print(result)`` gives a few lines of plain text: what the object is, the
-  equations it reproduces and its main values (formulas in sympy's ``str`` form, numbers to 12
-  digits).  ``repr()`` is left alone: it stays the dataclass representation.
+* ``__str__()`` -- ``print(result)`` gives a few lines of text: what the object is, the
+  equations it reproduces and its main values (formulas in the normal form of :mod:`thinlayer.normal`
+  as Unicode maths, ``(1 - 2ν)/(2(1 - ν)²)``; numbers to 12 digits).  On a stream that cannot take
+  Unicode (``sys.stdout.encoding``) the text falls back to ASCII (:func:`thinlayer.normal.to_ascii`).
+  ``repr()`` is left alone: it stays the dataclass representation (or the first line of the text).
 
 Each class writes its own text in a ``text_lines()`` method and its own LaTeX in ``latex()``
 (the :class:`~thinlayer.results.Result` protocol); a class may override ``_display_tex()`` when
@@ -20,11 +22,11 @@ The coefficients (2.20), (4.2) of a layer with an exact Poisson ratio:
 >>> from thinlayer import BondedLayer, Punch, kernel_coefficients, inner_pressure
 >>> print(kernel_coefficients(BondedLayer("3/10"), 2))
 KernelCoefficients of BondedLayer(nu=3/10), n <= 2   (2.4), (2.20), (4.2)
-  A   = 20/49
-  m_1 = 1/14
-  m_2 = -53/490
-  M_1 = -1/14
-  M_2 = 111/980
+  𝒜  = 20/49
+  m₁ = 1/14
+  m₂ = -53/490
+  M₁ = -1/14
+  M₂ = 111/980
 
 What Jupyter receives for a punch (1.1), and the inner expansion (2.26) as text:
 
@@ -33,15 +35,18 @@ $$\begin{gather*}\Phi(x_1, x_2) = \frac{x_{1}^{2}}{2} + \frac{x_{2}^{2}}{2} \tag
 >>> ip = inner_pressure(BondedLayer("3/10"), Punch.paraboloid(R=1))
 >>> print(ip)
 InnerPressure: paraboloid of revolution on BondedLayer(nu=3/10), 2 terms (closed form (4.1))   (2.26)
-  Phi = x_1**2/2 + x_2**2/2
-  p_0 = 7*mu*(delta_0 - x_1**2/2 - x_2**2/2)/(2*H)
-  p_1 = -H*mu/2
+  Φ   = x₁²/2 + x₂²/2
+  p₀  = 7μ (2δ₀ - x₁² - x₂²)/(4H)
+  p₁  = -H μ/2
+  p₀* = -49ϑ (H*² Λ ξ₁² + H*² Λ ξ₂² - 2δ₀*)/(40H*)   (scaled, ξ = x/H*, 2.27)
+  p₁* = -7H* Λ ϑ/20   (scaled, ξ = x/H*, 4.1)
   arguments of lambdify(): (x_1, x_2, delta_0, H, mu)
 >>> print(BondedLayer(0.3), BondedLayer(), BondedLayer(parameter="kappa"))
 BondedLayer(nu=0.3) BondedLayer(nu) BondedLayer(kappa)
 """
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
@@ -50,6 +55,7 @@ import mpmath
 import sympy as sp
 
 from .errors import InputError
+from .normal import normal_text, to_ascii
 
 __all__ = ["RichDisplay", "Table", "display_math", "fmt", "latex_escape", "table"]
 
@@ -67,10 +73,14 @@ def display_math(tex: str) -> str:
 
 
 def fmt(x: Any, digits: int = 12) -> str:
-    """A number or a formula as short text: sympy ``str``; mpmath and floats to ``digits`` digits.
+    """A number or a formula as short text: the normal form (:func:`thinlayer.normal.normal_text`, Unicode
+    maths); mpmath and floats to ``digits`` digits.
 
     >>> fmt(sp.Rational(3, 10)), fmt(mpmath.mpf(2) / 3), fmt(0.1 + 0.2), fmt(sp.sqrt(2) / 2)
-    ('3/10', '0.666666666667', '0.3', 'sqrt(2)/2')
+    ('3/10', '0.666666666667', '0.3', '√2/2')
+    >>> nu = sp.Symbol("nu")
+    >>> fmt((sp.Rational(1, 2) - nu) / (1 - nu) ** 2)
+    '(1 - 2ν)/(2(1 - ν)²)'
     """
     if isinstance(x, (mpmath.mpf, mpmath.mpc)):
         return mpmath.nstr(x, digits)
@@ -79,8 +89,20 @@ def fmt(x: Any, digits: int = 12) -> str:
     if isinstance(x, sp.Float):
         return mpmath.nstr(mpmath.mpf(x), digits)
     if isinstance(x, sp.Basic):
-        return sp.sstr(x)
+        return normal_text(x, digits=digits)
     return str(x)
+
+
+def _unicode_ok(text: str) -> bool:
+    """Whether ``sys.stdout`` can take ``text`` (an unknown encoding, as in a StringIO, is taken as Unicode)."""
+    encoding = getattr(sys.stdout, "encoding", None)
+    if not encoding:
+        return True
+    try:
+        text.encode(encoding)
+    except (UnicodeEncodeError, LookupError):
+        return False
+    return True
 
 
 class RichDisplay:
@@ -90,33 +112,34 @@ class RichDisplay:
 
     Examples
     --------
-    Alexandrov's boundary layer for nu = 0 (A = 1/2, m_1 = 0), (3.23)-(3.25):
+    Alexandrov's boundary layer for nu = 0 (A = 1/2, m_1 = 0), (3.23)-(3.25), in the normal form of
+    :mod:`thinlayer.normal` (Unicode maths):
 
     >>> from thinlayer import BondedLayer, Punch, alexandrov_solution, ellipse_contour, force_law
     >>> print(alexandrov_solution(BondedLayer(0)))
-    AlexandrovSolution: Q(v) = v erf(sqrt(B (v - h))) + sqrt((v - h)/(pi B)) exp(-B (v - h)), v > h   (3.23)-(3.25)
+    AlexandrovSolution: Q(v) = v erf(√(B (v - h))) + √((v - h)/(π B)) exp(-B (v - h)), v > h   (3.23)-(3.25)
       B  = 1
       C  = 2
-      h* = -1/2 + sqrt(2)/2
+      h* = √2/2 - 1/2
 
     The contact ellipse (3.1) of R_1 = 4, R_2 = 1 at delta_0 = 1/2:
 
     >>> print(ellipse_contour(4, 1, sp.Rational(1, 2)))
-    EllipseContour: x_1**2/a**2 + x_2**2/b**2 = 1   (3.1)
-      a   = 2
-      b   = 1
-      e^2 = 3/4
-      area |omega_0| = 2*pi, perimeter |Gamma_0| = 8*elliptic_e(3/4)
+    EllipseContour: x₁²/a² + x₂²/b² = 1   (3.1)
+      a  = 2
+      b  = 1
+      e² = 3/4
+      area |ω₀| = 2π, perimeter |Γ₀| = 8E(√3/2)   (E(k): complete elliptic integral of the second kind, modulus k = e)
 
     For nu = 1/4 the coefficient m_1 vanishes, and with it the first correction of the force (1.8):
 
     >>> print(force_law(BondedLayer("1/4"), Punch.paraboloid()))
     ForceLaw: paraboloid of revolution on BondedLayer(nu=1/4), quadratic   (1.8), (3.25)
-      Phi = (x_1**2 + x_2**2)/(2*R)
-      P  = P0 + P1 + O(P0 (H/a)**3)
-      P0 = 3*pi*R*delta_0**2*mu/H
-      P1 = 0
-      |omega| = 2*pi*R*delta_0 - h* H (2*sqrt(2)*pi*sqrt(R)*sqrt(delta_0)) + O(|omega| (H/a)**2)
+      Φ  = (x₁² + x₂²)/(2R)
+      P  = P₀ + P₁ + O(P₀ (H/a)³)
+      P₀ = 3π R δ₀² μ/H
+      P₁ = 0
+      |ω| = 2π R δ₀ - h* H (2π √(2R δ₀)) + O(|ω| (H/a)²)
 
     A class without ``text_lines()`` prints its ``repr``; one without ``latex()`` has no LaTeX form:
 
@@ -150,7 +173,7 @@ class RichDisplay:
     def _latex(self, printer: Any = None) -> str:
         """``sympy.latex(result)``: the result's own LaTeX (sympy's printer hook)."""
         tex = self._display_tex()
-        return tex if tex is not None else r"	ext{" + latex_escape(str(self)) + "}"
+        return tex if tex is not None else r"\text{" + latex_escape(to_ascii(str(self))) + "}"
 
     def _display_tex(self) -> str | None:
         """The LaTeX Jupyter shows: ``latex()`` when the class has one, else None (plain text)."""
@@ -164,7 +187,10 @@ class RichDisplay:
 
     def __str__(self) -> str:
         lines = getattr(self, "text_lines", None)
-        return "\n".join(lines()) if callable(lines) else repr(self)
+        if not callable(lines):
+            return repr(self)
+        text = "\n".join(lines())
+        return text if _unicode_ok(text) else to_ascii(text)
 
 
 @dataclass(frozen=True)

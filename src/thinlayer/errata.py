@@ -11,19 +11,62 @@ disagrees with it.  ``tests/test_errata.py`` runs every check.
 """
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
 import sympy as sp
 
 from . import symbols as S
+from ._checks import InputError
 from .display import latex_escape
 from .parse import as_expr
+
+#: the layers an erratum can concern (see :class:`Concern`)
+LAYERS = ("compressible", "frictionless", "incompressible", "nearly incompressible")
+#: the punches an erratum can concern
+PUNCHES = ("smooth", "axisymmetric", "sphere", "elliptic paraboloid", "flat")
+
+
+@dataclass(frozen=True)
+class Concern:
+    """What an erratum concerns: a report carries the entry when it uses one of ``equations`` (displays or
+    cites it) for one of ``punches`` on one of ``layers``.
+
+    ``equations`` are equation numbers as the reports print them (the paper's ``"2.21"``, thinlayer's own
+    ``"F.1"`` or ``"T.7"``); ``punches`` names of :data:`PUNCHES` or ``"any"``; ``layers`` names of
+    :data:`LAYERS` (``"compressible"``: a layer with the paper's expansion, A > 0, bonded or frictionless
+    base) or ``"any"``.
+    """
+
+    equations: tuple[str, ...]
+    punches: tuple[str, ...] = ("any",)
+    layers: tuple[str, ...] = ("any",)
+
+    def __post_init__(self) -> None:
+        for p in self.punches:
+            if p != "any" and p not in PUNCHES:
+                raise InputError(f"punch {p!r}: expected 'any' or one of {PUNCHES}")
+        for la in self.layers:
+            if la != "any" and la not in LAYERS:
+                raise InputError(f"layer {la!r}: expected 'any' or one of {LAYERS}")
+
+    def selects(self, equations: Iterable[str], punches: Iterable[str], layers: Iterable[str]) -> bool:
+        """Whether a report that uses ``equations`` for ``punches`` on ``layers`` carries the entry."""
+        eqs, pun, lay = set(equations), set(punches), set(layers)
+        return (bool(eqs & set(self.equations)) and ("any" in self.punches or bool(pun & set(self.punches)))
+                and ("any" in self.layers or bool(lay & set(self.layers))))
 
 
 @dataclass(frozen=True)
 class Erratum:
-    """One misprint: equation number, printed and derived forms (LaTeX), evidence, and a check."""
+    """One misprint: where it is printed, the printed and derived forms (LaTeX), evidence, and a check.
+
+    ``source`` is the citation key (:mod:`thinlayer.references`) of the publication whose print the entry
+    is about, ``where`` the table or equation of that publication the printed value is quoted from
+    (``"(2.21)"``, ``"Table 1"``), and ``quoted_from`` a secondary source when the value was not read in the
+    publication itself (then ``kind`` is ``"secondary"``, and the entry stays so until checked against the
+    original).  ``concerns`` says which reports carry the entry.
+    """
 
     equation: str
     quantity: str
@@ -31,7 +74,12 @@ class Erratum:
     derived: str
     evidence: str
     check: Callable[[], bool] = field(compare=False, repr=False)
-    kind: str = "misprint"  # "misprint", "notation" or "ambiguous"
+    kind: str = "misprint"  # "misprint", "notation", "ambiguous", "published series", "secondary"
+    concerns: Concern = field(default=Concern(("",)), compare=False)
+    source: str = "argatov"
+    where: str = ""
+    quoted_from: str = ""
+    cites: tuple[str, ...] = ()
 
     def verify(self) -> bool:
         """Run the independent check; True when the derived form is confirmed and the print refuted."""
@@ -309,6 +357,10 @@ def _check_garcia_flat() -> bool:
             and abs(printed[1] - q * q) > 0.01)
 
 
+#: where the printed coefficients of the published series come from: thinlayer's own record, transcribed without
+#: the publication's equation number and not checked against the publication (a secondary source until it is)
+_RECORDED = "{}, transcribed in thinlayer without the equation number of the publication"
+
 ENTRIES: tuple[Erratum, ...] = (
     Erratum(
         "2.1", "sign of the surface displacement",
@@ -318,7 +370,7 @@ ENTRIES: tuple[Erratum, ...] = (
         r"$\mathcal{L} = 1$ the plus sign gives Boussinesq's $u_3 = \frac{1 - \nu}{2\pi\mu}\iint "
         r"\frac{p}{|x - y|}\,dy$ and (2.6) with its positive right side. The direct numerical solver "
         r"(thinlayer.numerics), built on the plus sign, satisfies (1.5) to $10^{-13}$.",
-        _check_2_1,
+        _check_2_1, concerns=Concern(("2.1", "2.3")), where="(2.1)", cites=("boussinesq1885",),
     ),
     Erratum(
         "2.10", "argument of the punch on the right-hand side",
@@ -326,7 +378,7 @@ ENTRIES: tuple[Erratum, ...] = (
         r"Substituting (1.2), (2.8) into the right side of (2.6) gives a function of $x = H_* \xi$, the "
         r"observation point; $\eta$ is the integration variable.",
         _check_2_10,
-        "notation",
+        "notation", concerns=Concern(("2.10",), ("smooth",), ("compressible",)), where="(2.10)",
     ),
     Erratum(
         "2.17", "exponent in the moment integral",
@@ -334,7 +386,7 @@ ENTRIES: tuple[Erratum, ...] = (
         r"Definition (2.15): the moment of order $\alpha$ has the weight $\xi_1^{\alpha_1} \xi_2^{\alpha_2}$; "
         r"with $\xi_j^{2j}$ every moment would be $\mu_{2,4}$.",
         _check_2_17,
-        "notation",
+        "notation", concerns=Concern(("2.17", "2.19", "2.21"), layers=("compressible",)), where="(2.17)",
     ),
     Erratum(
         "2.21", "even kernel moments",
@@ -346,7 +398,7 @@ ENTRIES: tuple[Erratum, ...] = (
         r"Only the derived form gives $\mu_\alpha/\alpha! = (-1)^n \pi^2 \mathcal{A} m_n C_n^k$, the weight "
         r"printed in (2.22). The two agree for $n \le 1$ and for $n = 2$, $k = 1$, so the misprint is visible "
         r"first in $\mu_{4,0}$.",
-        _check_2_21,
+        _check_2_21, concerns=Concern(("2.21",), layers=("compressible",)), where="(2.21)",
     ),
     Erratum(
         "2.30", r"sign of the first correction $p_1^*$",
@@ -357,20 +409,21 @@ ENTRIES: tuple[Erratum, ...] = (
         r"residual of order $\Lambda^{-4}$ with the derived sign and a non-zero one with the printed sign; the "
         r"moment expansion itself is checked numerically, and the sign of the resulting force correction "
         r"against a direct numerical solution of the contact problem.",
-        _check_2_30,
+        _check_2_30, concerns=Concern(("2.26", "2.30", "4.1"), ("smooth",), ("compressible",)), where="(2.30)",
     ),
     Erratum(
         "2.31", "sign of the correction term of the inner pressure",
         r"+\frac{2 m_1 H_*^2}{\Lambda^2 R^*}", r"-\frac{2 m_1 H_*^2}{\Lambda^2 R^*}",
         r"Follows from the corrected (2.30): $p^* = p_0^* + \Lambda^{-2} p_1^*$.",
-        _check_2_31,
+        _check_2_31, concerns=Concern(("2.26", "2.31"), ("elliptic paraboloid", "sphere"), ("compressible",)),
+        where="(2.31)",
     ),
     Erratum(
         "3.1", "semi-axis of the leading contact ellipse in scaled variables",
         r"\alpha^* = \frac{1}{H^*}\sqrt{2\delta_0^* R_1}", r"\alpha^* = \frac{1}{H_*}\sqrt{2\delta_0^* R_1^*}",
         r"Solving $\Phi^*(\xi_1, 0) = \delta_0^*$ with (2.13); with $R_1 = R_1^*/\varepsilon$ (1.2) the printed "
         r"form is off by $\varepsilon^{-1/2}$. (The dimensional semi-axis is $\sqrt{2 \delta_0 R_1}$.)",
-        _check_3_1,
+        _check_3_1, concerns=Concern(("3.1",), ("elliptic paraboloid",)), where="(3.1)",
     ),
     Erratum(
         "3.21", r"$m_1$ through the second derivative of $\mathcal{L}$",
@@ -381,7 +434,7 @@ ENTRIES: tuple[Erratum, ...] = (
         r"$3 m_1$; read as the second derivative of $\mathcal{L}(s)/s$ at 0 it is right. thinlayer uses (2.20) "
         r"directly. Both readings checked with sympy's limit at $\nu = 3/10$.",
         _check_3_21_m1,
-        "ambiguous",
+        "ambiguous", concerns=Concern(("3.21",), layers=("compressible",)), where="(3.21)", cites=("alexandrov",),
     ),
     Erratum(
         "3.21", r"Alexandrov's second condition on $B$ and $C$",
@@ -389,7 +442,8 @@ ENTRIES: tuple[Erratum, ...] = (
         r"With $B = \mathcal{A} C$ (3.20), $\sqrt{s^2 + B^2}/(s^2 + C) = \mathcal{A}\left(1 + "
         r"\left(\frac{1}{2B^2} - \frac{1}{C}\right) s^2 + \dots\right)$, so matching the $s^2$ term of (2.20) "
         r"gives $\frac{1}{2B^2} - \frac{1}{C} = m_1$.",
-        _check_3_21_alexandrov,
+        _check_3_21_alexandrov, concerns=Concern(("3.21",), layers=("compressible",)), where="(3.21)",
+        cites=("alexandrov",),
     ),
     Erratum(  # noqa: E501 (one formula or one table row)
         "4.1", r"undefined symbol $f^*$",
@@ -397,7 +451,7 @@ ENTRIES: tuple[Erratum, ...] = (
         r"$f^*$ is not defined; with $\varphi^*$ of (2.25) the closed form equals the recursion (2.27)--(2.28) "
         r"term by term (symbolic check on a non-symmetric quartic punch).",
         _check_4_1,
-        "notation",
+        "notation", concerns=Concern(("4.1",), layers=("compressible",)), where="(4.1)",
     ),
     Erratum(
         "Dimitriadis 2002",
@@ -413,7 +467,9 @@ ENTRIES: tuple[Erratum, ...] = (
         r"$\chi^4$ follow. Direct spectral solver at $\chi = 0.05$: $P/P_H$ minus the four derived terms is "
         r"$-9 \cdot 10^{-9}$ (the next terms), minus the four printed terms $+2.9 \cdot 10^{-4}$; at $\chi = 0.3$ the "
         r"printed series is 2.7 % low.",
-        _check_dimitriadis_bonded, "published series",
+        _check_dimitriadis_bonded, "secondary",
+        concerns=Concern(("T.7",), ("sphere",), ("incompressible",)), source="dimitriadis2002",
+        quoted_from=_RECORDED.format("thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES['dimitriadis2002-bonded']"),
     ),
     Erratum(
         "Dimitriadis 2002", r"thick-layer series of a sphere on a non-bonded (frictionless-base) layer, $\nu = 1/2$",
@@ -425,7 +481,9 @@ ENTRIES: tuple[Erratum, ...] = (
         r"the thick layer), so neither do $b_0 = 1.167577$ and the series; the printed $\alpha_0(\nu)$ varies by 33 % "
         r"between $\nu = 0$ and $\nu = 1/2$ and is 19 % off $b_0$ at $\nu = 1/2$. Direct solver at $\chi = 0.05$: the "
         r"derived four terms leave $-7 \cdot 10^{-8}$, the printed ones $-7.4 \cdot 10^{-3}$.",
-        _check_dimitriadis_nonbonded, "published series",
+        _check_dimitriadis_nonbonded, "secondary",
+        concerns=Concern(("T.7",), ("sphere",), ("frictionless",)), source="dimitriadis2002",
+        quoted_from=_RECORDED.format("thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES['dimitriadis2002-nonbonded']"),
     ),
     Erratum(
         "Dimitriadis 2002", r"fitted $\alpha_0(\nu)$, $\beta_0(\nu)$ of the bonded layer",
@@ -437,7 +495,10 @@ ENTRIES: tuple[Erratum, ...] = (
         r"$1.770217$); $\beta_0$ against $b_1/4$ is +36 %, +6.3 %, +5.2 % ($b_1/4 = 0.469695$, $0.627552$, "
         r"$0.957769$). The identification $\beta_0 = b_1/4$ is the one that makes the $\beta_0$ term of the printed "
         r"$\chi^3$ coefficient equal to the derived $-8 b_1/(15\pi)$.",
-        _check_dimitriadis_alpha_beta, "published series",
+        _check_dimitriadis_alpha_beta, "secondary",
+        concerns=Concern(("T.2",), layers=("compressible", "nearly incompressible", "incompressible")),
+        source="dimitriadis2002",
+        quoted_from=_RECORDED.format("the fitted formulas as thinlayer records them in this entry"),
     ),
     Erratum(
         "Garcia 2018", r"bottom-effect series of a paraboloid on a bonded layer, $\nu = 1/2$",
@@ -449,7 +510,9 @@ ENTRIES: tuple[Erratum, ...] = (
         r"$286 b_0^4/(9\pi^4) - 16 b_0 b_1/(5\pi^2)$: $1.0047$ exact, $0.945$ with their inputs, printed $0.755$. "
         r"Direct solver at $\chi = 0.1$: $P/P_H$ minus the derived four terms is $-9.6 \cdot 10^{-7}$ (the next "
         r"terms); with the printed $\chi^4$ coefficient instead, $-2.6 \cdot 10^{-5}$.",
-        _check_garcia_sphere, "published series",
+        _check_garcia_sphere, "secondary",
+        concerns=Concern(("T.7",), ("sphere",), ("incompressible",)), source="garcia2018",
+        quoted_from=_RECORDED.format("thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES['garcia2018-sphere']"),
     ),
     Erratum(
         "Garcia 2018", r"bottom-effect series of a flat punch (radius $a$) on a bonded layer, $\nu = 1/2$",
@@ -462,16 +525,19 @@ ENTRIES: tuple[Erratum, ...] = (
         r"$q = 2 b_0 a/(\pi h) = 1.1270\,a/h$ ($b_0 = 1.770217$ by quadrature), against the printed $1.133$ and "
         r"$1.283$ (from $\alpha_0 = -1.7795$). With $\alpha_0 = -1.7795$ and $\beta_0 = 1.0079$, (T.7) for the flat "
         r"punch gives exactly the printed $0.598$ and $-0.291$: the printed structure is right, its inputs are not.",
-        _check_garcia_flat, "published series",
+        _check_garcia_flat, "secondary",
+        concerns=Concern(("F.18",), ("flat",)), source="garcia2018",
+        quoted_from=_RECORDED.format("thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES['garcia2018-flat']"),
     ),
 )
 
 
 # --------------------------------------------------------------------------- published flat-punch tables
-#: Values attributed to Hayes, Keer, Herrmann & Mockros (1972), J. Biomech. 5:541-551, Table 1 (flat-ended
-#: punch, layer bonded to a rigid base, P = 4 mu a w0 kappa/(1 - nu)), as reproduced in code (the original table
-#: could not be accessed): (source, nu, ((a/h, printed, derived), ...)) for every value off by more than half a
-#: unit in its last printed digit; "derived" is the exact kappa of thinlayer.numerics.flat_punch, rounded.
+#: Values that code repositories attribute to Hayes, Keer, Herrmann & Mockros (1972), J. Biomech. 5:541-551, Table 1
+#: (flat-ended punch, layer bonded to a rigid base, P = 4 mu a w0 kappa/(1 - nu)), quoted from those repositories
+#: (a secondary source: the publication's table itself was not read): (source, nu, ((a/h, printed, derived), ...))
+#: for every value off by more than half a unit in its last printed digit; "derived" is the exact kappa of
+#: thinlayer.numerics.flat_punch, rounded.
 HAYES_1972_TABLES: tuple = (
     ("MohammadHosseinEbrahimi/Equilibrium-and-instantaneous-moduli, equilibrium_instantaneous.m", "0.3",
      (("0.4", "1.472", "1.4726"), ("0.6", "1.784", "1.7848"), ("0.8", "2.124", "2.1260"), ("1.0", "2.480", "2.4835"),
@@ -525,25 +591,33 @@ def _check_hayes(nu: str, rows: tuple) -> Callable[[], bool]:
 
 
 def _hayes_entry(source: str, nu: str, rows: tuple) -> Erratum:
+    """A secondary-source entry: values a repository attributes to Hayes et al. (1972), quoted from that repository.
+
+    The table of the publication itself was not read: the entry is titled and typed as a quotation from the
+    repository (``kind="secondary"``, ``quoted_from`` naming repository and file), not as an erratum of the
+    publication, and stays so until the values are checked against the original table.
+    """
     printed = r",\ ".join(rf"\kappa({a}) = {p}" for a, p, _ in rows)
     derived = r",\ ".join(rf"\kappa({a}) = {d}" for a, _, d in rows)
     worst = max(rows, key=lambda r: abs(float(r[1]) / float(r[2]) - 1))
     repo, path = source.split(", ")
-    owner, name = repo.split("/")
     deviation = 100 * (float(worst[1]) / float(worst[2]) - 1)
     return Erratum(
         "Hayes 1972",
-        f"flat-punch stiffness $\\kappa(a/h)$ of a bonded layer, $\\nu = {nu}$, Table 1 as reproduced by {owner}",
+        f"flat-punch stiffness $\\kappa(a/h)$ of a bonded layer, $\\nu = {nu}$, values attributed to Hayes et al. "
+        f"(1972) as quoted in {repo}",
         printed, derived,
-        f"Source: GitHub {owner} / {name}, file {path}. "
+        "The repository attributes the values to Table 1 of Hayes et al. (1972); the publication's own table was not "
+        "read, so the quoted column is what the repository prints. "
         "Exact $\\kappa$ from the Fredholm equation of the second kind (F.6)--(F.7) of thinlayer.numerics.flat_punch: "
         "the collocation solution with $n$ and $0.7n$ nodes agrees to $10^{-13}$ relative at every $a/h$ listed, the "
         "Nystrom route (no Bessel identity, about $4a/h + 60$ nodes) and the Galerkin solver of the direct contact "
         "problem in the pressure basis agree with it to $10^{-12}$ (thinlayer's tests of the flat punch). Every "
-        f"printed value is low, the deviation growing with $a/h$: ${deviation:+.2f}$ % "
-        f"at $a/h = {worst[0]}$. The printed values at $a/h = 0.2$ agree to their digits, so the normalisation is the "
-        "same; the original table could not be accessed, and the values are quoted as the source attributes them.",
-        _check_hayes(nu, rows), "published table",
+        f"quoted value is low, the deviation growing with $a/h$: ${deviation:+.2f}$ % "
+        f"at $a/h = {worst[0]}$. The quoted values at $a/h = 0.2$ agree to their digits, so the normalisation is the "
+        "same.",
+        _check_hayes(nu, rows), "secondary", concerns=Concern(("F.1", "F.7"), ("flat",)), source="hayes1972",
+        quoted_from=f"{repo}, file {path}",
     )
 
 
@@ -569,3 +643,15 @@ def latex_table() -> str:
     """The registry as a LaTeX ``longtable`` body for the report."""
     rows = [rf"({e.equation}) & {e.kind}: {e.quantity} & ${e.printed}$ & ${e.derived}$ \\" for e in ENTRIES]
     return "\n".join(rows)
+
+
+def select(equations: Iterable[str], punches: Iterable[str], layers: Iterable[str]) -> tuple[Erratum, ...]:
+    """The entries a report carries that uses ``equations`` for ``punches`` on ``layers`` (:meth:`Concern.selects`).
+
+    >>> [e.equation for e in select(["3.1"], ["smooth", "elliptic paraboloid"], ["compressible"])]
+    ['3.1']
+    >>> select(["2.21"], ["flat"], ["incompressible"])
+    ()
+    """
+    eqs, pun, lay = tuple(equations), tuple(punches), tuple(layers)
+    return tuple(e for e in ENTRIES if e.concerns.selects(eqs, pun, lay))

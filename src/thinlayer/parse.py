@@ -464,6 +464,7 @@ def sympy_value(value: Any, what: str, *, symbol: bool = False) -> sp.Basic:
     return as_expr(value, what)
 
 
+@boundary
 def as_expr(value: Any, what: str = "value") -> sp.Expr:
     """A sympy object from a number or a sympy object; a string goes through :func:`parse_expression`.
 

@@ -21,6 +21,7 @@ import sympy as sp
 from . import symbols as S
 from .display import RichDisplay, fmt
 from .errors import InputError, InputTypeError, WorkLimitError, boundary_methods
+from .normal import normal_latex
 from .parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, expression_cost, parse_expression, sympy_value
 from .symbols import laplacian
 
@@ -261,7 +262,7 @@ class Punch(RichDisplay):
         return sp.expand(S.Lambda * e)
 
     def latex(self) -> str:
-        return rf"\Phi(x_1, x_2) = {sp.latex(self.expr)} \tag{{1.1}}"
+        return rf"\Phi(x_1, x_2) = {normal_latex(self.expr)} \tag{{1.1}}"
 
     def lambdify(self, args=None, backend: str = "numpy"):
         """Numeric Phi; default argument order ``(x1, x2, *parameters)``."""
@@ -277,7 +278,7 @@ class Punch(RichDisplay):
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         pars = ", ".join(q.name for q in self.parameters) or "none"
-        return [f"Punch ({self.name}): Phi(x_1, x_2) = {fmt(self.expr)}   (1.1)",
+        return [f"Punch ({self.name}): Φ(x₁, x₂) = {fmt(self.expr)}   (1.1)",
                 f"  degree {self.degree}, parameters: {pars}"]
 
 

@@ -18,6 +18,7 @@ from typing import Any, Protocol, runtime_checkable
 import sympy as sp
 
 from .errors import InputError, InputTypeError, boundary
+from .normal import normal_latex
 
 BACKENDS = ("numpy", "mpmath", "math", "sympy")
 
@@ -137,12 +138,15 @@ class Equation:
     number: str
 
     def latex(self) -> str:
-        return rf"{sp.latex(self.lhs)} = {sp.latex(self.rhs)} \tag{{{self.number}}}"
+        return rf"{normal_latex(self.lhs)} = {normal_latex(self.rhs)} \tag{{{self.number}}}"
 
 
 def latex_equation(lhs: sp.Expr | str, rhs: sp.Expr | str, number: str | None) -> str:
-    r"""LaTeX of ``lhs = rhs`` with an optional ``\tag`` of the paper's equation number."""
-    l = lhs if isinstance(lhs, str) else sp.latex(lhs)
-    r = rhs if isinstance(rhs, str) else sp.latex(rhs)
+    r"""LaTeX of ``lhs = rhs`` with an optional ``\tag`` of the paper's equation number.
+
+    A formula (not a string) is printed in the normal form (:func:`thinlayer.normal.normal_latex`).
+    """
+    l = lhs if isinstance(lhs, str) else normal_latex(lhs)
+    r = rhs if isinstance(rhs, str) else normal_latex(rhs)
     tag = rf" \tag{{{number}}}" if number else ""
     return f"{l} = {r}{tag}"

@@ -24,10 +24,10 @@ from thinlayer import symbols as S
 from thinlayer.asymptotics._contour_region import Poly2 as _Poly2
 from thinlayer.asymptotics._contour_region import as_polynomial as _as_polynomial
 from thinlayer.asymptotics._contour_region import region_curve as _region_curve
+from thinlayer.asymptotics._contour_spectral import nodes_by_ode as _nodes_by_ode
+from thinlayer.asymptotics._contour_spectral import nodes_by_reference as _nodes_by_reference
 from thinlayer.asymptotics.contour import (
     ContactContour,
-    _nodes_by_ode,
-    _nodes_by_reference,
     contact_contour,
     ellipse_contour,
 )

@@ -219,7 +219,7 @@ def test_generated_numpy_module_and_c(tmp_path):
     src.write_text(any_thickness_source(nu, language="c"))
     lib = tmp_path / "at_law.so"
     subprocess.run([cc, "-std=c99", "-O2", "-Wall", "-Werror", "-shared", "-fPIC", str(src), "-o", str(lib), "-lm"],
-                   check=True, capture_output=True)
+                   check=True, capture_output=True, stdin=subprocess.DEVNULL)
     so = ctypes.CDLL(str(lib))
     for name in ("thinlayer_any_thickness_force", "thinlayer_any_thickness_radius"):
         getattr(so, name).restype = ctypes.c_double

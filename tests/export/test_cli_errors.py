@@ -112,13 +112,15 @@ def test_keyboard_interrupt_is_one_line_and_130(monkeypatch, capsys):
 
 def _run(args: list[str], **kw) -> subprocess.CompletedProcess:
     env = {**os.environ, "PYTHONPATH": SRC}
+    if "input" not in kw:  # the child never waits on the terminal, however pytest was launched
+        kw["stdin"] = subprocess.DEVNULL
     return subprocess.run([sys.executable, "-m", "thinlayer", *args], capture_output=True, env=env, **kw)
 
 
 def test_closed_pipe_ends_quietly():
     env = {**os.environ, "PYTHONPATH": SRC}
     p = subprocess.Popen([sys.executable, "-m", "thinlayer", "errata", "--json"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, env=env)
+                         stderr=subprocess.PIPE, env=env, stdin=subprocess.DEVNULL)
     first = p.stdout.read(10)
     p.stdout.close()  # the reader goes away, like `| head -c 10`
     err = p.stderr.read().decode()

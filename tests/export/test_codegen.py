@@ -189,7 +189,7 @@ def run_c(gc, points, tmp: Path) -> np.ndarray:
     lib = tmp / f"lib{gc.function_name}.so"
     flags = ["-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-O2", "-fPIC", "-shared"]
     subprocess.run([gcc, *flags, "-o", str(lib), str(tmp / gc.main_file), "-lm"],
-                   check=True, capture_output=True, text=True)
+                   check=True, capture_output=True, text=True, stdin=subprocess.DEVNULL)
     f = getattr(ctypes.CDLL(str(lib)), gc.function_name)
     nin, nout = len(gc.arguments), len(gc.outputs)
     if nout == 1:
@@ -232,7 +232,7 @@ def run_fortran(gc, points, tmp: Path) -> np.ndarray:
     exe = tmp / "driver_f"
     subprocess.run([gfortran, "-std=f2008", "-Wall", "-Werror", "-O2", "-o", str(exe),
                     str(tmp / gc.main_file), str(tmp / "driver.f90")],
-                   check=True, capture_output=True, text=True, cwd=tmp)
+                   check=True, capture_output=True, text=True, cwd=tmp, stdin=subprocess.DEVNULL)
     out = subprocess.run([str(exe)], input="\n".join(map(_fmt, points)) + "\n", check=True,
                          capture_output=True, text=True).stdout
     return np.array([[float(t) for t in line.split()] for line in out.splitlines()])
@@ -262,7 +262,7 @@ def run_rust(gc, points, tmp: Path) -> np.ndarray:
     (tmp / "main.rs").write_text(main)
     exe = tmp / "driver_rs"
     subprocess.run([rustc, "--edition", "2021", "-D", "warnings", "-o", str(exe), str(tmp / "main.rs")],
-                   check=True, capture_output=True, text=True, cwd=tmp)
+                   check=True, capture_output=True, text=True, cwd=tmp, stdin=subprocess.DEVNULL)
     out = subprocess.run([str(exe)], input="\n".join(map(_fmt, points)) + "\n", check=True,
                          capture_output=True, text=True).stdout
     return np.array([[float(t) for t in line.split()] for line in out.splitlines()])
@@ -333,7 +333,7 @@ def run_python_module(gc, points, tmp: Path) -> tuple[np.ndarray, str]:
                      and sys.modules[m] is not None))
         """)
     proc = subprocess.run([sys.executable, "-c", script], check=False, capture_output=True, text=True,
-                          cwd=tmp)
+                          cwd=tmp, stdin=subprocess.DEVNULL)
     assert proc.returncode == 0, proc.stderr + "\n--- generated ---\n" + gc.source
     return np.load(tmp / "out.npy"), proc.stdout.strip()
 
@@ -428,7 +428,8 @@ def test_octave_output_runs_if_octave_is_installed(tmp_path):
         outs = ", ".join(f"o{k}" for k in range(len(gc.outputs)))
         script = f"[{outs}] = {gc.function_name}({cols}); printf('%.17g\\n', [{outs}]');"
         proc = subprocess.run([octave, "--no-gui", "--no-window-system", "-q", "--eval", script], check=False,
-                              cwd=tmp_path, capture_output=True, text=True, timeout=120)
+                              cwd=tmp_path, capture_output=True, text=True, timeout=120,
+                              stdin=subprocess.DEVNULL)
         assert proc.returncode == 0, proc.stderr
         got = np.array([float(t) for t in proc.stdout.split()]).reshape(len(pts), len(gc.outputs))
         ref = Case(case.key, case.result, case.args, case.exprs, pts, case.kwargs).reference()

@@ -92,7 +92,8 @@ def test_any_thickness_table_python_and_c_against_the_exact_solution(tmp_path):
     (tmp_path / "k.c").write_text(flat_punch_source(layer, "c"))
     lib = tmp_path / "libk.so"
     subprocess.run([gcc, "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-O2", "-fPIC", "-shared", "-o",
-                    str(lib), str(tmp_path / "k.c"), "-lm"], check=True, capture_output=True)
+                    str(lib), str(tmp_path / "k.c"), "-lm"], check=True, capture_output=True,
+                   stdin=subprocess.DEVNULL)
     f = ctypes.CDLL(str(lib)).thinlayer_flat_punch_kappa
     f.restype, f.argtypes = ctypes.c_double, [ctypes.c_double]
     np.testing.assert_allclose([f(float(x)) for x in mids], ns["kappa"](mids), rtol=1e-14)

@@ -17,21 +17,24 @@ def test_default_derivation_report(tmp_path):
         assert rf"\tag{{{tag}}}" in text
     from thinlayer import errata
 
-    assert "Errata" in text and text.count(r"\paragraph{(") == len(errata.ENTRIES)
+    # issue 28: its own errata, not the registry: the eight entries of the seed paper that concern the quartic
+    # punch's equations (test_report_quality.EXPECTED_ERRATA spells them out), none of the other publications
+    assert "Errata" in text and text.count(r"\paragraph{(") == 8 < len(errata.ENTRIES)
+    assert text.count(r"\paragraph{") == 8
 
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="needs pdflatex (installed by .ci/run)")
 @pytest.mark.parametrize("path", sorted((ROOT / "derivations").glob("*.toml")), ids=lambda p: p.stem)
-def test_every_shipped_derivation_compiles_without_overfull_lines(tmp_path, path):
+def test_every_shipped_derivation_compiles_without_overfull_lines(catalogue_report, path):
     from thinlayer.export.report import overfull_boxes
 
     der = load_derivation(path)
-    tex = write_report(der, tmp_path, pdf=True)
+    tex = catalogue_report(path.stem)  # write_report(der, <a folder>, pdf=True), shared with test_report_quality
     assert tex.with_suffix(".pdf").stat().st_size > 10_000
     log = tex.with_suffix(".log").read_text()
     assert overfull_boxes(log) == [], f"{path.name}: lines run off the page"
     if der.validation is not None:  # the validation plots are included in the report
-        figs = sorted(p.name for p in (tmp_path / f"{der.name}-figures").glob("*.pdf"))
+        figs = sorted(p.name for p in (tex.parent / f"{der.name}-figures").glob("*.pdf"))
         assert figs and all(f"{der.name}-figures/{f}" in tex.read_text() for f in figs)
 
 
@@ -112,8 +115,8 @@ def test_report_contains_boundary_layer_force_law_and_solution():
     assert f"= {float_latex(sol.force)}" in text and f"{sol.force:.6g}" in text
 
 
-def test_report_contains_validation_table():
+def test_report_contains_validation_table(sphere_latex):
     der = load_derivation(ROOT / "derivations" / "sphere.toml")
     assert der.validation == {"nu": [0.3], "H_over_a": [0.1, 0.05, 0.025], "shapes": ["sphere"]}
-    text = report_latex(der)
+    text = sphere_latex  # report_latex(der), shared with test_derivation_models
     assert "Validation against the direct numerical solution" in text and "tabular" in text

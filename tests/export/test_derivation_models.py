@@ -75,8 +75,8 @@ def test_contact_elastic_constants_and_model(tmp_path):
     assert "Model: compressible" in text
 
 
-def test_two_term_section_for_a_compressible_sphere():
-    text = report_latex(load_derivation(ROOT / "derivations" / "sphere.toml"))
+def test_two_term_section_for_a_compressible_sphere(sphere_latex):
+    text = sphere_latex  # report_latex(load_derivation(ROOT / "derivations" / "sphere.toml")), built once
     assert "the two-term model" in text and "(I.10)" in text and r"\tag{I.11}" in text
 
 

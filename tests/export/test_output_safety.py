@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
+from children import CHILD
 
 from thinlayer.export.derivation import load_derivation, report_latex, write_report
 from thinlayer.export.report import ReportTextError, check_symbol_names, compile_pdf
@@ -38,7 +39,9 @@ def test_title_injection_is_escaped(tmp_path, title):
     body = line[len(r"\title{"):-1]
     # independent check: no LaTeX-active character survives unescaped in the title
     stripped = body
-    for esc in (r"\textbackslash{}", r"\textasciicircum{}", r"\{", r"\}", r"\$", r"\%", r"\_", r"\&", r"\#"):
+    # (and the break points thinlayer puts into a long run without a space, issue 23)
+    for esc in (r"\textbackslash{}", r"\textasciicircum{}", r"\{", r"\}", r"\$", r"\%", r"\_", r"\&", r"\#",
+                r"\allowbreak{}"):
         stripped = stripped.replace(esc, "")
     assert not set(stripped) & set("\\{}$%^&#_"), line
 
@@ -203,19 +206,29 @@ def _wait_for(cond, timeout=60.0) -> bool:
     return False
 
 
+def _compiling(out: Path):
+    """Whether a report named ``inj`` is being compiled in its private folder inside ``out``."""
+    return lambda: any(out.glob(".inj.pdf.thinlayer-*.tmp/inj.tex"))
+
+
+def _temporaries(folder: Path) -> list[str]:
+    return sorted(p.name for p in folder.rglob("*thinlayer-*") if p.name.endswith(".tmp")) if folder.exists() else []
+
+
 @pytest.mark.parametrize("sig, code", [(signal.SIGTERM, 143), (signal.SIGINT, 130)])
 def test_signal_mid_compile_removes_temporary_folder(tmp_path, sig, code):
     env = _fake_tex(tmp_path)
     root = Path(env["TMPDIR"])
     f = _derivation(tmp_path, "t")
     p = subprocess.Popen([sys.executable, "-m", "thinlayer", "report", str(f), "--out", str(tmp_path / "o"), "--pdf"],
-                         env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    assert _wait_for(lambda: any(root.glob("thinlayer-tex-*/inj.tex"))), "the compile never started"
+                         env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, **CHILD)
+    assert _wait_for(_compiling(tmp_path / "o")), "the compile never started"
     p.send_signal(sig)
     _, err = p.communicate(timeout=60)
     assert p.returncode == code, err
     assert b"Traceback" not in err and len(err.decode().strip().splitlines()) == 1
     assert list(root.iterdir()) == []  # the temporary folder is gone
+    assert _temporaries(tmp_path / "o") == []
     assert not (tmp_path / "o" / "inj.pdf").exists() and not (tmp_path / "o" / ".inj.lock").exists()
 
 
@@ -224,10 +237,10 @@ def test_concurrent_runs_of_one_name_cannot_mix(tmp_path):
     root = Path(env["TMPDIR"])
     f = _derivation(tmp_path, "t")
     argv = [sys.executable, "-m", "thinlayer", "report", str(f), "--out", str(tmp_path / "o"), "--pdf"]
-    first = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    first = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, **CHILD)
     try:
-        assert _wait_for(lambda: any(root.glob("thinlayer-tex-*/inj.tex")))
-        second = subprocess.run(argv, env=env, capture_output=True, timeout=120)
+        assert _wait_for(_compiling(tmp_path / "o"))
+        second = subprocess.run(argv, env=env, capture_output=True, timeout=120, stdin=subprocess.DEVNULL)
         err = second.stderr.decode()
         assert second.returncode == 1 and "another thinlayer run is writing" in err
         assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
@@ -235,3 +248,4 @@ def test_concurrent_runs_of_one_name_cannot_mix(tmp_path):
         first.terminate()
         first.communicate(timeout=60)
     assert list(root.iterdir()) == []
+    assert _temporaries(tmp_path / "o") == []

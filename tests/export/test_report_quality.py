@@ -65,12 +65,101 @@ def _check_typeset(tex: str, where: str) -> None:
     assert not nested, f"{where}: a fraction inside a fraction: {nested[0][:200]}"
 
 
+#: the errata each shipped report carries, spelled out from the concern rules of thinlayer.errata (issue 28 item 1):
+#: (2.1) the sign of u_3 under the kernel (2.3): every report; (2.17), (2.21) the kernel moments: every report
+#: with the moment section (a layer with A > 0); (2.10), (2.30), (4.1) the inner expansion of a smooth punch on
+#: such a layer ((4.1) also where the flat section cites it); (2.31) the elliptic paraboloid's (and the
+#: sphere's) inner pressure; (3.1) the ellipse only; (3.21) both: Alexandrov's constants of the boundary layer;
+#: the thick-layer series and tables: the report of the punch and layer they are about (the flat punch: Hayes'
+#: four tables, Garcia's flat series (F.18), Dimitriadis' fit of b_0, b_1 (T.2)); the sphere's thick series
+#: (T.7) in no report (none shows (T.7)), only in the errata document.
+_COMPRESSIBLE = {"2.1", "2.10", "2.17", "2.21", "2.30", "3.21 m_1", "3.21 Alexandrov", "4.1"}
+EXPECTED_ERRATA = {
+    "elliptic_paraboloid": _COMPRESSIBLE | {"2.31", "3.1"},
+    "sphere": _COMPRESSIBLE | {"2.31"},
+    "frictionless_sphere": _COMPRESSIBLE | {"2.31"},
+    "fourth_degree_paraboloid": _COMPRESSIBLE,
+    "quartic_punch": _COMPRESSIBLE,
+    "incompressible_sphere": {"2.1"},
+    "flat_punch": {"2.1", "2.17", "2.21", "4.1", "Dimitriadis 2002 alpha_0", "Garcia 2018 flat",
+                   "Hayes 1972 MohammadHosseinEbrahimi", "Hayes 1972 Corneliox", "Hayes 1972 ImanKafian",
+                   "Hayes 1972 elkadi"},
+}
+
+
+def erratum_name(e) -> str:
+    """A short name of a registry entry: its equation, and a word of its quantity where two share one."""
+    if e.equation == "3.21":
+        return "3.21 m_1" if "m_1" in e.quantity else "3.21 Alexandrov"
+    if e.equation.startswith("Hayes"):
+        return f"Hayes 1972 {e.quoted_from.split('/')[0]}"
+    if e.equation.startswith("Dimitriadis"):
+        return "Dimitriadis 2002 " + ("alpha_0" if "fitted" in e.quantity else
+                                      "bonded" if "non-bonded" not in e.quantity else "non-bonded")
+    if e.equation.startswith("Garcia"):
+        return "Garcia 2018 " + ("flat" if "flat" in e.quantity else "sphere")
+    return e.equation
+
+
+def _errata_in(tex: str) -> set[str]:
+    """The names of the entries the report's section Errata prints (each heading names its entry)."""
+    from thinlayer import errata
+    from thinlayer.export._errata_section import _heading
+
+    section = tex.split(r"\section{Errata}", 1)[1].split(r"\begin{thebibliography}", 1)[0]
+    return {erratum_name(e) for e in errata.ENTRIES if rf"\paragraph{{{_heading(e)}.}}" in section}
+
+
+#: thinlayer's own equation families: within a section their displayed numbers run without a gap
+FAMILIES = ("F", "I", "SO", "T")
+
+
+def tag_gaps(tex: str) -> list[str]:
+    """Sections whose displayed tags of a family of :data:`FAMILIES` skip a number (ranges expanded)."""
+    from thinlayer.export._errata_section import equations_used
+
+    bad = []
+    for sec in re.split(r"\\section\{", tex)[1:]:
+        title = sec.split("}", 1)[0]
+        tags = equations_used(" ".join(re.findall(r"\\tag\{[^{}]*\}", sec)))
+        for fam in FAMILIES:
+            nums = sorted({int(t.split(".")[1]) for t in tags if t.split(".")[0] == fam})
+            if nums and nums != list(range(nums[0], nums[-1] + 1)):
+                bad.append(f"{title}: ({fam}.n) displayed {nums}")
+    return bad
+
+
+def check_layout(tex: str, where: str) -> None:
+    """Floats stay after their headings ([H]); tables never split into fragments (a float or a parbox is one
+    box; a long table is a longtable with its header repeated); no install hint on the page."""
+    assert not re.search(r"\\begin\{(?:table|figure)\}(?!\[H\])", tex), f"{where}: a float that may move"
+    for m in re.finditer(r"\\begin\{tabular\}", tex):
+        before = tex[:m.start()]
+        open_float = before.rfind(r"\begin{table}") > before.rfind(r"\end{table}")
+        open_box = before.rfind(r"\parbox{") > before.rfind(r"\end{tabular}")
+        assert open_float or open_box, f"{where}: a tabular outside a float or a box: {tex[m.start():m.start() + 80]}"
+    for m in re.finditer(r"\\begin\{longtable\}", tex):
+        body = tex[m.start():tex.index(r"\end{longtable}", m.start())]
+        assert r"\endhead" in body and "continued" in body, f"{where}: a longtable without a repeated header"
+    assert "pip install" not in tex, f"{where}: an install hint on the page"
+    assert tag_gaps(tex) == [], where
+
+
 @pytest.mark.parametrize("name", CATALOGUE)
-def test_catalogue_reports_are_typeset(name, tmp_path):
-    # issue 17 item 3: every derivation of the catalogue, the .tex as the command line writes it (figures too)
-    tex = write_report(load_derivation(ROOT / "derivations" / f"{name}.toml"), tmp_path, pdf=False).read_text()
+def test_catalogue_reports_are_typeset(name, catalogue_report):
+    # issue 17 item 3: every derivation of the catalogue, the .tex as the command line writes it (figures too);
+    # write_report(load_derivation(derivations/<name>.toml), ...) built once, shared with test_derivation.py
+    tex = catalogue_report(name).read_text()
     _check_typeset(tex, name)
     assert PAPER in tex  # the paper is cited by its title
+    # issue 28: its own errata (the set the concern rules select) and a bibliography of exactly what it cites
+    assert _errata_in(tex) == EXPECTED_ERRATA[name], name
+    from thinlayer.export._references_section import cited_keys
+
+    items = re.findall(r"\\bibitem\{([^{}]*)\}", tex)
+    assert items and items[0] == "argatov" and set(items) == set(cited_keys(tex)), (items, cited_keys(tex))
+    assert tex.index(r"\begin{thebibliography}") > tex.index(r"\section{Errata}")  # the report ends with them
+    check_layout(tex, name)
     if name == "incompressible_sphere":  # the (I.x) sections by the policy, one tag for the lines of (I.11)
         assert tex.count(r"\tag{I.11}") == 1 and r"- \frac{6}{5} s^{4}" in tex and r"u_3 = - \frac{H^{3}}{3 \mu}" in tex
 
@@ -239,19 +328,103 @@ def test_the_paper_is_cited_by_its_title_in_the_readme_and_the_report():
 
 
 def test_report_command_without_latex_prints_the_hint(tmp_path, monkeypatch, capsys):
-    # issue 17 item 1: PATH without pdflatex, latexmk or tectonic: the .tex is written and one line says how
+    # issue 17 item 1: PATH without pdflatex, latexmk or tectonic: the .tex is written and one line says how (a
+    # catalogue report that builds in ~2 s: the hint does not depend on the derivation; the sphere's takes ~15 s)
     from thinlayer.export.cli import main
 
     empty = tmp_path / "empty-bin"
     empty.mkdir()
     monkeypatch.setenv("PATH", str(empty))
-    assert main(["report", "sphere", "--out", str(tmp_path / "a")]) == 0
+    assert main(["report", "frictionless_sphere", "--out", str(tmp_path / "a")]) == 0
     out = capsys.readouterr().out.splitlines()
-    tex = tmp_path / "a" / "sphere.tex"
+    tex = tmp_path / "a" / "frictionless_sphere.tex"
     assert tex.is_file() and not tex.with_suffix(".pdf").exists()
     assert len(out) == 2 and out[0] == f"wrote {tex}"
     assert out[1].startswith("no PDF: pdflatex is not installed") and "--pdf" in out[1] and "apt-get install" in out[1]
-    assert main(["report", "sphere", "--out", str(tmp_path / "b"), "--quiet"]) == 0
-    assert capsys.readouterr().out == "" and (tmp_path / "b" / "sphere.tex").is_file()
+    assert main(["report", "frictionless_sphere", "--out", str(tmp_path / "b"), "--quiet"]) == 0
+    assert capsys.readouterr().out == "" and (tmp_path / "b" / "frictionless_sphere.tex").is_file()
     assert main(["report", "quartic_punch", "--out", str(tmp_path / "c"), "--json"]) == 0
     assert "no PDF" not in capsys.readouterr().out
+
+
+# ---------------------------------------------------------------------------------------------
+# issue 28: layout, its checks, the errata document, the flat punch's symbols, no install hint
+# ---------------------------------------------------------------------------------------------
+def test_layout_checks_can_fail():
+    ok = (r"\section{A}\begin{table}[H]\begin{tabular}{r}1\end{tabular}\end{table}"
+          r"\begin{equation*}x\tag{F.1}\end{equation*}")
+    check_layout(ok, "good")
+    for bad in (r"\begin{table}[htbp]\begin{tabular}{r}1\end{tabular}\end{table}",  # may float above its heading
+                r"\begin{center}\begin{tabular}{r}1\end{tabular}\end{center}",  # may split
+                r"\begin{longtable}{r}1\\\end{longtable}",  # no repeated header
+                r"(Figures omitted: pip install 'thinlayer[plot]')",
+                r"\section{Flat}\tag{F.1} \tag{F.10}"):  # (F.1) to (F.10)
+        with pytest.raises(AssertionError):
+            check_layout(bad, "bad")
+    assert tag_gaps(r"\section{S}\tag{SO.9--SO.10} \tag{SO.8}\section{T}\tag{I.3}\tag{I.4}") == []
+
+
+def test_errata_document_has_every_entry_and_its_references(tmp_path):
+    from thinlayer import errata
+    from thinlayer.export.cli import main
+    from thinlayer.export.derivation import ErrataDocument
+
+    der = load_derivation("errata")
+    assert isinstance(der, ErrataDocument)
+    tex = report_latex(der)
+    assert tex.count(r"\paragraph{") == len(errata.ENTRIES)
+    for e in errata.ENTRIES:
+        assert rf"\cite{{{e.source}}}" in tex
+        for form in (e.printed, e.derived):  # a list of values is set as a table: each value in its cell
+            values = re.findall(r"\\kappa\(([^()]*)\) = ([-\d.]+)", form)
+            assert all(f"${y}$ &" in tex or f"${y}$ \\\\" in tex for _, y in values) if values else form in tex
+    items = re.findall(r"\\bibitem\{([^{}]*)\}", tex)
+    assert {"argatov", "hayes1972", "dimitriadis2002", "garcia2018"} <= set(items)
+    check_layout(tex, "errata")
+    assert main(["report", "errata", "--out", str(tmp_path), "--quiet"]) == 0
+    assert (tmp_path / "errata.tex").read_text() == write_report(der, tmp_path / "b").read_text()
+
+
+def test_report_errata_are_fewer_than_the_registry():
+    # issue 28: the elliptic-paraboloid report printed four flat-punch tables and the thick-layer series
+    from thinlayer import errata
+
+    tex = report_latex(load_derivation(ROOT / "derivations" / "quartic_punch.toml"))
+    got = _errata_in(tex)
+    assert got == EXPECTED_ERRATA["quartic_punch"] and len(got) < len(errata.ENTRIES)
+    assert not any(n.startswith(("Hayes", "Dimitriadis", "Garcia")) for n in got)
+    assert "Hayes" not in tex and "hayes1972" not in tex
+
+
+def test_flat_punch_section_numbers_run_on_and_use_h_star():
+    der = load_derivation(ROOT / "derivations" / "flat_punch.toml")
+    tex = report_latex(der)
+    flat = tex.split(r"\section{Flat-ended cylindrical punch}", 1)[1].split(r"\section{", 1)[0]
+    tags = [t for t in re.findall(r"\\tag\{(F\.\d+)\}", flat)]
+    assert tags == [f"F.{k}" for k in range(1, 20)], tags
+    for tag in ("F.11", "F.12"):  # the edge shift of (3.25): h^* as in the other sections, never a bare h
+        line = next(ln for ln in flat.splitlines() if rf"\tag{{{tag}}}" in ln)
+        assert "h^{*}" in line and not re.search(r"(?<![\\\w{])h(?![\w^*}])", line.replace("h^{*}", "")), line
+    assert "h (3.18)" not in flat and "$h$ (3.18)" not in flat
+
+
+def test_figures_omitted_without_matplotlib_say_so_on_the_page_and_the_hint_in_the_log(tmp_path, monkeypatch,
+                                                                                        caplog):
+    import logging
+    import sys
+
+    from thinlayer.export.report import _figures
+
+    for mod in ("matplotlib", "matplotlib.figure", "matplotlib.backends.backend_agg"):
+        monkeypatch.setitem(sys.modules, mod, None)
+
+    class Study:
+        def plots(self, *a, **k):
+            from thinlayer.validation.plots import _figure
+
+            _figure()
+
+    with caplog.at_level(logging.WARNING):
+        figs, why = _figures(Study(), tmp_path)
+    assert figs == [] and "pip" not in why and "matplotlib is not installed" in why
+    assert "pip install 'thinlayer[plot]'" in caplog.text  # the hint: in the log only

@@ -42,7 +42,8 @@ def run_c(gc, points, tmp):
     gc.write(tmp)
     lib = tmp / f"lib{gc.function_name}.so"
     subprocess.run([gcc, "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-O2", "-fPIC", "-shared", "-o",
-                    str(lib), str(tmp / gc.main_file), "-lm"], check=True, capture_output=True, text=True)
+                    str(lib), str(tmp / gc.main_file), "-lm"], check=True, capture_output=True, text=True,
+                   stdin=subprocess.DEVNULL)
     f = getattr(ctypes.CDLL(str(lib)), gc.function_name)
     f.restype = None
     f.argtypes = [ctypes.c_double] * len(gc.arguments) + [ctypes.POINTER(ctypes.c_double)]

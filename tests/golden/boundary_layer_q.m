@@ -4,11 +4,12 @@ function value = boundary_layer_q(v, h, B)
   % Do not edit: regenerate from the derivation instead.
   %
   % boundary_layer_q(v, h, B) -> value
-  % Arguments in call order (identifier: sympy symbol):
-  %   v: v
-  %   h: h
-  %   B: B
+  % Arguments in call order (identifier: sympy symbol -- meaning [units] (equation of the paper)):
+  %   v: v -- distance from the leading contour Gamma_0 over H (inward), the edge variable [1] (3.7)
+  %   h: h -- a symbol of the expression (no description known)
+  %   B: B -- a symbol of the expression (no description known)
   % Outputs: value
+  % Units: any consistent system (length, force, force/length^2 alike); [1] is a pure number.
   % Vectorised: element-wise operators; arguments of equal sizes (or scalars).
   t0 = sqrt(B);
   t1 = -h + v;

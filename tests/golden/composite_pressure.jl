@@ -2,12 +2,14 @@
 # Do not edit: regenerate from the derivation instead.
 #
 # composite_pressure(x_1, x_2, H, mu) -> p
-# Arguments in call order (identifier: sympy symbol):
-#   x_1: x_1
-#   x_2: x_2
-#   H: H
-#   mu: mu
+# Arguments in call order (identifier: sympy symbol -- meaning [units] (equation of the paper)):
+#   x_1: x_1 -- surface coordinate along the first principal axis of the punch [length] (1.1)
+#   x_2: x_2 -- surface coordinate along the second principal axis of the punch [length] (1.1)
+#   H: H -- layer thickness [length] (1.2)
+#   mu: mu -- shear modulus of the layer [force/length^2] (1.3)
 # Outputs: p
+#   p -- contact pressure [force/length^2] (3.24)
+# Units: any consistent system (length, force, force/length^2 alike); [1] is a pure number.
 # Scalar; broadcast over arrays with composite_pressure.(...).
 
 using SpecialFunctions  # erf

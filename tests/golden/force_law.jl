@@ -2,20 +2,26 @@
 # Do not edit: regenerate from the derivation instead.
 #
 # force_law(delta_0, H, mu, R, h_s, nu) -> force, contact_area_leading, contact_area
-# Arguments in call order (identifier: sympy symbol):
-#   delta_0: delta_0
-#   H: H
-#   mu: mu
-#   R: R
-#   h_s: h^*
-#   nu: nu
+# Arguments in call order (identifier: sympy symbol -- meaning [units] (equation of the paper)):
+#   delta_0: delta_0 -- indentation depth: the rigid displacement of the punch [length] (1.2)
+#   H: H -- layer thickness [length] (1.2)
+#   mu: mu -- shear modulus of the layer [force/length^2] (1.3)
+#   R: R -- radius of curvature of the punch tip, Phi = (x_1^2 + x_2^2)/(2 R) [length] (1.1)
+#   h_s: h^* -- edge shift h*: the contact edge lies h* H inside the leading contour Gamma_0; a number
+#       per layer, thinlayer.edge_shift_exact(nu) [1] (3.25)
+#   nu: nu -- Poisson ratio of the layer, -1 < nu < 1/2 [1] (1.3)
 # Outputs: force, contact_area_leading, contact_area
+#   force -- force on the punch P [force] (1.8)
+#   contact_area_leading -- leading contact area |omega_0| [length^2] (3.25)
+#   contact_area -- area of the contact |omega| [length^2] (3.25)
+# Units: any consistent system (length, force, force/length^2 alike); [1] is a pure number.
 # Scalar; broadcast over arrays with force_law.(...).
 
 function force_law(delta_0, H, mu, R, h_s, nu)
-    t0 = pi * H
-    force = -4 // 3 * delta_0 .* mu .* nu .* t0 .* (4 * nu - 1) ./ (2 * nu - 1) .^ 2 + pi * R .* delta_0 .^ 2 .* mu .* (1 - nu) ./ (H .* (1 // 2 - nu))
-    contact_area_leading = 2 * pi * R .* delta_0
-    contact_area = -2 * sqrt(2) * sqrt(R) .* sqrt(delta_0) .* h_s .* t0 + 2 * pi * R .* delta_0
+    t0 = 2 * nu - 1
+    t1 = 2 * pi
+    force = -4 // 3 * pi * H .* delta_0 .* mu .* nu .* (4 * nu - 1) ./ t0 .^ 2 - 2 * pi * R .* delta_0 .^ 2 .* mu .* (1 - nu) ./ (H .* t0)
+    contact_area_leading = R .* delta_0 .* t1
+    contact_area = -sqrt(2) * H .* sqrt(R) .* sqrt(delta_0) .* h_s .* t1 + 2 * pi * R .* delta_0
     return force, contact_area_leading, contact_area
 end

@@ -4,15 +4,18 @@ function p = inner_pressure(x_1, x_2, delta_0, H, mu, R_1, R_2)
   % Do not edit: regenerate from the derivation instead.
   %
   % inner_pressure(x_1, x_2, delta_0, H, mu, R_1, R_2) -> p
-  % Arguments in call order (identifier: sympy symbol):
-  %   x_1: x_1
-  %   x_2: x_2
-  %   delta_0: delta_0
-  %   H: H
-  %   mu: mu
-  %   R_1: R_1
-  %   R_2: R_2
+  % Arguments in call order (identifier: sympy symbol -- meaning [units] (equation of the paper)):
+  %   x_1: x_1 -- surface coordinate along the first principal axis of the punch [length] (1.1)
+  %   x_2: x_2 -- surface coordinate along the second principal axis of the punch [length] (1.1)
+  %   delta_0: delta_0 -- indentation depth: the rigid displacement of the punch [length] (1.2)
+  %   H: H -- layer thickness [length] (1.2)
+  %   mu: mu -- shear modulus of the layer [force/length^2] (1.3)
+  %   R_1: R_1 -- principal radius of curvature of the punch along x_1, Phi = x_1^2/(2 R_1) + x_2^2/(2
+  %       R_2) [length] (1.1)
+  %   R_2: R_2 -- principal radius of curvature of the punch along x_2 [length] (1.1)
   % Outputs: p
+  %   p -- contact pressure [force/length^2] (2.26)
+  % Units: any consistent system (length, force, force/length^2 alike); [1] is a pure number.
   % Vectorised: element-wise operators; arguments of equal sizes (or scalars).
   t0 = 1./R_1;
   t1 = 1./R_2;

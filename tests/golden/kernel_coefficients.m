@@ -4,24 +4,32 @@ function [A, m_1, m_2, m_3, M_1, M_2, M_3] = kernel_coefficients(nu)
   % Do not edit: regenerate from the derivation instead.
   %
   % kernel_coefficients(nu) -> A, m_1, m_2, m_3, M_1, M_2, M_3
-  % Arguments in call order (identifier: sympy symbol):
-  %   nu: nu
+  % Arguments in call order (identifier: sympy symbol -- meaning [units] (equation of the paper)):
+  %   nu: nu -- Poisson ratio of the layer, -1 < nu < 1/2 [1] (1.3)
   % Outputs: A, m_1, m_2, m_3, M_1, M_2, M_3
+  %   A -- kernel coefficient A = lim L(s)/s [1] (2.4)
+  %   m_1 -- kernel coefficient m_1 of L(s)/s = A (1 + m_1 s^2 + m_2 s^4 + ...) [1] (2.20)
+  %   m_2 -- kernel coefficient m_2 of L(s)/s = A (1 + m_1 s^2 + m_2 s^4 + ...) [1] (2.20)
+  %   m_3 -- kernel coefficient m_3 of L(s)/s = A (1 + m_1 s^2 + m_2 s^4 + ...) [1] (2.20)
+  %   M_1 -- coefficient M_1 of s/L(s) = (1 + M_1 s^2 + ...)/A, by the recurrence [1] (4.2)
+  %   M_2 -- coefficient M_2 of s/L(s) = (1 + M_1 s^2 + ...)/A, by the recurrence [1] (4.2)
+  %   M_3 -- coefficient M_3 of s/L(s) = (1 + M_1 s^2 + ...)/A, by the recurrence [1] (4.2)
+  % Units: any consistent system (length, force, force/length^2 alike); [1] is a pure number.
   % Vectorised: element-wise operators; arguments of equal sizes (or scalars).
-  t0 = 1 - nu;
-  t1 = t0.^(-2);
-  t2 = 4*nu;
-  t3 = 1 - 2*nu;
-  t4 = 1./t3;
-  t5 = nu.*t4.*(1 - t2)./(3*t0);
+  t0 = 1 - 2*nu;
+  t1 = 1 - nu;
+  t2 = t1.^(-2);
+  t3 = 4*nu;
+  t4 = 1./t0;
+  t5 = nu.*t4.*(1 - t3)./(3*t1);
   t6 = nu.^2;
   t7 = nu.^3;
   t8 = nu.^4;
-  A = t1.*(1/2 - nu);
+  A = t0.*t2/2;
   m_1 = -t5;
-  m_2 = t1.*t4.*(nu/2 - 19*t6/15 - 4*t7/15 - 1/20);
-  m_3 = t4.*(-149*nu/420 + 34*t6/45 + 74*t7/105 + 8*t8/315 + 1/28)./t0.^3;
+  m_2 = -t2.*t4.*(-30*nu + 76*t6 + 16*t7 + 3)/60;
+  m_3 = t4.*(-447*nu + 952*t6 + 888*t7 + 32*t8 + 45)./(1260*t1.^3);
   M_1 = t5;
-  M_2 = t1.*(3 - t2).*(-32*nu + 100*t6 - 56*t7 + 3)./(180*t3.^2);
-  M_3 = t1.*(992*nu.^5/945 + 52*nu/105 - 106*t6/45 + 856*t7/189 - 3496*t8/945 - 1/28)./t3.^3;
+  M_2 = t2.*(3 - t3).*(-32*nu + 100*t6 - 56*t7 + 3)./(180*t0.^2);
+  M_3 = t2.*(992*nu.^5/945 + 52*nu/105 - 106*t6/45 + 856*t7/189 - 3496*t8/945 - 1/28)./t0.^3;
 end

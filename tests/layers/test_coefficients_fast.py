@@ -82,7 +82,8 @@ def test_default_path_needs_no_flint():
         "    print('ImportError:', e)\n"
         "print(c.M[2])\n"
     )
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300,
+                         stdin=subprocess.DEVNULL)
     assert out.returncode == 0, out.stderr
     assert "ImportError: python-flint is not installed" in out.stdout
     assert "(3 - 4*nu)*(-56*nu**3 + 100*nu**2 - 32*nu + 3)/(180*(1 - 2*nu)**2*(1 - nu)**2)" in out.stdout

@@ -58,7 +58,7 @@ from thinlayer.numerics import (
     solve_axisymmetric,
     surface_displacement,
 )
-from thinlayer.numerics.fft2d import _Convolver
+from thinlayer.numerics._influence import Convolver as _Convolver
 
 slow = pytest.mark.slow
 NU = 0.3

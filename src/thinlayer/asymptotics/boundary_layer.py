@@ -97,6 +97,7 @@ from .._checks import InputError, InputTypeError
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
+from ..normal import normal_latex
 from ..parse import as_expr, sympy_value
 from ..results import latex_equation
 
@@ -264,18 +265,18 @@ class AlexandrovParameters(RichDisplay):
         B, C = _to_sympy(self.B, d), _to_sympy(self.C, d)
         return " \\\\\n".join(
             [
-                latex_equation(r"\tilde{\mathcal{L}}(s)", sp.latex(S.s * self.symbol()), "3.19"),
-                latex_equation(r"\frac{B}{C} = \mathcal{A}, \quad B", sp.latex(B), "3.20"),
-                latex_equation(r"\frac{1}{C} - \frac{1}{2B^2} = -m_1, \quad C", sp.latex(C), "3.21"),
+                latex_equation(r"\tilde{\mathcal{L}}(s)", normal_latex(S.s * self.symbol()), "3.19"),
+                latex_equation(r"\frac{B}{C} = \mathcal{A}, \quad B", normal_latex(B), "3.20"),
+                latex_equation(r"\frac{1}{C} - \frac{1}{2B^2} = -m_1, \quad C", normal_latex(C), "3.21"),
             ]
         )
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         return [
-            "AlexandrovParameters: L~(s)/s = sqrt(s**2 + B**2)/(s**2 + C)   (3.19)-(3.21)",
-            f"  A   = {fmt(self.A)}",
-            f"  m_1 = {fmt(self.m1)}",
+            "AlexandrovParameters: L̃(s)/s = √(s² + B²)/(s² + C)   (3.19)-(3.21)",
+            f"  𝒜   = {fmt(self.A)}",
+            f"  m₁  = {fmt(self.m1)}",
             f"  B   = {fmt(self.B)}",
             f"  C   = {fmt(self.C)}",
         ]
@@ -616,14 +617,14 @@ class AlexandrovSolution(RichDisplay):
                 latex_equation(r"\frac{\mathcal{A}\,\tilde q^{**}(s, h + \tau)}{\vartheta H_* b_1^*(s)}",
                                self.q_general(tau, hs), "3.23"),
                 latex_equation(r"\frac{\mathcal{A}\,\tilde q^{**}(s, v)}{\vartheta H_* b_1^*(s)}", self.q(v), "3.24"),
-                latex_equation(r"h^*(s)", sp.latex(1 / sp.sqrt(C) - 1 / (2 * B)) + " = " + sp.latex(h), "3.25"),
+                latex_equation(r"h^*(s)", normal_latex(1 / sp.sqrt(C) - 1 / (2 * B)) + " = " + normal_latex(h), "3.25"),
             ]
         )
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         return [
-            ("AlexandrovSolution: Q(v) = v erf(sqrt(B (v - h))) + sqrt((v - h)/(pi B)) exp(-B (v - h)), v > h"
+            ("AlexandrovSolution: Q(v) = v erf(√(B (v - h))) + √((v - h)/(π B)) exp(-B (v - h)), v > h"
             "   (3.23)-(3.25)"),
             f"  B  = {fmt(self.params.B)}",
             f"  C  = {fmt(self.params.C)}",

@@ -42,6 +42,7 @@ from .._checks import InputError, NotDerivedError, parse_nu, positive
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
+from ..normal import normal_latex
 from ..punch import Punch
 from .inner import InnerPressure, inner_pressure
 
@@ -269,10 +270,10 @@ class CompositePressure(RichDisplay):
         return self
 
     def latex(self) -> str:
-        th = sp.latex(self.layer.vartheta)
+        amplitude = normal_latex(sp.factor(self.layer.vartheta / self.layer.A))  # vartheta/A, one fraction
         kind = "exact (2.3)" if self.boundary_layer == "exact" else "Alexandrov (3.24)"
         return (
-            r"p_c(\mathbf{x}) = p_{\mathrm{in}}(\mathbf{x}) + \frac{" + th + r"\,|\nabla\Phi(s)|}{\mathcal{A}}"
+            r"p_c(\mathbf{x}) = p_{\mathrm{in}}(\mathbf{x}) + " + amplitude + r"\,|\nabla\Phi(s)|"
             r"\left(\hat Q\!\left(\frac{n}{H}\right) - \frac{n}{H}\right),\quad \hat Q = 0 \ \text{for}\ "
             rf"\frac{{n}}{{H}} \le h^* = {self.h:.10g}\ (\text{{{kind} boundary layer}})"
         )
@@ -283,9 +284,9 @@ class CompositePressure(RichDisplay):
         return [
             f"CompositePressure: inner ({self.inner.order} terms) + {kind} boundary layer - common part"
             "   (2.26), (3.24)",
-            f"  {self.punch.name}: Phi = {fmt(self.punch.expr)} on {self.layer}",
-            f"  delta0 = {self.delta0:.6g}, H = {self.H:.6g}, mu = {self.mu:.6g}",
-            f"  h* = {self.h:.10g}, amplitude vartheta/A = {self.amplitude:.10g}, "
+            f"  {self.punch.name}: Φ = {fmt(self.punch.expr)} on {self.layer}",
+            f"  δ₀ = {self.delta0:.6g}, H = {self.H:.6g}, μ = {self.mu:.6g}",
+            f"  h* = {self.h:.10g}, amplitude ϑ/𝒜 = {self.amplitude:.10g}, "
             f"boundary layer for n/H < {self.band:.4g}",
         ]
 

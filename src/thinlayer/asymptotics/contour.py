@@ -1,4 +1,3 @@
-# size: one stage (3.1)-(3.14): spectral curve, round frame of elongated contours, results (region search split out)
 r"""The leading contact area omega_0 = {delta0 - Phi(x1, x2) > 0} and its contour Gamma_0 (3.1)-(3.14).
 
 The principal term (2.29) of the inner expansion is proportional to ``delta0 - Phi``; it is
@@ -74,8 +73,8 @@ a circle-like contour whatever ``r``.  Everything in x follows from the linear m
 the centroid is ``W`` times that of the image.  The speed ``|W w'|`` is smooth but nearly a kink at
 each tip (branch points at distance about ``1/r`` from the real sigma axis), so the trapezoidal rule
 in sigma would need about ``r`` nodes for the perimeter; the arc length ``s(sigma)`` is built on
-Chebyshev panels bisected towards the tips instead (:class:`_ArcLength`: a few dozen panels per
-tip whatever ``r``, at most 4096), inverted by safeguarded Newton.  Area integrals keep the trapezoidal
+Chebyshev panels bisected towards the tips instead (``_ArcLength`` in :mod:`._contour_elongated`: a few
+dozen panels per tip whatever ``r``, at most 4096), inverted by safeguarded Newton.  Area integrals keep the trapezoidal
 rule in the smooth parameter sigma (``f'(s) ds = x'(sigma) dsigma``); line integrals ``oint g ds``
 use Gauss-Legendre on the panels.  ``Phi(W w)/delta0`` is expanded in exact rational arithmetic
 (:func:`transformed`), so a rotated elongated quadratic form, whose three terms cancel to one part in
@@ -111,7 +110,9 @@ from .. import symbols as S
 from .._checks import ComputationError, InputError, InputTypeError
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
+from ..normal import normal_latex
 from ..parse import as_expr, sympy_value
+from ._contour_elongated import FramedCurve
 from ._contour_region import (
     ASPECT_DIRECT,
     ASPECT_MAX,
@@ -121,10 +122,10 @@ from ._contour_region import (
     region,
     round_frame,
     short,
-    signed_area,
     too_elongated,
     transformed,
 )
+from ._contour_spectral import NMAX, nodes_by_ode, nodes_by_reference, sym_coeffs, tail, trig_eval, trim, uniform_eval
 
 __all__ = ["ContactContour", "ContourAccuracy", "EllipseContour", "contact_contour", "ellipse_contour"]
 
@@ -155,493 +156,28 @@ def _as_delta0(delta0) -> float:
     return val
 
 
-
-
 # ---------------------------------------------------------------------------------------------
-# spectral curve machinery
+# self-checks of the spectral contour (step 5)
 # ---------------------------------------------------------------------------------------------
-def _wavenumbers(N: int) -> np.ndarray:
-    return np.fft.fftfreq(N, 1.0 / N)
-
-
-def _sym_coeffs(zhat: np.ndarray):
-    """FFT coefficients -> (k, c) with the Nyquist mode split evenly between +-N/2."""
-    N = len(zhat)
-    k = _wavenumbers(N)
-    c = zhat / N
-    if N % 2 == 0:
-        ny = N // 2
-        k = np.concatenate([k, [ny]])
-        c = np.concatenate([c, [0.5 * c[ny]]])
-        k[ny] = -ny
-        c[ny] = 0.5 * zhat[ny] / N
-    return k, c
-
-
-def _trig_eval(k: np.ndarray, c: np.ndarray, period: float, t, deriv: int = 0) -> np.ndarray:
-    """sum_k c_k (i w_k)^m exp(i w_k t), w_k = 2 pi k / period, for integer k; vectorised over t.
-
-    ``c`` may carry a trailing axis (several series at once).  Horner's scheme in
-    ``z = exp(2 pi i t / period)`` (|z| = 1, so it is stable), with one complex exponential per point.
-    """
-    t = np.asarray(t, dtype=float)
-    c = np.asarray(c, dtype=complex)
-    ki = np.rint(np.asarray(k)).astype(int)
-    if deriv:
-        w = 2 * np.pi * ki / period
-        c = c * ((1j * w) ** deriv).reshape((-1,) + (1,) * (c.ndim - 1))
-    kmin, kmax = int(ki.min()), int(ki.max())
-    dense = np.zeros((kmax - kmin + 1,) + c.shape[1:], dtype=complex)
-    np.add.at(dense, ki - kmin, c)
-    flat = t.ravel()
-    z = np.exp(2j * np.pi * flat / period)
-    extra = (1,) * (c.ndim - 1)
-    zz = z.reshape((-1,) + extra)
-    acc = np.broadcast_to(dense[-1], (len(flat),) + c.shape[1:]).copy()
-    for j in range(len(dense) - 2, -1, -1):
-        acc *= zz
-        acc += dense[j]
-    acc *= np.exp(2j * np.pi * kmin * flat / period).reshape((-1,) + extra)
-    return acc.reshape(t.shape + c.shape[1:])
-
-
-def _newton_onto_level(P: Poly2, delta0, x, y, iters=8):
-    """Move points to Phi = delta0 along the gradient (the normal of the level line)."""
-    for _ in range(iters):
-        f, gx, gy, *_ = P.all(x, y)
-        g2 = gx * gx + gy * gy
-        r = (f - delta0) / g2
-        x = x - r * gx
-        y = y - r * gy
-    return x, y
-
-
-def _reference_curve(P, delta0, poly, kc: float = 24.0):
-    """Smooth (band-limited) closed curve near the polygon, CCW; returns its Fourier data."""
-    x, y = _newton_onto_level(P, delta0, poly[:, 0].copy(), poly[:, 1].copy(), iters=4)
-    pts = np.column_stack([x, y])
-    if signed_area(pts) < 0:
-        pts = pts[::-1]
-    seg = np.hypot(*(np.roll(pts, -1, axis=0) - pts).T)
-    keep = seg > 1e-12 * seg.sum()
-    pts = pts[keep]
-    seg = np.hypot(*(np.roll(pts, -1, axis=0) - pts).T)
-    cum = np.concatenate([[0.0], np.cumsum(seg)])
-    Lp = cum[-1]
-    K = max(512, int(16 * kc))
-    tt = np.linspace(0.0, Lp, K, endpoint=False)
-    closed = np.vstack([pts, pts[:1]])
-    z = np.interp(tt, cum, closed[:, 0]) + 1j * np.interp(tt, cum, closed[:, 1])
-    zhat = np.fft.fft(z)
-    k = _wavenumbers(K)
-    zhat = zhat * np.exp(-((np.abs(k) / kc) ** 4))
-    zhat[np.abs(k) > 3 * kc] = 0.0
-    kk, cc = _trim(*_sym_coeffs(zhat))
-    return kk, cc, 2 * np.pi
-
-
-def _project_along_normals(P, delta0, kk, cc, t):
-    """X(t) = C(t) + h(t) nu(t) on Phi = delta0, nu the outward normal of the reference curve C."""
-    both = _trig_eval(kk, np.stack([cc, 1j * kk * cc], axis=1), 2 * np.pi, t)
-    C, dC = both[:, 0], both[:, 1]
-    nu = -1j * dC / np.abs(dC)  # outward for a CCW curve
-    h = np.zeros(len(t))
-    cx, cy, nx, ny = C.real, C.imag, nu.real, nu.imag
-    for _ in range(30):
-        f, gx, gy, *_ = P.all(cx + h * nx, cy + h * ny)
-        dh = -(f - delta0) / (gx * nx + gy * ny)
-        h = h + dh
-        if np.max(np.abs(dh)) <= 1e-16 * (np.max(np.abs(C)) + np.max(np.abs(h))):
-            break
-    return (cx + h * nx) + 1j * (cy + h * ny)
-
-
-def _tail(zhat: np.ndarray) -> float:
-    """Largest Fourier coefficient with |k| >= 3N/8 relative to the largest one (aliasing error)."""
-    N = len(zhat)
-    k = np.abs(_wavenumbers(N))
-    a = np.abs(zhat) / N
-    return float(a[k >= 3 * N // 8].max() / max(a.max(), 1e-300))
-
-
-def _trim(k: np.ndarray, c: np.ndarray, rel: float = 1e-18):
-    """Drop negligible Fourier coefficients (they cost time in the direct sums)."""
-    keep = np.abs(c) > rel * np.abs(c).max()
-    return k[keep], c[keep]
-
-
-def _uniform_eval(zhat: np.ndarray, period: float, shift: float = 0.0, deriv: int = 0) -> np.ndarray:
-    """The trigonometric interpolant (Nyquist split evenly) or its derivative at ``s_j + shift``."""
-    N = len(zhat)
-    k = _wavenumbers(N)
-    w = 2 * np.pi * k / period
-    c = zhat * np.exp(1j * w * shift) * (1j * w) ** deriv
-    if N % 2 == 0:
-        ny = N // 2
-        wn = np.pi * N / period
-        # 0.5 c_ny (e^{i wn s} (i wn)^m + e^{-i wn s} (-i wn)^m) at s = s_j + shift, s_j = j period / N
-        c[ny] = zhat[ny] * 0.5 * (np.exp(1j * wn * shift) * (1j * wn) ** deriv
-                                  + np.exp(-1j * wn * shift) * (-1j * wn) ** deriv)
-    return np.fft.ifft(c)
-
-
-def _arc_length_from_X(P, delta0, X):
-    """Resample the curve X(t_j) (uniform t in [0, 2 pi), analytic) at equal arc length.
-
-    The speed |X'(t)| is differentiated and integrated spectrally, ``s(t_k) = k L/N`` is solved by
-    Newton with direct trigonometric sums, and the points are evaluated there and projected onto
-    Phi = delta0.  Returns (points, perimeter).
-    """
-    N = len(X)
-    t = 2 * np.pi * np.arange(N) / N
-    Xhat = np.fft.fft(X)
-    speed = np.abs(_uniform_eval(Xhat, 2 * np.pi, deriv=1))
-    Shat = np.fft.fft(speed)
-    L = 2 * np.pi * Shat[0].real / N
-    s0 = Shat[0].real / N
-    ks, cs = _trim(*_sym_coeffs(Shat))
-    ci = np.where(ks != 0, cs / (1j * np.where(ks != 0, ks, 1)), 0.0)
-    both = np.stack([ci, cs], axis=1)
-    kw = _wavenumbers(N)
-    integ = np.where((kw != 0) & (np.abs(kw) < N // 2), Shat / (1j * np.where(kw != 0, kw, 1)), 0.0)
-    sn = s0 * t + np.fft.ifft(integ).real
-    target = L * np.arange(N) / N
-    tq = np.interp(target, np.concatenate([sn, [L]]), np.concatenate([t, [2 * np.pi]]))
-    for _ in range(12):
-        E = _trig_eval(ks, both, 2 * np.pi, tq)
-        ds = (s0 * tq + E[:, 0].real - target) / E[:, 1].real
-        tq = tq - ds
-        if np.max(np.abs(ds)) < 1e-14:
-            break
-    kX, cX = _trim(*_sym_coeffs(Xhat))
-    Z = _trig_eval(kX, cX, 2 * np.pi, tq)
-    x, y = _newton_onto_level(P, delta0, Z.real, Z.imag, iters=3)
-    return x + 1j * y, float(L)
-
-
-_NMAX = 16384
-
-
-def _nodes_by_reference(P, delta0, poly, n, tol):
-    """Equal-arc-length nodes via normal projection from a smooth reference curve (fast path)."""
-    kk, cc, _ = _reference_curve(P, delta0, poly)
-    N = n or 128
-    while True:
-        t = 2 * np.pi * np.arange(N) / N
-        X = _project_along_normals(P, delta0, kk, cc, t)
-        if not np.all(np.isfinite(X)):
-            return None
-        if n is not None:
-            return _arc_length_from_X(P, delta0, X)
-        if _tail(np.fft.fft(X)) <= tol:
-            Z, L = _arc_length_from_X(P, delta0, X)
-            if _tail(np.fft.fft(Z)) <= tol:
-                return Z, L
-        if N >= 4096:
-            return None
-        N *= 2
-
-
-def _nodes_by_ode(P, delta0, poly, n, tol):
-    """Equal-arc-length nodes by integrating the unit tangent field ``(-Phi_y, Phi_x)/|grad Phi|``.
-
-    Robust fallback for contours with small features: DOP853 with dense output in the arc
-    length, the period from the return to the starting normal line, then projection onto
-    Phi = delta0.
-    """
-    from scipy.integrate import solve_ivp
-
-    x0, y0 = _newton_onto_level(P, delta0, np.array([poly[0, 0]]), np.array([poly[0, 1]]), iters=8)
-    x0, y0 = float(x0[0]), float(y0[0])
-    scale = float(np.max(np.abs(poly))) + 1e-300
-    Lp = float(np.sum(np.hypot(*(np.roll(poly, -1, axis=0) - poly).T)))
-
-    def rhs(_s, u):
-        _, gx, gy, *_ = P.all(u[0], u[1])
-        g = math.hypot(float(gx), float(gy))
-        return [-float(gy) / g, float(gx) / g]  # unit tangent, omega_0 on the left
-
-    _, gx0, gy0, *_ = P.all(x0, y0)
-    g0 = math.hypot(float(gx0), float(gy0))
-    T0 = (-float(gy0) / g0, float(gx0) / g0)
-
-    def back(_s, u):  # crossing of the normal line through the start, forwards
-        return (u[0] - x0) * T0[0] + (u[1] - y0) * T0[1]
-
-    back.direction = 1.0
-
-    sol = solve_ivp(rhs, (0.0, 1.25 * Lp), [x0, y0], method="DOP853", rtol=1e-13, atol=1e-15 * scale,
-                    dense_output=True, events=back, max_step=Lp / 64)
-    ret = [float(se) for se, ue in zip(sol.t_events[0], sol.y_events[0])
-           if se > 0.25 * Lp and math.hypot(ue[0] - x0, ue[1] - y0) < 0.05 * Lp]
-    if sol.status < 0 or not ret:
-        return None
-    L = ret[0]
-    N = n or 128
-    while True:
-        sj = L * np.arange(N) / N
-        U = sol.sol(sj)
-        x, y = _newton_onto_level(P, delta0, U[0], U[1], iters=3)
-        Z = x + 1j * y
-        if n is not None or _tail(np.fft.fft(Z)) <= tol or N >= _NMAX:
-            return Z, L
-        N *= 2
-
-
 def _accuracy(P, delta0, Z, L) -> ContourAccuracy:
     N = len(Z)
     Zhat = np.fft.fft(Z)
     h = L / (2 * N)
-    zm = _uniform_eval(Zhat, L, shift=h)
-    d1 = _uniform_eval(Zhat, L, shift=h, deriv=1)
+    zm = uniform_eval(Zhat, L, shift=h)
+    d1 = uniform_eval(Zhat, L, shift=h, deriv=1)
     f, gx, gy, *_ = P.all(zm.real, zm.imag)
     dist = float(np.max(np.abs(f - delta0) / np.hypot(gx, gy))) / L
     speed = float(np.max(np.abs(np.abs(d1) - 1.0)))
-    d1n = _uniform_eval(Zhat, L, deriv=1)
-    d2n = _uniform_eval(Zhat, L, deriv=2)
+    d1n = uniform_eval(Zhat, L, deriv=1)
+    d2n = uniform_eval(Zhat, L, deriv=2)
     kap = (np.conj(d1n) * d2n).imag
     turning = float(np.sum(kap) * L / N / (2 * np.pi))
-    return ContourAccuracy(dist, speed, _tail(Zhat), turning)
+    return ContourAccuracy(dist, speed, tail(Zhat), turning)
 
 
 def _acceptable(acc: ContourAccuracy, strict: float) -> bool:
     return (abs(acc.turning_number - 1.0) <= 1e-6 and acc.level_distance <= strict
             and acc.speed_error <= strict)
-
-
-# ---------------------------------------------------------------------------------------------
-# elongated contours: the round frame x = W w(sigma) and the arc length s(sigma) on panels
-# ---------------------------------------------------------------------------------------------
-_PDEG = 16  # Chebyshev degree of the speed on one panel
-_PTHETA = np.pi * np.arange(_PDEG + 1) / _PDEG
-# Chebyshev-Lobatto points, with the panel ends: a near-kink between an end and the next point would leave
-# every interior sample on one branch and pass unseen, the end sample sees it
-_PNODES = np.cos(_PTHETA)
-_PMAT = (2.0 / _PDEG) * np.cos(np.outer(np.arange(_PDEG + 1), _PTHETA))  # values -> coefficients (DCT-I)
-_PMAT[:, [0, -1]] *= 0.5
-_PMAT[[0, -1]] *= 0.5
-_GLX, _GLW = np.polynomial.legendre.leggauss(_PDEG + 1)
-#: bounded work: at most this many bisections of a panel and this many panels
-_PANEL_LEVELS = 64
-_PANEL_MAX = 4096
-
-
-def _clenshaw(C: np.ndarray, xi: np.ndarray) -> np.ndarray:
-    """``sum_k C[:, k] T_k(xi)``: one Chebyshev series per point (rows of C)."""
-    b1 = np.zeros(len(xi))
-    b2 = np.zeros(len(xi))
-    for k in range(C.shape[1] - 1, 0, -1):
-        b1, b2 = C[:, k] + 2.0 * xi * b1 - b2, b1
-    return C[:, 0] + xi * b1 - b2
-
-
-class _ArcLength:
-    r"""The arc length ``s(sigma) = int_0^sigma |x'(t)| dt`` of a smooth closed curve and its inverse.
-
-    ``|x'|`` is smooth and periodic, but for an elongated contour it is nearly a kink at each tip:
-    the ellipse ``x = (a cos sigma, b sin sigma)`` has ``|x'| = a sqrt(sin^2 sigma + (b/a)^2 cos^2 sigma)``
-    with branch points at distance ``atanh(b/a) ~ b/a`` from the real axis, so the trapezoidal rule
-    converges only like ``exp(-N b/a)``.  Hence panels: the period is bisected until the Chebyshev
-    interpolant of the speed (degree 16) has a tail below ``tol`` times the mean speed.  A tip then
-    costs about ``log2(1e13)`` levels of two panels each, whatever the aspect ratio (beyond about
-    1e6 the kink is resolved only down to where it no longer shows at the tolerance: the speed is
-    within ``(b/a)^2 a`` of ``a |sin sigma|``); at most ``_PANEL_LEVELS`` bisections and
-    ``_PANEL_MAX`` panels, and no splitting below ``noise`` (the rounding error of the speed itself).
-    ``s`` is the Chebyshev antiderivative on each panel; its inverse is Newton's iteration on the
-    panel that holds ``s`` (bisection where it does not settle).
-    """
-
-    def __init__(self, speed: Callable, period: float, tol: float = 1e-13, noise: float = 0.0):
-        self.period = float(period)
-        a = self.period * np.arange(16) / 16
-        h = np.full(16, self.period / 16)
-        done_a, done_h, done_c = [], [], []
-        vbar = None
-        self.resolved = True
-        count = 0
-        for level in range(_PANEL_LEVELS + 1):
-            sig = a[:, None] + 0.5 * h[:, None] * (_PNODES + 1.0)
-            vals = speed(sig.ravel()).reshape(sig.shape)
-            if not np.all(np.isfinite(vals)):
-                raise InputError("the speed |dx/dsigma| of the contour is not finite (beyond the double range)")
-            co = vals @ _PMAT.T
-            if vbar is None:
-                vbar = float(np.mean(vals))
-            ok = np.max(np.abs(co[:, -3:]), axis=1) <= tol * vbar + 8.0 * noise
-            if level == _PANEL_LEVELS or count + len(a) + np.count_nonzero(~ok) > _PANEL_MAX:
-                self.resolved = bool(np.all(ok))
-                ok[:] = True
-            done_a.append(a[ok])
-            done_h.append(h[ok])
-            done_c.append(co[ok])
-            count += int(np.count_nonzero(ok))
-            a, h = a[~ok], 0.5 * h[~ok]
-            if not len(a):
-                break
-            a, h = np.concatenate([a, a + h]), np.concatenate([h, h])
-        a, h, co = np.concatenate(done_a), np.concatenate(done_h), np.concatenate(done_c)
-        order = np.argsort(a)
-        self.a, self.h, self.cv = a[order], h[order], co[order]
-        # s on a panel: (h/2) int_{-1}^{xi} v, a Chebyshev series vanishing at xi = -1
-        self.ci = np.polynomial.chebyshev.chebint(self.cv, axis=1, lbnd=-1) * (0.5 * self.h)[:, None]
-        self.S0 = np.concatenate([[0.0], np.cumsum(self.ci.sum(axis=1))])
-        self.length = float(self.S0[-1])
-
-    @property
-    def panels(self) -> int:
-        return len(self.a)
-
-    def s_of(self, sig) -> np.ndarray:
-        """``s(sigma)`` for sigma in [0, period)."""
-        sig = np.mod(np.asarray(sig, dtype=float), self.period)
-        j = np.clip(np.searchsorted(self.a, sig, side="right") - 1, 0, len(self.a) - 1)
-        xi = np.clip(2.0 * (sig - self.a[j]) / self.h[j] - 1.0, -1.0, 1.0)
-        return self.S0[j] + _clenshaw(self.ci[j], xi)
-
-    def sigma_of(self, s) -> np.ndarray:
-        """The inverse ``sigma(s)`` (s taken modulo the length), in [0, period)."""
-        s = np.mod(np.asarray(s, dtype=float).ravel(), self.length)
-        j = np.clip(np.searchsorted(self.S0, s, side="right") - 1, 0, len(self.a) - 1)
-        r = s - self.S0[j]
-        dS = self.S0[j + 1] - self.S0[j]
-        ci, cv, hh = self.ci[j], self.cv[j], 0.5 * self.h[j]
-        xi = np.clip(-1.0 + 2.0 * r / np.where(dS > 0, dS, 1.0), -1.0, 1.0)
-        act = np.arange(len(s))
-        for _ in range(12):  # Newton (s is monotone in xi); the converged points drop out
-            x = xi[act]
-            with np.errstate(divide="ignore", invalid="ignore"):
-                new = x - (_clenshaw(ci[act], x) - r[act]) / (hh[act] * _clenshaw(cv[act], x))
-            new = np.clip(np.where(np.isfinite(new), new, x), -1.0, 1.0)
-            xi[act] = new
-            act = act[np.abs(new - x) > 1e-15]
-            if not len(act):
-                break
-        bad = np.abs(_clenshaw(ci, xi) - r) > 1e-13 * np.maximum(dS, 1e-300)
-        if np.any(bad):  # bisection where Newton did not settle
-            lo, hi = np.full(np.count_nonzero(bad), -1.0), np.ones(np.count_nonzero(bad))
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                up = _clenshaw(ci[bad], mid) > r[bad]
-                hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
-            xi[bad] = 0.5 * (lo + hi)
-        return self.a[j] + hh * (xi + 1.0)
-
-    def quadrature(self, min_nodes: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Gauss-Legendre nodes sigma_q, weights (in sigma) and ``s(sigma_q)`` on the panels.
-
-        Each panel is cut into equal parts until there are at least ``min_nodes`` nodes.
-        """
-        m = max(1, -(-int(min_nodes) // (self.panels * len(_GLX))))
-        part = np.arange(m)
-        xi = (-1.0 + (2.0 * part[:, None] + 1.0 + _GLX[None, :]) / m).ravel()  # local coordinate on [-1, 1]
-        wq = np.tile(_GLW / m, m)
-        P, Q = self.panels, len(xi)
-        jj = np.repeat(np.arange(P), Q)
-        xx = np.tile(xi, P)
-        sig = self.a[jj] + 0.5 * self.h[jj] * (xx + 1.0)
-        wts = 0.5 * self.h[jj] * np.tile(wq, P)
-        sq = self.S0[jj] + _clenshaw(self.ci[jj], xx)
-        return sig, wts, sq
-
-
-class _FramedCurve:
-    r"""Gamma_0 as ``x = W w(sigma)``: the round image ``w`` by its own arc-length Fourier series.
-
-    ``W`` is the frame of :func:`round_frame` (the natural lengths of Phi times the square root of
-    the region's second moments), so ``w`` traces a nearly round curve and its Fourier series needs
-    as few terms as for a circle-like contour, whatever the aspect ratio of omega_0.  Everything in
-    ``x`` follows by the linear map and its Jacobian: ``x^(m)(sigma) = W w^(m)(sigma)``, the speed
-    ``|dx/dsigma| = |W w'|``, the arc length ``s`` by :class:`_ArcLength`, and with
-    ``D = |x'|^-1 d/dsigma`` the natural derivatives ``d^m f/ds^m = D^m x`` (3.3), (3.9), evaluated from the
-    Taylor coefficients in sigma (truncated power series of ``|x'|^-1``).  The first two are formed
-    without cancellation between the long and the short axis: the unit tangent (3.9) is ``W t_w``
-    normalised, ``t_w = (-dPhi~/dw2, dPhi~/dw1)`` the tangent of the level line of ``Phi~(w) = Phi(W w)/delta0``
-    at ``w(sigma)``: an error ``e`` of the point turns it by about ``e r``, while ``W w'`` would carry ``r``
-    times the interpolation error of the derivative ``w'`` (about 1e-12).  And ``f'' = kappa n0`` with
-    ``kappa = det W (w' x w'')/|W w'|^3``.  Areas are
-    ``det W`` times those in ``w``.
-    """
-
-    def __init__(self, W: np.ndarray, det: float, k: np.ndarray, c: np.ndarray, period: float, Pw: Poly2):
-        self.W = np.asarray(W, dtype=float)
-        self.det = float(det)
-        self.k, self.c, self.period = k, c, float(period)
-        self.Pw = Pw
-        # rounding of |W w'| in the direct sum: about eps sum_k |k c_k| (2 pi/period) |W|
-        wk = 2 * np.pi * np.abs(np.rint(k)) / self.period
-        noise = 2.2e-16 * float(np.sum(np.abs(c) * wk)) * float(np.linalg.norm(self.W, 2))
-        self.arc = _ArcLength(self.speed, self.period, noise=noise)
-        self._last: tuple[np.ndarray, np.ndarray] | None = None
-
-    def apply(self, wz: np.ndarray) -> np.ndarray:
-        """``W (Re wz, Im wz)`` as a complex number."""
-        u, v = wz.real, wz.imag
-        W = self.W
-        return (W[0, 0] * u + W[0, 1] * v) + 1j * (W[1, 0] * u + W[1, 1] * v)
-
-    def w(self, sig, m: int = 0) -> np.ndarray:
-        return _trig_eval(self.k, self.c, self.period, sig, m)
-
-    def x(self, sig, m: int = 0) -> np.ndarray:
-        """``d^m x / dsigma^m`` (complex ``x1 + i x2``)."""
-        return self.apply(self.w(sig, m))
-
-    def speed(self, sig) -> np.ndarray:
-        """``|dx/dsigma| = |W w'(sigma)|``, the Jacobian of the arc length."""
-        return np.abs(self.x(sig, 1))
-
-    def _sigma(self, s: np.ndarray) -> np.ndarray:
-        """``sigma(s)``, remembered for the last ``s`` (f, tangent, curvature, b1, b2 are often asked at the same s)."""
-        last = self._last
-        if last is not None and last[0].shape == s.shape and np.array_equal(last[0], s):
-            return last[1]
-        sig = self.arc.sigma_of(s)
-        self._last = (s.copy(), sig)
-        return sig
-
-    def to_w(self, p) -> np.ndarray:
-        return np.linalg.solve(self.W, np.asarray(p, dtype=float))
-
-    def z(self, s, m: int = 0) -> np.ndarray:
-        """``d^m f / ds^m`` at arc length ``s`` (complex), ``m >= 0``."""
-        s = np.asarray(s, dtype=float)
-        sig = self._sigma(s)
-        if m in (1, 2):
-            wz = self.w(sig)
-            _, gx, gy, *_ = self.Pw.all(wz.real, wz.imag)
-            t = self.apply(-gy + 1j * gx)  # W t_w
-            T = t / np.abs(t)
-            if m == 1:
-                return T.reshape(s.shape)
-            d1, d2 = self.w(sig, 1), self.w(sig, 2)
-            v = np.abs(self.apply(d1))
-            kappa = (self.det / v) * ((np.conj(d1) * d2).imag / v) / v
-            return (kappa * 1j * T).reshape(s.shape)
-        wk = 2 * np.pi * np.rint(self.k) / self.period
-        # Taylor coefficients X_j = x^(j)(sigma)/j! in one pass
-        C = np.stack([self.c * (1j * wk) ** j / math.factorial(j) for j in range(m + 1)], axis=1)
-        X = self.apply(_trig_eval(self.k, C, self.period, sig)).T  # (m + 1, M)
-        if m == 0:
-            return X[0].reshape(s.shape)
-        D1 = [(j + 1) * X[j + 1] for j in range(m)]  # Taylor coefficients of x'
-        v = [np.abs(D1[0])]
-        for j in range(1, m):  # |x'| = sqrt(x'.x'), term by term
-            q = sum((D1[i] * np.conj(D1[j - i])).real for i in range(j + 1))
-            v.append((q - sum(v[i] * v[j - i] for i in range(1, j))) / (2 * v[0]))
-        r = [1.0 / v[0]]
-        for j in range(1, m):  # 1/|x'|
-            r.append(-sum(v[i] * r[j - i] for i in range(1, j + 1)) / v[0])
-        g = list(X)
-        for _ in range(m):  # g <- (1/|x'|) dg/dsigma
-            dg = [(j + 1) * g[j + 1] for j in range(len(g) - 1)]
-            g = [sum(r[i] * dg[j - i] for i in range(j + 1)) for j in range(len(dg))]
-        return g[0].reshape(s.shape)
-
-    def samples(self, M: int):
-        """``M`` equally spaced sigma: ``x``, ``dx/dsigma``, the step, and ``w``, ``dw/dsigma``."""
-        sig = self.period * np.arange(M) / M
-        wz, dwz = self.w(sig), self.w(sig, 1)
-        return self.apply(wz), self.apply(dwz), self.period / M, wz, dwz
 
 
 # ---------------------------------------------------------------------------------------------
@@ -715,13 +251,13 @@ class ContactContour(RichDisplay):
     _c: np.ndarray = field(repr=False)
     _poly: Poly2 = field(repr=False)
     _star_center: tuple[float, float] | None = field(repr=False)
-    _framed: _FramedCurve | None = field(default=None, repr=False)
+    _framed: FramedCurve | None = field(default=None, repr=False)
 
     # ---- the curve (3.3) ------------------------------------------------------------------
     def _z(self, s, m=0):
         if self._framed is not None:
             return self._framed.z(s, m)
-        return _trig_eval(self._k, self._c, self.perimeter, s, m)
+        return trig_eval(self._k, self._c, self.perimeter, s, m)
 
     @staticmethod
     def _pair(z):
@@ -901,7 +437,7 @@ class ContactContour(RichDisplay):
     def latex(self) -> str:
         """LaTeX summary: the contour equation and its measured size."""
         return (
-            r"\Gamma_0:\ " + sp.latex(self.Phi) + rf" = {sp.latex(sp.Float(self.delta0, 12))}"
+            r"\Gamma_0:\ " + normal_latex(self.Phi) + rf" = {normal_latex(sp.Float(self.delta0, 12), digits=12)}"
             rf",\quad |\Gamma_0| = {self.perimeter:.12g},\quad |\omega_0| = {self.area:.12g}"
         )
 
@@ -909,8 +445,8 @@ class ContactContour(RichDisplay):
         """The lines of ``str(self)``."""
         acc = self.accuracy
         return [
-            f"ContactContour: Gamma_0 = {{{fmt(self.Phi)} = {fmt(self.delta0)}}}   (3.3)-(3.14)",
-            f"  perimeter |Gamma_0| = {fmt(self.perimeter)}, area |omega_0| = {fmt(self.area)}",
+            f"ContactContour: Γ₀ = {{{fmt(self.Phi)} = {fmt(self.delta0)}}}   (3.3)-(3.14)",
+            f"  perimeter |Γ₀| = {fmt(self.perimeter)}, area |ω₀| = {fmt(self.area)}",
             f"  centroid ({fmt(self.centroid[0])}, {fmt(self.centroid[1])}), {len(self.nodes)} nodes",
             (f"  accuracy: distance from Gamma_0 {acc.level_distance:.1e}, arc-length speed {acc.speed_error:.1e}, "
             f"turning number {acc.turning_number:.12g}"),
@@ -987,10 +523,10 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
         kap = float(np.max(np.abs(polys)))
         frame, polys, det = Frame(frame.A * kap, frame.ell * kap, d0), polys / kap, det * kap * kap
     Ps = transformed(P, frame)
-    res = _nodes_by_reference(Ps, 1.0, polys, n, tol)
+    res = nodes_by_reference(Ps, 1.0, polys, n, tol)
     acc = _accuracy(Ps, 1.0, *res) if res is not None else None
     if acc is None or (n is None and not _acceptable(acc, 1e-9)):
-        alt = _nodes_by_ode(Ps, 1.0, polys, n, tol)
+        alt = nodes_by_ode(Ps, 1.0, polys, n, tol)
         if alt is not None:
             acc_alt = _accuracy(Ps, 1.0, *alt)
             if acc is None or acc_alt.speed_error < acc.speed_error:
@@ -998,7 +534,7 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     if acc is None or (not _acceptable(acc, 1e-6) if n is None else abs(acc.turning_number - 1) > 1e-3):
         raise ComputationError(
             f"the spectral contour of Phi = {expr} at delta0 = {short(d0)} is inaccurate ({acc}): the contour "
-            f"has features too small for {_NMAX} arc-length nodes; try a larger n"
+            f"has features too small for {NMAX} arc-length nodes; try a larger n"
         )
     if aspect <= ASPECT_DIRECT:
         return _direct_contour(expr, d0, P, res[0] * ell, res[1] * ell, best, acc)
@@ -1033,9 +569,9 @@ def _direct_contour(expr, d0, P, Z, L, best, acc) -> ContactContour:
     """Gamma_0 by its arc-length Fourier series in x (aspect ratio up to ``ASPECT_DIRECT``)."""
     N = len(Z)
     Zhat = np.fft.fft(Z)
-    k, c = _sym_coeffs(Zhat)
+    k, c = sym_coeffs(Zhat)
     # area and centroid by Green's theorem (trapezoidal in s, spectral)
-    dZ = _uniform_eval(Zhat, L, deriv=1)
+    dZ = uniform_eval(Zhat, L, deriv=1)
     x, y, dx, dy = Z.real, Z.imag, dZ.real, dZ.imag
     ds = L / N
     area = 0.5 * float(np.sum(x * dy - y * dx)) * ds
@@ -1061,13 +597,14 @@ def _framed_contour(expr, d0, P, Pw, W, det, Zw, Lw, best, acc) -> ContactContou
 
     Area and centroid by Green's theorem in w (spectral) and the map: ``|omega_0| = det W |w(omega_0)|``,
     the centroid is ``W`` times the centroid in w; star-shapedness is affine invariant, so it is
-    tested in w.  The perimeter is :attr:`_ArcLength.length` (Jacobian ``|W w'|`` on panels).
+    tested in w.  The perimeter is ``fc.arc.length`` (``_ArcLength`` in :mod:`._contour_elongated`: the
+    Jacobian ``|W w'|`` on panels).
     """
     N = len(Zw)
     Zhat = np.fft.fft(Zw)
-    k, c = _trim(*_sym_coeffs(Zhat))
-    fc = _FramedCurve(W, det, k, c, Lw, Pw)
-    dZ = _uniform_eval(Zhat, Lw, deriv=1)
+    k, c = trim(*sym_coeffs(Zhat))
+    fc = FramedCurve(W, det, k, c, Lw, Pw)
+    dZ = uniform_eval(Zhat, Lw, deriv=1)
     x, y, dx, dy = Zw.real, Zw.imag, dZ.real, dZ.imag
     ds = Lw / N
     area_w = 0.5 * float(np.sum(x * dy - y * dx)) * ds
@@ -1135,18 +672,23 @@ class EllipseContour(RichDisplay):
 
     def latex(self) -> str:
         return (
-            rf"a = {sp.latex(self.a)},\quad b = {sp.latex(self.b)},\quad "
-            rf"e^2 = {sp.latex(self.e2)} \tag{{3.1}}"
+            rf"a = {normal_latex(self.a)},\quad b = {normal_latex(self.b)},\quad "
+            rf"e^2 = {normal_latex(self.e2)} \tag{{3.1}} \\" + "\n"
+            rf"|\omega_0| = {normal_latex(self.area)},\quad |\Gamma_0| = {normal_latex(self.perimeter)}"
+            + (r",\quad \mathrm{E}(k) = \int_0^{\pi/2}\sqrt{1 - k^2 \sin^2\theta}\,d\theta,\ k = e"
+               if self.perimeter.has(sp.elliptic_e) else "")
         )
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         return [
-            "EllipseContour: x_1**2/a**2 + x_2**2/b**2 = 1   (3.1)",
-            f"  a   = {fmt(self.a)}",
-            f"  b   = {fmt(self.b)}",
-            f"  e^2 = {fmt(self.e2)}",
-            f"  area |omega_0| = {fmt(self.area)}, perimeter |Gamma_0| = {fmt(self.perimeter)}",
+            "EllipseContour: x₁²/a² + x₂²/b² = 1   (3.1)",
+            f"  a  = {fmt(self.a)}",
+            f"  b  = {fmt(self.b)}",
+            f"  e² = {fmt(self.e2)}",
+            f"  area |ω₀| = {fmt(self.area)}, perimeter |Γ₀| = {fmt(self.perimeter)}"
+            + ("   (E(k): complete elliptic integral of the second kind, modulus k = e)"
+               if self.perimeter.has(sp.elliptic_e) else ""),
         ]
 
 

@@ -120,7 +120,9 @@ from .. import symbols as S
 from .._checks import InputError, InputTypeError, check_bounded, check_int
 from ..display import RichDisplay, fmt
 from ..layers.kernels import FrictionlessLayer, GenericLayer, IncompressibleLayer, LayerKernel
+from ..normal import join_signed, normal_latex
 from ..punch import Punch
+from .force_law import layer_label
 from .incompressible import thin_layer_operator, two_term_edge_shift
 from .inner import inner_pressure
 from .wiener_hopf import edge_shift_exact
@@ -371,10 +373,10 @@ class ThinFlatPunch(RichDisplay):
         d = thin_flat_punch_derivation()
         if self.regime == "incompressible":
             expr = d.incompressible_resummed.subs({d.c1: sp.Rational(2, 3), d.h: sp.Float(self.h, 10)})
-            return rf"\kappa \simeq {sp.latex(expr)} \tag{{F.14}}"
+            return rf"\kappa \simeq {normal_latex(expr)} \tag{{F.14}}"
         if self.regime == "compressible":
             expr = d.resummed.subs({d.A: sp.Float(self.A, 10), d.h: sp.Float(self.h, 10)})
-            return rf"\kappa \simeq {sp.latex(expr)} \tag{{F.12}}"
+            return rf"\kappa \simeq {normal_latex(expr)} \tag{{F.12}}"
         return (rf"\kappa \simeq \frac{{\pi (\lambda + {self.h_model:.6g})^4}}{{32 \cdot {self.c1:.6g}\,\lambda}}"
                 rf"\,\psi\!\left(\frac{{\lambda + {self.h_model:.6g}}}{{{math.sqrt(self.m1):.6g}}}\right) \tag{{F.15}}")
 
@@ -382,33 +384,48 @@ class ThinFlatPunch(RichDisplay):
 
     def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
         """``(arguments, outputs)`` for code generation: ``kappa(a_over_H)`` of :meth:`resummed` ((F.12), (F.15)
-        with Bessel functions, (F.14)) and its ``error_estimate`` (F.16), with this layer's numbers as floats.
+        with Bessel functions, (F.14)) and its ``error_estimate`` (F.16), in this layer's numbers ``A``, ``h^*``,
+        ``m_1``, ``c_1``, ``h`` (:meth:`codegen_constants`: named constants of the generated code).
         """
         x = sp.Symbol("a_over_H", positive=True)
-        f = lambda v: sp.Float(v, 17)  # noqa: E731 - the layer's numbers, to double precision
-        inc = f(2.5) / x**2
+        A, hs, m1, c1, h = (sp.Symbol(n, real=True) for n in ("A", "h^*", "m_1", "c_1", "h"))
+        inc = sp.Float(2.5, 17) / x**2
         if self.regime == "incompressible":
-            return (x,), {"kappa": sp.pi * (x + f(self.h)) ** 4 / (32 * f(self.c1) * x), "error_estimate": inc}
+            return (x,), {"kappa": sp.pi * (x + h) ** 4 / (32 * c1 * x), "error_estimate": inc}
         if self.regime == "compressible":
-            kappa = sp.pi * (x + f(self.h)) ** 2 / (4 * f(self.A) * x)
-            hs = self.h
+            kappa = sp.pi * (x + hs) ** 2 / (4 * A * x)
+            shift = hs
         else:  # (F.15): psi(z) = 8 (1 - 2 I_1(z)/(z I_0(z)))/z^2
-            xe = x + f(self.h_model)
-            z = xe / f(math.sqrt(self.m1))
+            xe = x + h
+            z = xe / sp.sqrt(m1)
             psi_z = 8 * (1 - 2 * sp.besseli(1, z) / (z * sp.besseli(0, z))) / z**2
-            kappa = sp.pi * xe**4 * psi_z / (32 * f(self.c1) * x)
-            hs = self.h_model - math.sqrt(self.m1)
-        cubic = f(abs(self.m1) + hs * hs + 0.02) / x**3
+            kappa = sp.pi * xe**4 * psi_z / (32 * c1 * x)
+            shift = h - sp.sqrt(m1)
+        cubic = (sp.Abs(m1) + shift**2 + sp.Float(0.02, 17)) / x**3
         return (x,), {"kappa": kappa, "error_estimate": sp.Piecewise((cubic, cubic < inc), (inc, True))}  # the min
+
+    def codegen_constants(self) -> dict:
+        """The numbers of this layer in :meth:`codegen_expressions`, each with where it comes from."""
+        f = lambda v: sp.Float(v, 17)  # noqa: E731 - the layer's numbers, to double precision
+        lay = layer_label(self.layer)
+        model = "incompressible" if self.regime == "incompressible" else "two-term"
+        notes = {"A": (self.A, f"A({lay}) = lim L(s)/s (2.4)"),
+                 "m_1": (self.m1, f"m_1({lay}): L(s)/s = A (1 + m_1 s^2 + ...) (2.20)"),
+                 "h^*": (self.h, f"edge shift h*({lay}), exact Wiener-Hopf solution (3.18), (3.25)"),
+                 "c_1": (self.c1, f"c_1({lay}) = A m_1, coefficient of Delta in the thin-layer operator (I.2)"),
+                 "h": (self.h if self.regime == "incompressible" else self.h_model,
+                       f"edge correction h({lay}) of the {model} operator (I.12)")}
+        used = {"compressible": ("A", "m_1", "h^*"), "two-term": ("m_1", "c_1", "h"), "incompressible": ("c_1", "h")}
+        return {sp.Symbol(n, real=True): (f(notes[n][0]), notes[n][1]) for n in used[self.regime]}
 
     def text_lines(self) -> list[str]:
         lines = [f"ThinFlatPunch: {self.layer}, {self.regime}   (F.10)-(F.16)"]
         if self.regime != "incompressible":
-            lines.append(f"  A = {self.A:.12g}, m_1 = {self.m1:.12g}, h* = {self.h:.12g}")
-            lines.append("  kappa ~ (pi/(4A)) (lambda + 2 h*)   (F.11)")
+            lines.append(f"  𝒜 = {self.A:.12g}, m₁ = {self.m1:.12g}, h* = {self.h:.12g}")
+            lines.append("  κ ~ (π/(4𝒜)) (λ + 2h*)   (F.11)")
         else:
-            lines.append(f"  c_1 = {self.c1:.12g}, h = {self.h:.12g}")
-            lines.append("  kappa ~ (3 pi/64) (lambda^3 + 4 h lambda^2)   (F.14)")
+            lines.append(f"  c₁ = {self.c1:.12g}, h = {self.h:.12g}")
+            lines.append("  κ ~ (3π/64) (λ³ + 4h λ²)   (F.14)")
         if self.regime == "two-term":
             lines.append(f"  two-term operator (I.10): h (I.12) = {self.h_model:.12g}   (F.15)")
         return lines
@@ -583,19 +600,28 @@ class ThickFlatPunch(RichDisplay):
         which is 1 (no accuracy) from ``a/H = 0.8`` on, where the series is not used.
         """
         x = sp.Symbol("a_over_H", positive=True)
-        c = [sp.Float(v, 17) for v in self.coefficients]
+        c = [sp.Integer(1)] + [sp.Symbol(f"c_{k}", real=True) for k in range(1, self.order + 1)]  # codegen_constants
         kappa = sp.Add(*[ck * x**k for k, ck in enumerate(c)])
         N = self.order
         est = (sp.Abs(c[N] * x**N) + sp.Abs(c[N - 1] * x ** (N - 1))) / sp.Abs(kappa)
         return (x,), {"kappa": kappa, "error_estimate": sp.Piecewise((est, x < THICK_LIMIT), (1, True))}
 
+    def codegen_constants(self) -> dict:
+        """The series coefficients ``c_k`` (F.18) of this layer, named constants of the generated code."""
+        lay = layer_label(self.layer)
+        return {sp.Symbol(f"c_{k}", real=True): (sp.Float(self.coefficients[k], 17),
+                                                 f"c_{k}({lay}): coefficient of (a/H)^{k}, thick-layer series (F.18)")
+                for k in range(1, self.order + 1)}
+
     def latex(self) -> str:
-        terms = " + ".join([f"{self.coefficients[k]:.6g}\\,\\lambda^{{{k}}}" for k in range(1, min(self.order, 4) + 1)])
-        return rf"\kappa = 1 + {terms} + \dots \tag{{F.18}}"
+        terms = join_signed(["1"] + [f"{self.coefficients[k]:.6g}\\,\\lambda" + (f"^{{{k}}}" if k > 1 else "")
+                                     for k in range(1, min(self.order, 4) + 1)])
+        return rf"\kappa = {terms} + \dots \tag{{F.18}}"
 
     def text_lines(self) -> list[str]:
-        lines = [f"ThickFlatPunch: {self.layer}, kappa = 1 + sum c_k (a/H)^k through order {self.order}   (F.18)"]
-        lines += [f"  c_{k} = {fmt(self.coefficients[k])}" for k in range(1, min(self.order, 6) + 1)]
+        lines = [f"ThickFlatPunch: {self.layer}, κ = 1 + Σ c_k (a/H)^k through order {self.order}   (F.18)"]
+        sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+        lines += [f"  c{str(k).translate(sub)} = {fmt(self.coefficients[k])}" for k in range(1, min(self.order, 6) + 1)]
         return lines
 
 

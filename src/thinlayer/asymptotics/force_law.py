@@ -89,6 +89,7 @@ from .._checks import positive as _positive
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
+from ..normal import join_signed, normal_latex
 from ..parse import parse_number
 from ..punch import Punch, PunchError
 from ..results import checked_lambdify, latex_equation
@@ -387,9 +388,9 @@ class ForceLaw(RichDisplay):
         """``(arguments, {name: expression})`` for :mod:`thinlayer.export.codegen` (closed forms only).
 
         Outputs ``force`` (1.8) and ``contact_area_leading`` (|omega_0|) and, when the perimeter has
-        no complete elliptic integral (a circle; none of the target languages has ``E(m)``),
+        no complete elliptic integral (a circle; none of the target languages has ``E(k)``),
         ``contact_area`` (3.25).  For the elliptic paraboloid multiply ``h^* H`` by the perimeter
-        ``4 a E(1 - b^2/a^2)`` yourself.
+        ``4 a E(k)``, ``k = sqrt(1 - b^2/a^2)`` (the modulus; scipy's ``ellipe`` takes ``m = k^2``) yourself.
         """
         if self.P0 is None:
             raise InputError(f"no closed-form force law for {self.punch.name}; code generation needs one")
@@ -397,7 +398,21 @@ class ForceLaw(RichDisplay):
         if not self.perimeter.has(sp.elliptic_e):
             outs["contact_area"] = self.contact_area
         free = set().union(*(e.free_symbols for e in outs.values()))
-        return tuple(a for a in self.arguments if a in free), outs
+        constants = self.codegen_constants() if h_star in free else {}
+        return tuple(a for a in self.arguments if a in free and a not in constants), outs
+
+    def codegen_constants(self) -> dict:
+        """``{h^*: (number, note)}`` when the layer has one edge shift (a numeric nu, the frictionless base), else
+        ``{}`` (a symbolic nu: ``h^*`` stays an argument).  Generated code defines it as a named constant.
+        """
+        try:
+            key = self.layer.edge_shift_key
+        except ValueError:
+            return {}
+        from .wiener_hopf import edge_shift
+
+        return {h_star: (sp.Float(edge_shift(key, kernel="exact"), 17),
+                         f"edge shift h*({layer_label(self.layer)}), exact Wiener-Hopf solution (3.18), (3.25)")}
 
     def latex(self) -> str:
         th = self.layer.vartheta
@@ -405,19 +420,21 @@ class ForceLaw(RichDisplay):
                  _J: r"\oint_{\Gamma_0}|\nabla\Phi|\,ds"}
         rem_P = r" + O\!\left(P_0 \frac{H^3}{a^3}\right)"
         rem_A = r" + O\!\left(|\omega_0| \frac{H^2}{a^2}\right)"
-        lead = sp.latex(sp.factor(th / (self.layer.A * S.H)))
-        corr = sp.latex(sp.factor(self.coefficient))
+        lead = normal_latex(sp.factor(th / (self.layer.A * S.H)))
+        corr = normal_latex(sp.factor(self.coefficient))
         lines = [
-            latex_equation("P", lead + names[_V] + _signed(corr) + names[_J] + rem_P, "1.8"),
+            latex_equation("P", join_signed([lead + names[_V], corr + names[_J] if self.coefficient != 0 else ""])
+                           + rem_P, "1.8"),
             latex_equation(r"\int_{-\infty}^{\infty}(\hat Q(v) - \max(v, 0))\,dv",
-                           sp.latex(boundary_layer_force_defect()), None),
+                           normal_latex(boundary_layer_force_defect()), None),
         ]
         if self.P0 is not None:
             rel = sp.factor(sp.cancel(self.P1 / self.P0))
-            lines.append(latex_equation("P", sp.latex(sp.factor(self.P0)) + r"\left(1"
-                                        + _signed(sp.latex(rel)) + r"\right)" + rem_P, "1.8"))
-            lines.append(latex_equation(r"|\omega|", sp.latex(self.area0) + " - "
-                                        + sp.latex(h_star * S.H * self.perimeter) + rem_A, "3.25"))
+            bracket = r"\left(" + join_signed(["1", normal_latex(rel)]) + r"\right)" if rel != 0 else ""
+            lines.append(latex_equation("P", normal_latex(sp.factor(self.P0)) + bracket + rem_P, "1.8"))
+            lines.append(latex_equation(r"|\omega|", join_signed([normal_latex(self.area0),
+                                                                   "- " + normal_latex(h_star * S.H * self.perimeter)])
+                                        + rem_A, "3.25"))
         else:
             lines.append(latex_equation(r"|\omega|", r"|\omega_0| - h^* H |\Gamma_0|" + rem_A, "3.25"))
         return " \\\\\n".join(lines)
@@ -556,18 +573,34 @@ class ForceLaw(RichDisplay):
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         out = [f"ForceLaw: {self.punch.name} on {self.layer}, {self.kind}   (1.8), (3.25)",
-               f"  Phi = {fmt(self.punch.expr)}"]
+               f"  Φ  = {fmt(self.punch.expr)}"]
         if self.P0 is not None:
-            out += ["  P  = P0 + P1 + O(P0 (H/a)**3)",
-                    f"  P0 = {fmt(self.P0)}",
-                    f"  P1 = {fmt(self.P1)}",
-                    f"  |omega| = {fmt(self.area0)} - h* H ({fmt(self.perimeter)}) + O(|omega| (H/a)**2)"]
+            out += ["  P  = P₀ + P₁ + O(P₀ (H/a)³)",
+                    f"  P₀ = {fmt(self.P0)}",
+                    f"  P₁ = {fmt(self.P1)}",
+                    f"  |ω| = {fmt(self.area0)} - h* H {fmt(self.perimeter)} + O(|ω| (H/a)²)"
+                    if self.perimeter.is_Atom else
+                    f"  |ω| = {fmt(self.area0)} - h* H ({fmt(self.perimeter)}) + O(|ω| (H/a)²)"]
+            if self.perimeter.has(sp.elliptic_e):
+                out.append("  E(k): complete elliptic integral of the second kind, modulus k (the eccentricity)")
         else:
-            out += ["  P  = vartheta/(A H) iint_omega0 (delta0 - Phi) dx + c oint_Gamma0 |grad Phi| ds"
-                    " + O(P0 (H/a)**3)",
+            out += ["  P  = ϑ/(𝒜 H) ∬_ω₀ (δ₀ - Φ) dx + c ∮_Γ₀ |∇Φ| ds + O(P₀ (H/a)³)",
                     f"  c  = {fmt(self.coefficient)}",
                     "  no closed form: use .evaluate(delta0, H, mu, ...) (integrals over the contact contour)"]
         return out
+
+
+def layer_label(layer: LayerKernel) -> str:
+    """The layer a number belongs to, as a note of generated code says it: ``nu=0.3``, ``frictionless base``.
+
+    >>> from thinlayer import BondedLayer, FrictionlessLayer
+    >>> layer_label(BondedLayer("3/10")), layer_label(FrictionlessLayer())
+    ('nu=3/10', 'frictionless base')
+    """
+    text = str(layer)
+    if getattr(layer, "base", None) == "frictionless":
+        return "frictionless base"
+    return text[text.index("(") + 1:-1] if text.startswith("BondedLayer(") and text.endswith(")") else text
 
 
 def law_arguments(*exprs: sp.Expr | None) -> tuple[sp.Symbol, ...]:
@@ -587,11 +620,6 @@ def lambdify_law(args: tuple, exprs: tuple, backend: str = "numpy"):
         checked_lambdify(args, exprs, "sympy")  # names any missing argument
         return sp.lambdify(args, exprs, modules=[{"elliptic_e": ellipe, "elliptic_k": ellipk}, "numpy"], cse=True)
     return checked_lambdify(args, exprs, backend)
-
-
-def _signed(tex: str) -> str:
-    """`` + tex`` or `` - rest`` when tex starts with a minus sign."""
-    return " - " + tex[1:].lstrip() if tex.startswith("-") else " + " + tex
 
 
 # ---------------------------------------------------------------------------------------------

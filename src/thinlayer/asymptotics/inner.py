@@ -33,6 +33,7 @@ from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.coefficients import order_limit
 from ..layers.kernels import LayerKernel
+from ..normal import normal_latex
 from ..parse import as_expr
 from ..punch import Punch
 from ..results import checked_lambdify
@@ -126,16 +127,19 @@ class InnerPressure(RichDisplay):
         lines = []
         for k, t in enumerate(self.scaled_terms):
             tag = "2.27" if k == 0 else "4.1"
-            lines.append(rf"p_{{{k}}}^*(\boldsymbol{{\xi}}) = {sp.latex(t)} \tag{{{tag}}}")
-        lines.append(rf"p(x_1, x_2) \sim {sp.latex(self.pressure)} \tag{{2.26}}")
+            lines.append(rf"p_{{{k}}}^*(\boldsymbol{{\xi}}) = {normal_latex(t)} \tag{{{tag}}}")
+        lines.append(rf"p(x_1, x_2) \sim {normal_latex(self.pressure)} \tag{{2.26}}")
         return " \\\\\n".join(lines)
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         how = "closed form (4.1)" if self.method == "closed" else "recursion (2.28)"
         out = [(f"InnerPressure: {self.punch.name} on {self.layer}, {self.order} term{'s' if self.order != 1 else ''} "
-               f"({how})   (2.26)"), f"  Phi = {fmt(self.punch.expr)}"]
-        out += [f"  p_{k} = {fmt(t)}" for k, t in enumerate(self.terms)]
+               f"({how})   (2.26)"), f"  Φ   = {fmt(self.punch.expr)}"]
+        sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+        out += [f"  p{str(k).translate(sub)}  = {fmt(t)}" for k, t in enumerate(self.terms)]
+        out += [f"  p{str(k).translate(sub)}* = {fmt(t)}   (scaled, ξ = x/H*, {'2.27' if k == 0 else '4.1'})"
+                for k, t in enumerate(self.scaled_terms)]
         out.append(f"  arguments of lambdify(): ({', '.join(a.name for a in self.arguments)})")
         return out
 

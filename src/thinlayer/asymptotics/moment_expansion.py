@@ -33,6 +33,7 @@ from ..errors import boundary, boundary_methods
 from ..layers.coefficients import check_coefficient_order
 from ..layers.kernels import LayerKernel
 from ..layers.moments import kernel_moment
+from ..normal import join_signed, normal_latex
 from ..parse import sympy_value
 from ..results import checked_lambdify
 from ..symbols import laplacian
@@ -90,8 +91,10 @@ class MomentExpansion(RichDisplay):
         parts = []
         for n, w in enumerate(self.weights()):
             op = r"\delta(\boldsymbol{\xi})" if n == 0 else rf"\Delta^{{{n}}}\delta(\boldsymbol{{\xi}})" if n > 1 else r"\Delta\delta(\boldsymbol{\xi})"  # noqa: E501 (one formula)
-            parts.append(rf"\left({sp.latex(w)}\right) \Lambda^{{{-2 * n - 2}}} {op}")
-        return r"k(\Lambda\boldsymbol{\xi}) \sim " + " + ".join(parts) + r" + \dots \tag{2.22}"
+            tex = normal_latex(w)
+            parts.append((rf"\left({tex}\right)" if isinstance(w, sp.Add) else tex) + rf" \Lambda^{{{-2 * n - 2}}} {op}"
+                         if w != 0 else "")
+        return r"k(\Lambda\boldsymbol{\xi}) \sim " + join_signed(parts) + r" + \dots \tag{2.22}"
 
     def lambdify(self, backend: str = "numpy"):
         """Numeric weights ``f(*params) -> (w_0, ..., w_order)`` with the layer's parameter as argument."""
@@ -105,9 +108,10 @@ class MomentExpansion(RichDisplay):
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        out = [(f"MomentExpansion of {self.layer}: k(Lambda xi) ~ sum_n w_n Lambda^(-2n-2) Delta^n delta(xi), "
+        out = [(f"MomentExpansion of {self.layer}: k(Λξ) ~ Σₙ wₙ Λ^(-2n-2) Δⁿ δ(ξ), "
                f"n <= {self.order}   (2.22)")]
-        out += [f"  w_{n} = {fmt(w)}" for n, w in enumerate(self.weights())]
+        sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+        out += [f"  w{str(n).translate(sub)} = {fmt(w)}" for n, w in enumerate(self.weights())]
         return out
 
 

@@ -78,9 +78,11 @@ remainder ``O(|omega_0| (H/a)^3)``.
 
 Closed forms of the edge integrals ``E_1 = oint (Laplacian Phi + Phi_nn) ds`` and
 ``E_2 = oint Laplacian Phi/|grad Phi| ds``: for ``Phi = x^T K x/2 + ...`` (eigenvalues ``l_1, l_2`` of K,
-``D_0 = delta0 - min Phi``, ``m = 1 - l_2/l_1``; on the ellipse ``ds/|grad Phi| = dt/sqrt(l_1 l_2)``)
+``D_0 = delta0 - min Phi``, the modulus ``k = sqrt(1 - l_2/l_1)``; on the ellipse ``ds/|grad Phi| = dt/sqrt(l_1 l_2)``)
 ``E_2 = 2 pi (l_1 + l_2)/sqrt(l_1 l_2)`` and
-``E_1 = (l_1 + l_2) |Gamma_0| + 4 sqrt(2 D_0/(l_1 l_2)) ((l_1 + l_2) sqrt(l_1) E(m) - l_1 l_2 K(m)/sqrt(l_1))``;
+``E_1 = (l_1 + l_2) |Gamma_0| + 4 sqrt(2 D_0/(l_1 l_2)) ((l_1 + l_2) sqrt(l_1) E(k) - l_1 l_2 K(k)/sqrt(l_1))``
+(``K(k)``, ``E(k)`` the complete elliptic integrals of modulus k: sympy's ``elliptic_k(m)``, ``elliptic_e(m)`` with
+``m = k^2``);
 for ``Phi = c r^{2k}``: ``E_1 = 4 pi k (4k - 1) c a^{2k-1}``, ``E_2 = 4 pi k``.  Any other
 punch: numerical, on the spectral contour.  For the sphere ``P = P_0 (1 - 4 m_1 (H/a)^2 + 12 r_3 (H/a)^3)`` and the
 contact radius is ``a - h^* H - m_1 H^2/a``.
@@ -110,9 +112,19 @@ from .._checks import InputError, InputTypeError, parse_nu, positive
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
+from ..normal import join_signed, normal_latex
 from ..punch import Punch
 from ..results import latex_equation
-from .force_law import ForceLaw, ForceValues, force_law, h_star, lambdify_law, law_arguments, radial_monomial
+from .force_law import (
+    ForceLaw,
+    ForceValues,
+    force_law,
+    h_star,
+    lambdify_law,
+    law_arguments,
+    layer_label,
+    radial_monomial,
+)
 from .inner import inner_pressure
 
 __all__ = [
@@ -186,20 +198,20 @@ class SecondOrderBoundaryLayer(RichDisplay):
     def latex(self) -> str:
         v = sp.Symbol("v")
         return " \\\\\n".join([
-            latex_equation("h", sp.latex(self.edge_shift), "SO.5"),
-            latex_equation(r"\int_0^\infty \hat q\, e^{-p\tau}\, d\tau", sp.latex(self.transform), "SO.6"),
-            latex_equation(r"\hat q(v)", sp.latex(self.far_field.subs(sp.Symbol("v"), v))
+            latex_equation("h", normal_latex(self.edge_shift), "SO.5"),
+            latex_equation(r"\int_0^\infty \hat q\, e^{-p\tau}\, d\tau", normal_latex(self.transform), "SO.6"),
+            latex_equation(r"\hat q(v)", normal_latex(self.far_field.subs(sp.Symbol("v"), v))
                            + r" + o(1),\quad v \to \infty", None),
-            latex_equation(r"\mathcal{A} D", sp.latex(self.force_defect), "SO.8"),
+            latex_equation(r"\mathcal{A} D", normal_latex(self.force_defect), "SO.8"),
         ])
 
     def text_lines(self) -> list[str]:
         return [
             "SecondOrderBoundaryLayer   (SO.5)-(SO.8)",
-            f"  h      = {self.edge_shift}",
-            f"  A D    = {self.force_defect}",
-            f"  L[qhat](p) = {self.transform}",
-            f"  qhat -> {self.far_field}",
+            f"  h      = {fmt(self.edge_shift)}",
+            f"  𝒜 D    = {fmt(self.force_defect)}",
+            f"  ℒ[q̂](p) = {fmt(self.transform)}",
+            f"  q̂ -> {fmt(self.far_field)}",
         ]
 
 
@@ -287,11 +299,11 @@ class EdgeConstants(RichDisplay):
         which = self.key
         if which != "frictionless" and len(which) > 12:  # a float nu kept as its exact binary value: show the float
             which = fmt(float(sp.Rational(which)))
-        which = "frictionless base" if which == "frictionless" else f"nu = {which}"
+        which = "frictionless base" if which == "frictionless" else f"ν = {which}"
         return [f"EdgeConstants ({which}):   (SO.4)",
-                f"  h* = {fmt(self.h_star)}, m_1 = {fmt(self.m1)}, r_3 = {fmt(self.r3)}  (spread over factorisations "
+                f"  h* = {fmt(self.h_star)}, m₁ = {fmt(self.m1)}, r₃ = {fmt(self.r3)}  (spread over factorisations "
                 f"{self.r3_spread:.1e})",
-                f"  sphere: P = P0 (1 - 4 m_1 (H/a)^2 + {fmt(12 * self.r3)} (H/a)^3)"]
+                f"  sphere: P = P₀ (1 - 4m₁ (H/a)² + {fmt(12 * self.r3)} (H/a)³)"]
 
 
 @lru_cache(maxsize=128)
@@ -465,8 +477,16 @@ class SecondOrderLaw(RichDisplay):
         return law_arguments(self.force, self.contact_area)
 
     def _constants_sub(self) -> dict:
-        c = edge_constants(self.layer)
-        return {r_3: sp.Float(c.r3, 17), h_star: sp.Float(c.h_star, 17)}
+        return {k: v for k, (v, _) in self.codegen_constants().items()}
+
+    def codegen_constants(self) -> dict:
+        """``{r_3: (number, note), h^*: (number, note)}``: the layer's constants (SO.4), (3.25), defined as named
+        constants in generated code.
+        """
+        c, lay = edge_constants(self.layer), layer_label(self.layer)
+        return {r_3: (sp.Float(c.r3, 17),
+                      f"r_3({lay}): log Phi(p) = -h* p - m_1 p^2/2 + r_3 p^3 + ..., Wiener-Hopf (SO.4)"),
+                h_star: (sp.Float(c.h_star, 17), f"edge shift h*({lay}), exact Wiener-Hopf solution (3.18), (3.25)")}
 
     def lambdify(self, args=None, backend: str = "numpy"):
         """``(P, |omega|)`` as one numeric function of :attr:`arguments` with ``r_3``, ``h^*`` substituted."""
@@ -480,20 +500,20 @@ class SecondOrderLaw(RichDisplay):
     codegen_name = "force_law_second_order"
 
     def codegen_expressions(self):
-        """``(arguments, {"force": ..., "contact_area": ...})`` with the layer's constants substituted
-        (closed forms without elliptic integrals: a circle or a radial monomial).
+        """``(arguments, {"force": ..., "contact_area": ...})`` in the layer's constants ``r_3``, ``h^*``
+        (:meth:`codegen_constants`; closed forms without elliptic integrals: a circle or a radial monomial).
         """
         if self.P2 is None:
             raise InputError(f"no closed-form second-order law for {self.punch.name}; code generation needs one")
-        sub = self._constants_sub()
-        outs = {"force": self.force.subs(sub)}
-        area = self.contact_area.subs(sub)
+        sub = self.codegen_constants()  # r_3 and h^* stay named: the generated code defines them as constants
+        outs = {"force": self.force}
+        area = self.contact_area
         if not area.has(sp.elliptic_e, sp.elliptic_k):
             outs["contact_area"] = area
         if outs["force"].has(sp.elliptic_e, sp.elliptic_k):
             raise InputError("the elliptic paraboloid's second-order force has complete elliptic integrals K, E, "
                              "which the target languages lack; use .lambdify() or .evaluate()")
-        free = set().union(*(e.free_symbols for e in outs.values()))
+        free = set().union(*(e.free_symbols for e in outs.values())) - set(sub)
         return tuple(a for a in self.arguments if a in free), outs
 
     def latex(self) -> str:
@@ -501,25 +521,28 @@ class SecondOrderLaw(RichDisplay):
         e1 = r"\oint_{\Gamma_0}\left(\Delta\Phi + \Phi_{nn}\right) ds"
         e2 = r"\oint_{\Gamma_0}\frac{\Delta\Phi}{|\nabla\Phi|}\, ds"
         lines = [
-            latex_equation("P_2", sp.latex(sp.factor(th * S.H**2 * r_3 / (2 * A))) + e1
+            latex_equation("P_2", normal_latex(sp.factor(th * S.H**2 * r_3 / (2 * A))) + e1
                            + r",\qquad P = P_0 + P_1 + P_2 + O\!\left(P_0 \frac{H^4}{a^4}\right)", "SO.9"),
-            latex_equation(r"|\omega|", r"|\omega_0| - h^* H |\Gamma_0| + \pi h^{*2} H^2 - "
-                           + sp.latex(sp.factor(self.layer.m(1) * S.H**2 / 2)) + e2
+            latex_equation(r"|\omega|", join_signed([r"|\omega_0| - h^* H |\Gamma_0| + \pi h^{*2} H^2",
+                                                     normal_latex(-sp.factor(self.layer.m(1) * S.H**2 / 2)) + e2
+                                                     if self.layer.m(1) != 0 else ""])
                            + r" + O\!\left(|\omega_0| \frac{H^3}{a^3}\right)", "SO.10"),
         ]
         if self.P2 is not None:
-            lines.append(latex_equation("P_2", sp.latex(sp.factor(self.P2)), "SO.9"))
-            lines.append(latex_equation(r"|\omega|", sp.latex(self.contact_area), "SO.10"))
+            lines.append(latex_equation("P_2", normal_latex(sp.factor(self.P2)), "SO.9"))
+            lines.append(latex_equation(r"|\omega|", normal_latex(self.contact_area), "SO.10"))
         return " \\\\\n".join(lines)
 
     def text_lines(self) -> list[str]:
         c = edge_constants(self.layer)
         out = [f"SecondOrderLaw: {self.punch.name}, {self.layer.name}   (SO.9), (SO.10)",
-               f"  P = P0 + P1 + P2,  P2 = vartheta H^2 r_3/(2A) oint (Lap Phi + Phi_nn) ds,  r_3 = {fmt(c.r3)}",
-               f"  |omega| = |omega_0| - h* H |Gamma_0| + pi h*^2 H^2 - m_1 H^2/2 oint Lap Phi/|grad Phi| ds,"
+               f"  P = P₀ + P₁ + P₂,  P₂ = ϑ H² r₃/(2𝒜) ∮_Γ₀ (ΔΦ + Φ_nn) ds,  r₃ = {fmt(c.r3)}",
+               f"  |ω| = |ω₀| - h* H |Γ₀| + π h*² H² - m₁ H²/2 ∮_Γ₀ ΔΦ/|∇Φ| ds,"
                f"  h* = {fmt(c.h_star)}"]
         if self.P2 is not None:
-            out.append(f"  P2 = {sp.factor(self.P2)}")
+            out.append(f"  P₂ = {fmt(sp.factor(self.P2))}")
+            if self.P2.has(sp.elliptic_e, sp.elliptic_k):
+                out.append("  K(k), E(k): complete elliptic integrals of the first and second kind, modulus k")
         return out
 
     # ---- numbers ---------------------------------------------------------------------------
@@ -719,8 +742,8 @@ class SecondOrderProfile(RichDisplay):
                 r"I_0 = \int_0^\tau \hat q_0 \tag{SO.7}")
 
     def text_lines(self) -> list[str]:
-        return ["SecondOrderProfile: qhat = qhat_0 + eps ((h* + tau) qhat_0/2 - I_0) - 2 beta I_0   (SO.7)",
-                f"  h* = {fmt(self.h_star)}, m_1 = {fmt(self.m1)}, table 0 <= tau <= {self.tau_max:.4g}"]
+        return ["SecondOrderProfile: q̂ = q̂₀ + ε ((h* + τ) q̂₀/2 - I₀) - 2β I₀   (SO.7)",
+                f"  h* = {fmt(self.h_star)}, m₁ = {fmt(self.m1)}, table 0 <= τ <= {self.tau_max:.4g}"]
 
 
 def second_order_profile(layer: LayerKernel) -> SecondOrderProfile:

@@ -45,6 +45,7 @@ from .._checks import positive as _positive
 from ..display import RichDisplay
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
+from ..normal import normal_latex
 from ..punch import Punch, PunchError
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, error_estimate_arrays, force_law
@@ -276,12 +277,12 @@ class ContactSolution(RichDisplay):
         P0, P1, P2 = v.P0, v.P1, v.P2
         second = self.order == 2
         nu = getattr(self.layer, "nu", None)
-        nu = sp.latex(sp.Rational(Fraction(mpmath.nstr(mpmath.mpf(self.nu), 15)))
+        nu = normal_latex(sp.Rational(Fraction(mpmath.nstr(mpmath.mpf(self.nu), 15)))
                       if nu is None or isinstance(nu, mpmath.mpf) else nu)
         if self.layer.base == "frictionless":
             nu += r"\ (\text{frictionless base})"
         rows = [
-            rf"\Phi = {sp.latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
+            rf"\Phi = {normal_latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
             rf"\quad H = {self.H:.6g},\quad \mu = {self.mu:.6g},\quad H/a = {self.H_over_a:.4g}",
             rf"P = {P0:.8g} {'-' if P1 < 0 else '+'} {abs(P1):.8g}"
             + (rf" {'-' if P2 < 0 else '+'} {abs(P2):.8g}" if second else "")
@@ -521,7 +522,7 @@ class ForceArrays:
 
 @lru_cache(maxsize=128)
 def _array_law(law: Any, keys: tuple) -> Any:
-    per = law.perimeter  # E(m) of an ellipse: its eccentricity does not depend on the depth, a number here
+    per = law.perimeter  # E(k) of an ellipse (k = e): its eccentricity does not depend on the depth, a number here
     per = per.xreplace({e: e.evalf(20) for e in per.atoms(sp.elliptic_e) if e.args[0].is_number})
     return sp.lambdify(keys, [law.P0, law.P1, law.area0, per], modules="numpy")
 

@@ -86,8 +86,9 @@ from sympy.polys.rings import ring
 
 from .. import symbols as S
 from .._checks import InputError, InputTypeError, check_bounded, check_order, positive
-from ..display import RichDisplay
+from ..display import RichDisplay, fmt
 from ..layers.kernels import FrictionlessLayer, LayerKernel
+from ..normal import join_signed, normal_latex
 from ..parse import as_expr
 from ..punch import Punch
 from ..results import checked_lambdify, latex_equation
@@ -463,16 +464,16 @@ class ThickLayerExpansion(RichDisplay):
         return ThickValues(d0, c, P, eps, self.order, ferr, rerr)
 
     def latex(self) -> str:
-        return " \\\\\n".join([latex_equation(r"\delta_0", sp.latex(self.delta0_of_c), "T.5"),
-                               latex_equation("P", sp.latex(self.force_of_c), "T.5")])
+        return " \\\\\n".join([latex_equation(r"\delta_0", normal_latex(self.delta0_of_c), "T.5"),
+                               latex_equation("P", normal_latex(self.force_of_c), "T.5")])
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        lines = [f"ThickLayerExpansion of {self.punch.name} Phi = {self.punch.expr}, "
+        lines = [f"ThickLayerExpansion of {self.punch.name} Φ = {fmt(self.punch.expr)}, "
                  f"through (c/H)^{self.order}   (T.5)"]
         for m in range(min(self.order, 3) + 1):
-            lines.append(f"  (c/H)^{m}:  delta0 {sp.simplify(self.delta_terms[m])},  "
-                         f"P {sp.simplify(self.force_terms[m])}")
+            lines.append(f"  (c/H)^{m}:  δ₀ {fmt(sp.simplify(self.delta_terms[m]))},  "
+                         f"P {fmt(sp.simplify(self.force_terms[m]))}")
         return lines
 
 
@@ -644,18 +645,20 @@ class ThickSeries(RichDisplay):
 
     def latex(self) -> str:
         x = chi_sym if self.shape == "sphere" else sp.Symbol("c") / S.H
-        lines = [latex_equation(r"P/P_0", sp.latex(sp.Add(*[t * x**n for n, t in enumerate(self.force)])), "T.7")]
+        def series(coefficients: tuple) -> str:  # ascending powers of the variable, each term in the normal form
+            return join_signed([normal_latex(t * x**n) for n, t in enumerate(coefficients)])
+
+        lines = [latex_equation(r"P/P_0", series(self.force), "T.7")]
         if self.shape == "sphere":
-            lines.append(latex_equation("c/c_0", sp.latex(sp.Add(*[t * x**n for n, t in enumerate(self.radius)])),
-                                        "T.7"))
+            lines.append(latex_equation("c/c_0", series(self.radius), "T.7"))
         return " \\\\\n".join(lines)
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        var = "chi = sqrt(R delta0)/H" if self.shape == "sphere" else "c/H"
+        var = "χ = √(R δ₀)/H" if self.shape == "sphere" else "c/H"
         lines = [f"ThickSeries ({self.shape}) in {var}, through order {self.order}   (T.7)"]
         for n in range(1, min(self.order, 4) + 1):
-            lines.append(f"  P: [{n}] {self.force[n]}")
+            lines.append(f"  P: [{n}] {fmt(self.force[n])}")
         return lines
 
 

@@ -94,6 +94,7 @@ from .._checks import InputError, InputTypeError, parse_nu
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
+from ..normal import normal_latex
 
 __all__ = [
     "KERNELS",
@@ -711,7 +712,11 @@ class WienerHopfSolution(RichDisplay):
         return float(val) - float(self.h) ** 2 / 2
 
     def latex(self) -> str:
-        which = r"\text{frictionless base}" if self.nu == FRICTIONLESS else rf"\nu = {sp.latex(self.nu)}"
+        if self.nu == FRICTIONLESS:
+            which = r"\text{frictionless base}"
+        else:  # a float nu is kept as its exact binary value: show it as the float
+            nu = self.nu if self.nu.q < 10**6 else sp.Float(float(self.nu), 15)
+            which = rf"\nu = {normal_latex(nu, digits=15)}"
         return (rf"h^* = {mpmath.nstr(self.h, 12)}\ ({which},\ \text{{{self.kernel} kernel}}),"
                 rf"\quad \tilde h^* = {mpmath.nstr(self.h_alexandrov, 12)} \tag{{3.25}}")
 
@@ -720,12 +725,12 @@ class WienerHopfSolution(RichDisplay):
         if isinstance(self.nu, str):
             which = "frictionless base"
         else:  # a float nu is kept as its exact binary value: show it as the float
-            which = f"nu = {fmt(self.nu) if self.nu.q < 10**6 else fmt(float(self.nu), 15)}"
+            which = f"ν = {fmt(self.nu) if self.nu.q < 10**6 else fmt(float(self.nu), 15)}"
         return [
             f"WienerHopfSolution: {self.kernel} kernel, {which} (normaliser {self.normaliser})   (3.18), (3.22)",
             f"  h* = {fmt(self.h)}   (Alexandrov (3.25): {fmt(self.h_alexandrov)})",
-            f"  A = {fmt(self.A)}, m_1 = {fmt(self.m1)}",
-            f"  qhat(tau) - tau - h* = O(exp(-{self.sigma:.6g} tau)); table for 0 <= tau <= {self.tau_max:.6g}",
+            f"  𝒜 = {fmt(self.A)}, m₁ = {fmt(self.m1)}",
+            f"  q̂(τ) - τ - h* = O(exp(-{self.sigma:.6g} τ)); table for 0 <= τ <= {self.tau_max:.6g}",
         ]
 
 

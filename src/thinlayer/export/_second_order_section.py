@@ -19,6 +19,7 @@ import sympy as sp
 
 from .. import symbols as S
 from ._normal import float_latex, normal_latex
+from .units import unit_power
 
 __all__ = ["second_order_part"]
 
@@ -86,7 +87,7 @@ def _boundary_layer(doc: Any) -> None:
              r"constant) and the force defect:")
     doc.math(rf"h = {normal_latex(bl.edge_shift.subs(sub))} \tag{{SO.5}}")
     doc.math(rf"\int_0^\infty \hat q\, e^{{-p\tau}}\, d\tau = {normal_latex(transform)} \tag{{SO.6}}")
-    doc.math(rf"\hat q(v) = {normal_latex(bl.far_field.subs(sub))} + o(1),\quad v \to \infty")
+    doc.math(rf"\hat q(v) = {normal_latex(bl.far_field.subs(sub))} + o(1),\quad v \to \infty \tag{{SO.7}}")
     doc.math(rf"\mathcal{{A}} D = {normal_latex(bl.force_defect.subs(sub))} \tag{{SO.8}}")
     doc.text(r"with $\Phi = \Phi(p)$ and $\Phi' = d\Phi/dp$.")
 
@@ -135,12 +136,12 @@ def _laws(doc: Any, der: Any) -> None:
     if elliptic:
         doc.text(r"For a quadratic punch $\Phi = \mathbf{x}^T K \mathbf{x}/2 + \dots$ with eigenvalues "
                  r"$\lambda_1 \ge \lambda_2$ of $K$ (here the curvatures $1/R_1$, $1/R_2$), "
-                 r"$m = 1 - \lambda_2/\lambda_1$ and $D_0 = \delta_0 - \min\Phi$, the edge integrals are "
-                 r"($ds/|\nabla\Phi| = dt/\sqrt{\lambda_1\lambda_2}$ on the ellipse; $K$ and $E$ the complete "
-                 r"elliptic integrals):")
+                 r"$k = \sqrt{1 - \lambda_2/\lambda_1}$ and $D_0 = \delta_0 - \min\Phi$, the edge integrals are "
+                 r"($ds/|\nabla\Phi| = dt/\sqrt{\lambda_1\lambda_2}$ on the ellipse; $\mathrm{K}(k)$ and "
+                 r"$\mathrm{E}(k)$ the complete elliptic integrals of the first and second kind of modulus $k$):")
         doc.lines([r"\oint_{\Gamma_0}\left(\Delta\Phi + \Phi_{nn}\right) ds = (\lambda_1 + \lambda_2)|\Gamma_0| + "
-                   r"4\sqrt{\frac{2 D_0}{\lambda_1\lambda_2}}\left((\lambda_1 + \lambda_2)\sqrt{\lambda_1}\,E(m) - "
-                   r"\lambda_2\sqrt{\lambda_1}\,K(m)\right)",
+                   r"4\sqrt{\frac{2 D_0}{\lambda_1\lambda_2}}\left((\lambda_1 + \lambda_2)\sqrt{\lambda_1}\,"
+                   r"\mathrm{E}(k) - \lambda_2\sqrt{\lambda_1}\,\mathrm{K}(k)\right)",
                    r"\oint_{\Gamma_0}\frac{\Delta\Phi}{|\nabla\Phi|}\, ds = "
                    r"\frac{2\pi(\lambda_1 + \lambda_2)}{\sqrt{\lambda_1\lambda_2}}"])
     else:
@@ -195,8 +196,7 @@ def _numbers(doc: Any, der: Any, law: Any) -> None:
         return
     u = der.units or {}
     F = rf"\,{u['force']}" if "force" in u else ""
-    L2 = "" if "length" not in u else (rf"\,\left({u['length']}\right)^{{2}}" if " " in u["length"]
-                                       else rf"\,{u['length']}^{{2}}")
+    L2 = "" if "length" not in u else rf"\,{unit_power(u['length'], 2)}"
     doc.text(r"At the numbers of the contact solution below (first order: $P_0 + P_1$ and (3.25)):")
     doc.lines([rf"P_0 + P_1 = {float_latex(v.force_first)}{F},\quad P_2 = {float_latex(v.P2)}{F},\quad "
                rf"P = {float_latex(v.force)}{F}",

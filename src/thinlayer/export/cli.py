@@ -132,13 +132,12 @@ def _num(x: Any) -> float | None:
 
 
 def _expr_json(e: Any) -> dict:
-    """``{"expr": sympy string, "latex": LaTeX, "value": float or null}``."""
-    import sympy as sp
-
+    """``{"expr": sympy string, "latex": LaTeX (the normal form of thinlayer.normal), "value": float or null}``."""
+    from ..normal import normal_latex
     from ..parse import as_expr
 
     e = as_expr(e)
-    return {"expr": str(e), "latex": sp.latex(e), "value": _num(e) if e.is_number else None}
+    return {"expr": str(e), "latex": normal_latex(e), "value": _num(e) if e.is_number else None}
 
 
 def _print(obj: Any, as_json: bool) -> None:
@@ -482,7 +481,7 @@ def _cmd_codegen_any_thickness(args) -> int:
     out_dir = Path(args.out)
     targets = {lang: out_dir / f"{name}.{'py' if lang == 'python' else 'c'}" for lang in langs}
     refuse_existing(targets.values(), args.overwrite)
-    with output_lock(out_dir, name):
+    with output_lock(out_dir, name, targets.values()):
         refuse_existing(targets.values(), args.overwrite)
         written = [str(atomic_write(targets[lang], src)) for lang, src in sources.items()]
     if args.json:
@@ -518,7 +517,7 @@ def _cmd_codegen(args) -> int:
     targets = [out_dir / fname for c in codes for fname in c.files]
     refuse_existing(targets, args.overwrite)  # every file checked before any is written
     written = []
-    with output_lock(out_dir, codes[0].function_name):
+    with output_lock(out_dir, codes[0].function_name, targets):
         refuse_existing(targets, args.overwrite)
         for c in codes:
             written += [str(p) for p in c.write(out_dir, force=True)]
@@ -538,8 +537,10 @@ def _add_report(sub: Any, fmt: type) -> None:
                        help="carry out a derivation file and write its LaTeX report (and PDF)",
                        description="Carry out a derivation file (derivations/*.toml) and write <out>/<name>.tex.\n"
                                    "JSON keys: tex, pdf (null without --pdf).",
-                       epilog="example:\n  thinlayer report derivations/sphere.toml --out build --pdf")
-    r.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml")
+                       epilog="examples:\n  thinlayer report derivations/sphere.toml --out build --pdf\n"
+                              "  thinlayer report errata --out build     # the whole errata registry")
+    r.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml, a catalogue name "
+                                "(sphere), or errata (the whole errata registry as one document)")
     r.add_argument("--out", default="build", help="output folder, created if missing (default: build)")
     r.add_argument("--pdf", action="store_true",
                    help="also compile the report (pdflatex; shell escape off, reading and writing only in its "

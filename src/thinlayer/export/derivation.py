@@ -20,6 +20,7 @@ except ModuleNotFoundError:  # pragma: no cover
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..punch import Punch
 from .report import ReportTextError, check_symbol_names, check_title
+from .units import unit_latex  # noqa: F401 - kept importable from here
 
 
 class DerivationFileError(ValueError):
@@ -42,6 +43,21 @@ class Derivation:
     units: dict | None = None
     flat_punch: dict | None = None
     second_order: dict | None = None
+
+
+@dataclass(frozen=True)
+class ErrataDocument:
+    """The document ``thinlayer report errata``: the whole errata registry (:mod:`thinlayer.errata`), no derivation
+    file; :func:`write_report` writes it like a report (``<out>/errata.tex``).
+    """
+
+    name: str = "errata"
+    title: str = "Errata of the publications thinlayer re-derives"
+    validation: None = None
+
+
+#: bare names the report command takes beside the catalogue's: documents that are no derivation file
+DOCUMENTS = {"errata": ErrataDocument}
 
 
 #: the schema: table -> {key: (python types, what is valid)}; any other key is an error
@@ -69,8 +85,9 @@ SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
                    "shapes": ((list,), "a list of shape names")},
     "second_order": {"nu": ((list,), "a list of 1 to 12 Poisson ratios in (-1, 1/2) (numbers, or exact strings "
                                      "like '3/10') or 'frictionless' (the rows of the table of r_3)")},
-    "units": {"length": ((str,), "a unit such as 'mm'"), "stress": ((str,), "a unit such as 'MPa' (of mu and E)"),
-              "force": ((str,), "a unit such as 'N'")},
+    "units": {"length": ((str,), "a length unit such as 'mm' or 'um'"),
+              "stress": ((str,), "a stress unit such as 'MPa' or 'N/mm^2' (of mu and E)"),
+              "force": ((str,), "a force unit such as 'N' or 'mN'")},
 }
 _TOP_KEYS = set(SCHEMA)
 _REQUIRED = ("derivation", "layer", "punch")
@@ -142,35 +159,44 @@ def _validation_table(vt: Any) -> dict | None:
     return out
 
 
-#: a unit: letters with optional integer powers, joined by spaces, '*', '.' or '/' ("mm", "N/mm^2", "kg m/s^2")
-_UNIT = re.compile(r"[A-Za-z]{1,8}(\^-?[0-9])?([ *./][A-Za-z]{1,8}(\^-?[0-9])?){0,3}")
-
-
-def unit_latex(text: str) -> str:
-    r"""A unit of ``[units]`` (letters and digits only, :data:`_UNIT`) as math: ``\mathrm{N}/\mathrm{mm}^{2}``.
-
-    >>> unit_latex("N/mm^2"), unit_latex("kg m")
-    ('\\mathrm{N}/\\mathrm{mm}^{2}', '\\mathrm{kg}\\,\\mathrm{m}')
-    """
-    out = []
-    for m in re.finditer(r"([A-Za-z]+)(?:\^(-?[0-9]))?|([ *./])", text):
-        if m.group(1):
-            out.append(rf"\mathrm{{{m.group(1)}}}" + (f"^{{{m.group(2)}}}" if m.group(2) else ""))
-        else:
-            out.append("/" if m.group(3) == "/" else r"\,")
-    return "".join(out)
+#: the dimension (kg, m, s) of each key of [units] and examples of it
+UNIT_KINDS = {"length": ((0, 1, 0), "'mm', 'um', 'nm', 'm'"),
+              "force": ((1, 1, -2), "'N', 'mN', 'uN', 'nN', 'kg m/s^2'"),
+              "stress": ((1, -1, -2), "'MPa', 'kPa', 'GPa', 'Pa', 'N/mm^2'")}
 
 
 def _units_table(ut: Any) -> dict | None:
-    """Validate ``[units]``: the units of lengths, of the moduli and of forces, for the report's numbers."""
+    """Validate ``[units]``: the units of lengths, of the moduli and of forces, for the report's numbers.
+
+    Each is parsed by the unit grammar (:func:`thinlayer.export.units.parse_unit`, never evaluated),
+    must have the dimension of its key, and, when all three are given, stress = force / length^2
+    (one consistent system: the report computes forces from moduli and lengths).  The values are the
+    units' LaTeX (:class:`~thinlayer.export.units.UnitLatex`, which also sets a power of the unit).
+    """
+    from .units import FORMS, UnitError, UnitLatex, dimension_name, parse_unit
+
     if ut is None:
         return None
     out = {}
     for key, val in ut.items():
-        if not _UNIT.fullmatch(val):
-            raise DerivationFileError(f"[units] {key} = {_short(val)}: a unit is letters with optional integer "
-                                      "powers joined by spaces, '*', '.' or '/', e.g. 'mm', 'MPa', 'N/mm^2'")
-        out[key] = unit_latex(val)
+        try:
+            unit = parse_unit(val)
+        except UnitError as exc:
+            raise DerivationFileError(f"[units] {key} = {_short(val)}: {exc}; {FORMS}") from exc
+        dim, examples = UNIT_KINDS[key]
+        if unit.dimension != dim:
+            raise DerivationFileError(f"[units] {key} = {_short(val)} is {dimension_name(unit.dimension)} "
+                                      f"({unit.text()}), not {dimension_name(dim)}: give {dimension_name(dim)} "
+                                      f"unit such as {examples}")
+        out[key] = UnitLatex(unit)
+    if len(out) == 3:
+        length, force, stress = (out[k].unit for k in ("length", "force", "stress"))
+        implied = force.decade - 2 * length.decade
+        if implied != stress.decade:
+            raise DerivationFileError(
+                f"[units] are inconsistent: force/length^2 = {force.text()}/({length.text()})^2 is 10^{implied} Pa but "
+                f"stress = {stress.text()} is 10^{stress.decade} Pa; the report's forces come from moduli times "
+                "lengths squared, so give one system, e.g. mm, N, MPa or m, N, Pa or um, uN, MPa")
     return out
 
 
@@ -450,13 +476,13 @@ def resolve_derivation(name_or_path: str | Path) -> Path:
     bare = path.parent in (Path(""), Path(".")) or path.parent.name == "derivations"
     if bare and _CATALOGUE_NAME.fullmatch(stem) and stem in cat and path.suffix in ("", ".toml"):
         return cat[stem]
-    names = ", ".join(cat) or "none installed"
+    names = ", ".join([*cat, *DOCUMENTS]) or "none installed"
     raise DerivationFileError(f"{name_or_path}: does not exist, and it is no name of the derivation catalogue "
                               f"({names})")
 
 
-def load_derivation(path: str | Path) -> Derivation:
-    """Read and validate a derivation file.
+def load_derivation(path: str | Path) -> Derivation | ErrataDocument:
+    """Read and validate a derivation file (or name a document of :data:`DOCUMENTS`, e.g. ``errata``).
 
     Parameters
     ----------
@@ -477,6 +503,8 @@ def load_derivation(path: str | Path) -> Derivation:
         one line starting with the file's name, naming the table, the key and what is valid
         (unknown keys, wrong types, values out of range, contradictions between tables).
     """
+    if isinstance(path, str) and path in DOCUMENTS and not Path(path).exists():
+        return DOCUMENTS[path]()
     path = resolve_derivation(path) if not Path(path).is_dir() else Path(path)
     try:
         return _load(path)
@@ -545,6 +573,11 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: b
     """
     from .report import derivation_document
 
+    if isinstance(der, ErrataDocument):
+        from ._errata_section import errata_document
+        from .report import Document
+
+        return errata_document(Document(der.title))
     if der.punch is not None:
         check_symbol_names((q.name for q in der.punch.expr.free_symbols), "punch")
     return derivation_document(der, figure_dir, force)
@@ -557,10 +590,16 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool | None = False,
 
     Every file the run would write is checked before anything is written: the .tex is replaced
     only when thinlayer wrote it and nobody edited it since (the hash in its first line) or with
-    ``force``; an existing PDF, log or validation figure only with ``force``.  The text is
-    generated completely first, each file is replaced atomically, the PDF is compiled in a
-    temporary folder, and the whole run holds a lock on ``<out_dir>/<name>`` so that a concurrent
-    run of the same name stops with an error instead of mixing files.
+    ``force``; an existing PDF, log or validation figure only with ``force``.  A link at any of
+    these counts as an existing file (with ``force`` the link itself is replaced, never the file it
+    points to); a link at the lock file or the figure folder is refused even with ``force``.  The
+    text is generated completely first; with ``pdf`` it is compiled in a private temporary folder
+    inside ``out_dir`` and only then are the PDF, the log and the .tex each replaced atomically, so a
+    run interrupted before the end (a LaTeX error, Ctrl-C, SIGTERM, SIGKILL) leaves the earlier .tex
+    and PDF as they were.  The whole run holds a lock on ``<out_dir>/<name>`` so that a concurrent
+    run of the same name stops with an error instead of mixing files; under it the temporary files
+    left by a killed earlier run of the same name are removed.  ``out_dir`` itself may be a link (the
+    user's choice: it is followed).
 
     Parameters
     ----------
@@ -575,40 +614,51 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool | None = False,
     force : bool
         Whether to overwrite existing files.
     temp_root : str or Path, optional
-        Where the PDF's temporary folder is created (default: the system's).
+        Where the PDF's temporary folder is created (default: ``out_dir``).
 
     Returns
     -------
     Path
         The .tex file.
     """
-    from ..validation.output import output_lock, refuse_existing
-    from .report import check_writable, compile_pdf, latex_available, latex_engine, pdf_outputs, write_tex
+    from ..validation.output import atomic_write, check_folder, output_lock, refuse_existing
+    from .latex_files import build_pdf, check_writable, latex_available, latex_engine, pdf_outputs, write_tex
 
     missing_engine = bool(pdf) and not latex_available()
     pdf = latex_available() if pdf is None else bool(pdf) and not missing_engine
     out = Path(out_dir)
     tex = out / f"{der.name}.tex"
     figures = out / f"{der.name}-figures" if der.validation is not None else None
+    targets = [tex, *pdf_outputs(tex)]
+    if figures is not None:
+        from ..validation.plots import figure_files
+
+        targets += figure_files(figures, "validation", ("pdf",))
 
     def check() -> None:
         check_writable(tex, force)
         if pdf:
             refuse_existing(pdf_outputs(tex), force)
         if figures is not None:
-            from ..validation.plots import figure_files
-
-            refuse_existing(figure_files(figures, "validation", ("pdf",)), force)
+            check_folder(figures)
+            refuse_existing(targets[3:], force)
 
     if out.exists() and not out.is_dir():
         raise NotADirectoryError(f"--out {out} is a file, not a folder")
     check()
-    with output_lock(out, der.name):
+    with output_lock(out, der.name, targets):
         check()  # again, now that no concurrent run can write these files
         text = report_latex(der, figures, force=force)
-        write_tex(text, tex, force)
         if pdf:
-            compile_pdf(tex, temp_root)
+            try:
+                pdf_bytes, log = build_pdf(text, der.name, out if temp_root is None else temp_root, figures, tex)
+            except RuntimeError:  # LaTeX's error: the .tex is written for reading it, the PDF is not
+                write_tex(text, tex, force)
+                raise
+            pdf_path, log_path = pdf_outputs(tex)
+            atomic_write(pdf_path, pdf_bytes)
+            atomic_write(log_path, log)
+        write_tex(text, tex, force)
     if missing_engine:
         latex_engine()  # NoLatexEngineError, after the .tex is written
     return tex

@@ -51,6 +51,7 @@ from .._series import (
 )
 from ..display import RichDisplay, fmt
 from ..errors import boundary
+from ..normal import join_signed, normal_latex
 from ..parse import as_expr
 from ..results import checked_lambdify
 from . import _flint
@@ -178,8 +179,8 @@ def _poly_ratio_expr(num, den_factors: dict, content, domain: _PolyDomain) -> sp
             dfac.append(sp.Pow(_factor_expr(f), e))
     ratio = sign * c / content
     r = sp.Rational(int(ratio.numerator), int(ratio.denominator))
-    if prim.degree() <= 4:
-        return r * sp.Mul(*nfac) / sp.Mul(*dfac)
+    if prim.degree() <= 4:  # one Mul: the factored form stays (r * (1 - 2 nu) alone would distribute to 1/2 - nu)
+        return sp.Mul(r, *nfac, *[sp.Pow(b, -e) for b, e in (d.as_base_exp() for d in dfac)])
     x = domain.ring.symbols[0]
     numer = sp.Add(*[sp.Mul(r * int(a), x**i) for (i,), a in prim.items()])
     return sp.Mul(numer, *[sp.Pow(b, -e) for b, e in (d.as_base_exp() for d in dfac)])
@@ -232,11 +233,11 @@ class KernelCoefficients(RichDisplay):
 
     def latex(self) -> str:
         """LaTeX of A (2.4), the m_n (2.20) and the M_k (4.2)."""
-        lines = [rf"\mathcal{{A}} = {sp.latex(self.A_expr)} \tag{{2.4}}"]
+        lines = [rf"\mathcal{{A}} = {normal_latex(self.A_expr)} \tag{{2.4}}"]
         for n in range(1, self.order + 1):
-            lines.append(rf"m_{{{n}}} = {sp.latex(self.m_expr(n))} \tag{{2.20}}")
+            lines.append(rf"m_{{{n}}} = {normal_latex(self.m_expr(n))} \tag{{2.20}}")
         for k in range(1, self.order + 1):
-            lines.append(rf"M_{{{k}}} = {sp.latex(self.M_expr(k))} \tag{{4.2}}")
+            lines.append(rf"M_{{{k}}} = {normal_latex(self.M_expr(k))} \tag{{4.2}}")
         return " \\\\\n".join(lines)
 
     def lambdify(self, backend: str = "numpy"):
@@ -277,12 +278,13 @@ class KernelCoefficients(RichDisplay):
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         out = [f"KernelCoefficients of {self.layer}, n <= {self.order}   (2.4), (2.20), (4.2)"]
-        w = len(f"m_{self.order}")
-        out.append(f"  {'A':<{w}} = {fmt(self.A_expr if self.layer.parameter is not None else self.A)}")
+        sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+        w = len(f"m{self.order}")
+        out.append(f"  {'𝒜':<{w}} = {fmt(self.A_expr if self.layer.parameter is not None else self.A)}")
         for n in range(1, self.order + 1):
-            out.append(f"  {f'm_{n}':<{w}} = {fmt(self.m[n])}")
+            out.append(f"  {'m' + str(n).translate(sub):<{w}} = {fmt(self.m[n])}")
         for k in range(1, self.order + 1):
-            out.append(f"  {f'M_{k}':<{w}} = {fmt(self.M[k])}")
+            out.append(f"  {'M' + str(k).translate(sub):<{w}} = {fmt(self.M[k])}")
         return out
 
 
@@ -825,7 +827,7 @@ class IncompressibleCoefficients:
         return sp.Add(*[cn * s ** (2 * n) for n, cn in enumerate(self.c)])
 
     def latex(self) -> str:
-        terms = " + ".join(rf"\left({sp.latex(cn)}\right) s^{{{2 * n}}}" for n, cn in enumerate(self.c) if n)
+        terms = join_signed([rf"{normal_latex(cn)}\, s^{{{2 * n}}}" for n, cn in enumerate(self.c) if n and cn != 0])
         return rf"\frac{{\mathcal{{L}}(s)}}{{s}} = {terms} + \dots,\quad \mathcal{{A}} = c_0 = 0 \tag{{I.1}}"
 
     def lambdify(self, backend: str = "numpy") -> Callable:

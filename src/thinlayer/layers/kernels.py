@@ -29,8 +29,9 @@ from .. import symbols as S
 from .._checks import InputError, check_bounded, parse_nu
 from .._checks import check_order as _check_order
 from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
-from ..display import RichDisplay, fmt
+from ..display import RichDisplay, fmt, latex_escape
 from ..errors import boundary_methods
+from ..normal import normal_latex
 from ..parse import sympy_value
 from . import numeric as kernel_numeric
 from .coefficients import incompressible_coefficients, kernel_coefficients
@@ -159,7 +160,7 @@ class LayerKernel(RichDisplay, ABC):
 
     def latex(self) -> str:
         """The kernel as a tagged LaTeX line (2.3), or the coefficient form (2.20) when L(u) is unknown."""
-        name = r"\text{" + str(self) + r"}:\quad "
+        name = r"\text{" + latex_escape(str(self)) + r"}:\quad "
         try:
             L = self.L()
         except ValueError:  # known only through its coefficients
@@ -167,7 +168,7 @@ class LayerKernel(RichDisplay, ABC):
         if L.has(sp.Float):  # a float nu: kappa to 15 digits, not the layer's working precision
             L = L.evalf(15)
         tag = rf" \tag{{{self.equation}}}" if self.equation else ""
-        return name + rf"\mathcal{{L}}(u) = {sp.latex(L)}" + tag
+        return name + rf"\mathcal{{L}}(u) = {normal_latex(L)}" + tag
 
     # ---- stages of the paper (delegated) ----------------------------------------------
     def coefficients(self, order: int):
@@ -220,7 +221,7 @@ class BondedLayer(LayerKernel):
     --------
     >>> from thinlayer import BondedLayer
     >>> BondedLayer().A
-    (1/2 - nu)/(1 - nu)**2
+    (1 - 2*nu)/(2*(1 - nu)**2)
     >>> BondedLayer("3/10").m(1)
     1/14
     """

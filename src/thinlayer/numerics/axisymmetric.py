@@ -166,11 +166,11 @@ class AxisymmetricContact(RichDisplay):
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        what = f" of {self.punch.name} Phi = {fmt(self.punch.expr)}" if self.punch is not None else ""
-        layer = str(self.layer) if "nu=" in str(self.layer) else f"{self.layer}, nu = {self.nu:.6g}"
+        what = f" of {self.punch.name} Φ = {fmt(self.punch.expr)}" if self.punch is not None else ""
+        layer = str(self.layer) if "nu=" in str(self.layer) else f"{self.layer}, ν = {self.nu:.6g}"
         return [
             f"{type(self).__name__}: direct numerical solution{what}   (1.5)-(1.8)",
-            f"  {layer}, mu = {self.mu:.6g}, H = {self.H:.6g}, delta0 = {self.delta0:.10g}",
+            f"  {layer}, μ = {self.mu:.6g}, H = {self.H:.6g}, δ₀ = {self.delta0:.10g}",
             f"  contact radius c = {self.radius:.12g}  (+- {self.radius_error:.1e})",
             f"  force          P = {self.force:.12g}  (+- {self.force_error:.1e} P), {self.modes} modes",
         ]

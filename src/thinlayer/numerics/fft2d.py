@@ -1,4 +1,3 @@
-# size: one solver (1.5)-(1.8): influence coefficients, FFT convolution, Polonsky-Keer iteration, contour
 """Direct numerical solution of the two-dimensional unilateral contact problem (1.5)-(1.8).
 
 A rigid punch ``x3 = -Phi(x1, x2)`` (any polynomial, :class:`~thinlayer.punch.Punch`) is pressed
@@ -120,52 +119,32 @@ from typing import Any
 
 import contourpy
 import numpy as np
-import scipy.fft as sfft
 import sympy as sp
-from scipy import interpolate, optimize, special
+from scipy import optimize
 
 from .. import symbols as S
-from .._checks import ComputationError, InputError, InputTypeError, check_bounded, positive
+from .._checks import ComputationError, InputError, InputTypeError, positive
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
-from ._layer import U_MAX, gauss_panels, numeric_layer_nu, panel_count
+from ._influence import MAX_BYTES, Convolver, check_n, influence_coefficients, layer_correction_kernel, memory_estimate
+from ._layer import numeric_layer_nu
+from ._polonsky_keer import polonsky_keer
 
 __all__ = [
     "CoarseGridWarning",
     "Contact2D",
     "ContactConvergenceError",
+    "MAX_BYTES",
     "influence_coefficients",
     "layer_correction_kernel",
+    "memory_estimate",
     "solve_2d",
 ]
 
-_R_CUT = 50.0  # in units of H: the layer kernel 1/(2 pi r) + g_c(r) is below 1e-15/H beyond
-_TABLE_STEP = 1.0 / 40.0  # spacing of the g_c table, in units of H
-_CELL_GAUSS = 4  # Gauss-Legendre points per direction for the cell integral of g_c
 _MIN_CELLS_PER_H = 5.0  # H must span at least this many cells
 _EDGE_CELLS = 2  # the contact must stay this many cells away from the domain boundary
 _MIN_CELLS_ACROSS = 8  # fewer cells across the contact -> CoarseGridWarning
-_MAX_N = 4096
-_REFRESH = 20  # recompute u = C p by a fresh convolution at least this often
-#: Largest estimated memory of one solve (bytes), :func:`memory_estimate`: it admits n <= 3600.
-MAX_BYTES = 2 * 1024**3
-
-
-def memory_estimate(n: int) -> int:
-    """Bytes of the arrays of a solve on an n x n grid (an upper bound), checked against :data:`MAX_BYTES`.
-
-    The check on the whole grid holds the most: the spectrum's quadrant ``16 (M/2 + 1)^2`` and the column
-    buffer ``16 M (M/2 + 1)`` of the convolution, ``M <= 2 next_fast_len(n)`` the padded length, its row-block
-    buffer and temporaries (4 x 8 MiB at most), at most 13 float and 4 boolean n x n arrays (Phi, the overlap, the
-    coefficients, pressure, displacement, gap and the iteration's work arrays).  Measured peaks (tracemalloc,
-    the sphere of ``benchmarks/bench_numerics.py``): 122 MiB at n = 1024 (estimate 249 MiB), 440 MiB at
-    n = 2048 (estimate 717 MiB).
-    """
-    M = 2 * sfft.next_fast_len(n, real=True)  # the largest padding: a kernel that reaches across the grid
-    h = M // 2
-    setup = 8 * 4_000_000 * 2  # the J0 block of layer_correction_kernel and its argument
-    return 16 * (h + 1) ** 2 + 16 * M * (h + 1) + 4 * _Convolver._BLOCK_BYTES + (8 * 13 + 4) * n * n + setup
 
 
 class ContactConvergenceError(ComputationError, RuntimeError):
@@ -263,233 +242,6 @@ class Contact2D:
         """One-line LaTeX summary."""
         return (rf"P = {self.force:.8g},\quad |\omega| = {self.contact_area:.8g},\quad "
                 rf"\delta_0 = {self.delta0:.8g},\quad N = {self.n},\ \Delta = {self.spacing:.4g}")
-
-
-# --------------------------------------------------------------------------- influence coefficients
-def _love_square(X: np.ndarray, Y: np.ndarray, h: float) -> np.ndarray:
-    """``iint dy/|y|`` over the square ``|y1 - X| < h, |y2 - Y| < h`` (Love's closed form)."""
-
-    def F(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-        # a asinh(b/|a|) -> 0 as a -> 0: guard the division, the factor a makes the term vanish
-        return (a * np.arcsinh(b / np.where(a == 0, 1.0, np.abs(a)))
-                + b * np.arcsinh(a / np.where(b == 0, 1.0, np.abs(b))))
-
-    return F(X + h, Y + h) - F(X - h, Y + h) - F(X + h, Y - h) + F(X - h, Y - h)
-
-
-def _t_quadrature(rho_max: float) -> tuple[np.ndarray, np.ndarray]:
-    """Composite 16-point Gauss-Legendre nodes on [0, U_MAX], one J0(t rho_max) period per panel."""
-    return gauss_panels(U_MAX, panel_count(U_MAX, min(0.5, 2.0 * math.pi / max(rho_max, 1e-300))), 16)
-
-
-@boundary
-def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
-    """``g_c(r) = (1/(2 pi H)) int_0^oo (L(t) - 1) J0(t r/H) dt``: the layer's correction to Boussinesq.
-
-    The surface Green's function of the layer (2.1) is ``1/(2 pi r) + g_c(r)`` (divided by
-    vartheta).  ``g_c`` is smooth, ``g_c(r) -> -1/(2 pi r)`` as r/H -> oo.
-
-    Parameters
-    ----------
-    layer : LayerKernel
-        A layer kernel with numeric evaluation (``BondedLayer(0.3)``, ``FrictionlessLayer()``).
-    H : float
-        Layer thickness.
-    r : array_like
-        Radii >= 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        g_c at ``r`` (zero for the half-space).
-    """
-    r = np.asarray(r, dtype=float)
-    if not layer.has_thickness:  # the half-space: L = 1
-        return np.zeros_like(r)
-    rho = r.ravel() / H
-    t, w = _t_quadrature(float(rho.max(initial=0.0)))
-    wl = w * (np.asarray(layer.L_numeric(t, "numpy"), dtype=float) - 1.0)
-    out = np.empty_like(rho)
-    step = max(1, 4_000_000 // t.size)  # bound the J0 matrix to ~32 MB
-    for s in range(0, rho.size, step):
-        out[s:s + step] = special.j0(np.outer(rho[s:s + step], t)) @ wl
-    return (out / (2.0 * math.pi * H)).reshape(r.shape)
-
-
-def _uniform_spline(spline: interpolate.CubicSpline) -> Callable[[np.ndarray], np.ndarray]:
-    """The cubic spline on its uniform knots, evaluated without a search: the interval is ``floor(r/step)``.
-
-    The same piecewise cubic as ``spline(r)`` for ``0 <= r <= last knot`` (a point on a knot may take the
-    neighbouring piece: equal to rounding), several times faster on the ~10^6 points of a large grid.
-    """
-    x, c = spline.x, spline.c
-    inv, last = (len(x) - 1) / (x[-1] - x[0]), len(x) - 2
-    c0, c1, c2, c3 = (np.ascontiguousarray(c[k]) for k in range(4))
-
-    def ev(r: np.ndarray) -> np.ndarray:
-        i = np.minimum(((r - x[0]) * inv).astype(np.intp), last)
-        dx = r - x[i]
-        out = c0[i] * dx
-        out += c1[i]
-        out *= dx
-        out += c2[i]
-        out *= dx
-        out += c3[i]
-        return out
-
-    return ev
-
-
-@boundary
-def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, n: int, *,
-                           nu: float | None = None, mu: float = 1.0) -> np.ndarray:
-    """Influence coefficients ``C[k, l]``: u3 at offset ``(k Delta, l Delta)`` from a cell under unit pressure.
-
-    See the module docstring for the formula (Love's rectangle + cell-integrated layer correction).
-    The kernel is even in both offsets, so the quadrant ``0 <= k, l < n`` defines it.
-
-    Parameters
-    ----------
-    layer : LayerKernel
-        Layer kernel; ``HalfSpace()`` gives Boussinesq's coefficients.
-    H : float or None
-        Layer thickness (ignored by ``HalfSpace``).
-    spacing : float
-        Cell size Delta.
-    n : int
-        Number of offsets per direction.
-    nu, mu
-        float
-        Poisson ratio (only for layers that carry none) and shear modulus: ``vartheta = mu/(1 - nu)``.
-
-    Returns
-    -------
-    numpy.ndarray
-        Array of shape (n, n).
-
-    Examples
-    --------
-    Self-influence of a square on the half-space: ``4 Delta asinh(1)/(2 pi vartheta)``.
-
-    >>> import math
-    >>> from thinlayer import HalfSpace
-    >>> C = influence_coefficients(HalfSpace(), None, 1.0, 2, nu=0.3)
-    >>> round(float(C[0, 0]) / (4 * math.asinh(1) * 0.7 / (2 * math.pi)), 12)
-    1.0
-    """
-    nu_val = numeric_layer_nu(layer, nu)
-    mu = positive(mu, "mu")
-    d = positive(spacing, "spacing")
-    n = _check_n(n)
-    vartheta = mu / (1.0 - nu_val)
-    half = not layer.has_thickness
-    if not half:
-        H = positive(H, "H")
-    # C is symmetric in (k, l): evaluate on k <= l only
-    kk, ll = np.triu_indices(n)
-    X, Y = kk * d, ll * d
-    C = np.zeros((n, n))
-    if half:
-        vals = _love_square(X, Y, 0.5 * d) / (2.0 * math.pi)
-    else:
-        near = np.hypot(X, Y) <= _R_CUT * H + d  # beyond, the two parts cancel to rounding
-        kk, ll, X, Y = kk[near], ll[near], X[near], Y[near]
-        vals = _love_square(X, Y, 0.5 * d) / (2.0 * math.pi)
-        # spline table of g_c on [0, r_tab], spacing <= H/40 (and fine enough for a domain much smaller than H)
-        r_tab = float(np.hypot(X, Y).max(initial=0.0)) + d
-        npts = max(65, math.ceil(r_tab / (_TABLE_STEP * H)) + 1)
-        rr = np.linspace(0.0, r_tab, npts)
-        spline = interpolate.CubicSpline(rr, layer_correction_kernel(layer, H, rr), bc_type=((1, 0.0), "not-a-knot"))
-        g_c = _uniform_spline(spline)
-        xg, wg = special.roots_legendre(_CELL_GAUSS)
-        ya, wa = 0.5 * d * xg, 0.5 * d * wg
-        for i in range(_CELL_GAUSS):
-            ax2 = X + ya[i]
-            ax2 *= ax2
-            for j in range(_CELL_GAUSS):
-                r2 = Y + ya[j]
-                r2 *= r2
-                r2 += ax2
-                vals += wa[i] * wa[j] * g_c(np.sqrt(r2, out=r2))
-    C[kk, ll] = vals
-    C[ll, kk] = vals
-    return C / vartheta
-
-
-def _check_n(n: Any) -> int:
-    if isinstance(n, bool) or not isinstance(n, (numbers.Integral, np.integer)):
-        raise InputTypeError(f"n (cells per side) must be an integer, got {n!r}")
-    if not 2 <= n <= _MAX_N:
-        raise InputError(f"n (cells per side) must lie in [2, {_MAX_N}], got {n}")
-    need = memory_estimate(int(n))
-    check_bounded(need / 1024**3, f"the memory estimate for n = {n} cells per side (GiB)", MAX_BYTES / 1024**3,
-                  "the FFT convolution needs its spectrum and a padded (2n x n) complex buffer besides about 13 "
-                  "n x n arrays; use a smaller n (n <= 3600 fits in 2 GiB)")
-    return int(n)
-
-
-# --------------------------------------------------------------------------- FFT convolution
-def _reach(C: np.ndarray, axis: int) -> int:
-    """The largest offset index along ``axis`` with a nonzero coefficient (the kernel is cut beyond ``_R_CUT`` H)."""
-    idx = np.flatnonzero(np.any(C != 0.0, axis=1 - axis))
-    return int(idx[-1]) if idx.size else 0
-
-
-def _padded_size(N: int, reach: int) -> int:
-    """Even FFT length M with ``M >= N + reach`` (and ``>= 2 reach + 1``): the aperiodic sum needs no more.
-
-    A coefficient at offset k contributes to ``u_i`` from ``p_{i-k}``; on a period M nothing wraps into the
-    N computed cells when ``M >= N + reach``, i.e. ``2N - 1`` for a kernel reaching across the grid and less
-    for a thin layer on a wide grid (the coefficients vanish beyond ``_R_CUT`` H).
-    """
-    need = max(min(2 * N - 1, N + reach), 2 * reach + 1, 2)
-    return 2 * sfft.next_fast_len((need + 1) // 2, real=True)
-
-
-class _Convolver:
-    """Aperiodic convolution ``u = C * p`` on an N1 x N2 grid by FFT on the zero-padded M1 x M2 grid.
-
-    ``C[k, l]`` (shape N1 x N2) is the kernel at offsets ``(+-k, +-l)``: even in both, so its spectrum is real
-    and even, and its quadrant ``0 <= j <= M1/2, 0 <= k <= M2/2`` is the 2D DCT-I of the coefficients (no
-    M1 x M2 array is built; kept complex, which multiplies faster); the rows ``j > M1/2`` of the rfft2 layout are
-    those of ``M1 - j``.  Only the N1 non-zero input rows are transformed along x2 and only the N1 wanted output
-    rows are transformed back, in blocks of rows through one zero-padded buffer; the x1 transforms run in place
-    on the one M1 x (M2/2 + 1) complex buffer.
-    """
-
-    _BLOCK_BYTES = 8 << 20  # row blocks of the x2 transforms
-
-    def __init__(self, C: np.ndarray, workers: int):
-        N1, N2 = C.shape
-        M1, M2 = _padded_size(N1, _reach(C, 0)), _padded_size(N2, _reach(C, 1))
-        h1, h2 = M1 // 2, M2 // 2
-        Kq = np.zeros((h1 + 1, h2 + 1))
-        m1, m2 = min(N1, h1 + 1), min(N2, h2 + 1)
-        Kq[:m1, :m2] = C[:m1, :m2]
-        self.spec = sfft.dctn(Kq, type=1, workers=workers).astype(complex)  # the real spectrum's quadrant
-        del Kq
-        self.shape, self.padded, self.workers = (N1, N2), (M1, M2), workers
-        self._cbuf = np.zeros((M1, h2 + 1), dtype=complex)
-        self._rows = min(N1, max(8, self._BLOCK_BYTES // (16 * (h2 + 1))))
-        self._rbuf = np.zeros((self._rows, M2))  # columns N2.. stay zero (padding)
-
-    def __call__(self, p: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
-        (N1, N2), (M1, M2), w = self.shape, self.padded, self.workers
-        h1, R, rb, cb = M1 // 2, self._rows, self._rbuf, self._cbuf
-        for r0 in range(0, N1, R):  # only the N1 non-zero rows are transformed
-            m = min(R, N1 - r0)
-            rb[:m, :N2] = p[r0:r0 + m]
-            cb[r0:r0 + m] = sfft.rfft(rb[:m], axis=1, workers=w)
-        cb[N1:] = 0.0
-        a = sfft.fft(cb, axis=0, overwrite_x=True, workers=w)  # in place
-        a[: h1 + 1] *= self.spec
-        a[h1 + 1:] *= self.spec[h1 - 1:0:-1]
-        a = sfft.ifft(a, axis=0, overwrite_x=True, workers=w)
-        if out is None:
-            out = np.empty((N1, N2))
-        for r0 in range(0, N1, R):
-            out[r0:r0 + R] = sfft.irfft(a[r0:min(r0 + R, N1)], n=M2, axis=1, workers=w)[:, :N2]
-        return out
 
 
 # --------------------------------------------------------------------------- punch and domain
@@ -620,137 +372,6 @@ def _contour(p: np.ndarray, g: np.ndarray, x1: np.ndarray, x2: np.ndarray, d: fl
 
 
 # --------------------------------------------------------------------------- solver
-def _dot(a: np.ndarray, b: np.ndarray) -> float:
-    """``sum(a * b)`` of two C-contiguous arrays without BLAS.
-
-    numpy's ``@`` calls OpenBLAS, whose threads keep spinning after each product and take the cores the FFT
-    workers need (issue 18 measured 12.6 s of CPU for 6.4 s of wall time at n = 1024); einsum's own loop uses none.
-    """
-    return float(np.einsum("ij,ij->", a, b))
-
-
-class _PKState:
-    """Work arrays of the Polonsky-Keer iteration, each allocated once (n x n); those of a step only when one is taken
-    (a solve that is converged at its start, like the check on the whole grid in :func:`_iterate`, needs none).
-    """
-
-    def __init__(self, shape: tuple[int, int]):
-        self.shape = shape
-        self.g = np.empty(shape)
-        self.gm = np.empty(shape)  # g on the contact set, 0 elsewhere
-        self.Ic = np.empty(shape, dtype=bool)
-        self.free = np.empty(shape, dtype=bool)
-
-    def step_arrays(self) -> None:
-        if not hasattr(self, "t"):
-            self.t = np.zeros(self.shape)  # conjugate direction
-            self.r = np.empty(self.shape)  # C t
-            self.tmp = np.empty(self.shape)
-            self.mask = np.empty(self.shape, dtype=bool)
-
-
-def _pk_residual(st: _PKState, u: np.ndarray, w: np.ndarray, p: np.ndarray, force: float | None,
-                 delta0: float | None) -> tuple[float, float]:
-    """Gap ``st.g``, contact set ``st.Ic`` (and ``st.free``), ``st.gm`` (g on it); rigid-body displacement, residual."""
-    g, Ic, free, gm = st.g, st.Ic, st.free, st.gm
-    np.subtract(u, w, out=g)
-    np.greater(p, 0.0, out=Ic)
-    np.logical_not(Ic, out=free)
-    if force is not None:
-        count = int(np.count_nonzero(Ic))
-        d0 = float(np.sum(g, where=Ic)) / count if count else math.nan  # the mean of u + Phi on the contact set
-        g -= d0
-        scale = abs(d0) if d0 != 0 else float(np.abs(u).max())
-    else:
-        d0, scale = delta0, delta0
-    np.multiply(g, Ic, out=gm)
-    worst_in = max(float(gm.max()), -float(gm.min()))
-    res = max(worst_in, -float(np.min(g, where=free, initial=0.0))) / scale
-    return d0, res
-
-
-def _pk_step(st: _PKState, p: np.ndarray, t: np.ndarray, tau: float) -> tuple[bool, bool]:
-    """``p -= tau t`` in place, clipped at zero, penetrating free cells pushed in; return (overlap, clipped)."""
-    g, free, clipped, tmp = st.g, st.free, st.mask, st.tmp
-    np.multiply(t, tau, out=tmp)
-    p -= tmp
-    np.less(p, 0.0, out=clipped)
-    any_clip = bool(clipped.any())
-    if any_clip:
-        p[clipped] = 0.0
-        clipped |= free  # free cells that penetrate (the clipped ones had p > 0 unless clipped now)
-        overlap = clipped
-    else:
-        overlap = free
-    overlap = overlap & (g < 0)
-    has_ol = bool(overlap.any())
-    if has_ol:
-        p[overlap] -= tau * g[overlap]
-    return has_ol, any_clip
-
-
-def _polonsky_keer(conv: _Convolver, w: np.ndarray, cell: float, force: float | None, p0: np.ndarray,
-                   tol: float, maxiter: int, delta0: float | None, u0: np.ndarray | None = None):
-    """Polonsky-Keer CG for ``p >= 0, C p - w >= 0, p (C p - w) = 0`` (force mode: w up to a constant).
-
-    Returns (p, u, g, iterations, residual, delta0, converged).  A stop is confirmed with a fresh
-    convolution ``u = C p`` (the linear steps update u without one).  Work arrays are allocated once and the
-    reductions avoid BLAS (:func:`_dot`); ``t`` vanishes off the contact set, so the sums over it need no gather.
-    ``u0 = C p0`` when the caller has it (saves a convolution).
-    """
-    p = p0  # updated in place: the callers hand over their starting pressure
-    st = _PKState(p.shape)
-    u = conv(p) if u0 is None else u0
-    G_old, conj, fresh = 1.0, False, True
-    it = 0
-    while True:
-        d0, res = _pk_residual(st, u, w, p, force, delta0)
-        if res <= tol or it >= maxiter:
-            if fresh:
-                return p, u, st.g, it, res, d0, res <= tol
-            conv(p, out=u)  # confirm with a fresh convolution
-            fresh = True
-            continue
-        it += 1
-        st.step_arrays()
-        gm, Ic, t, r = st.gm, st.Ic, st.t, st.r
-        G = _dot(gm, gm)
-        if conj:
-            t *= G / G_old
-            np.multiply(t, Ic, out=t)  # t = 0 off the contact set
-            t += gm
-        else:
-            np.copyto(t, gm)
-        G_old = G
-        conv(t, out=r)
-        den = _dot(r, t)
-        if force is not None:
-            count = int(np.count_nonzero(Ic))
-            den -= float(np.sum(r, where=Ic)) / count * float(t.sum())  # r minus its mean on the contact set
-        if not den > 0:  # t = 0 on the contact set: nothing left to do
-            if fresh:
-                return p, u, st.g, it, res, d0, res <= tol
-            conv(p, out=u)
-            fresh = True
-            continue
-        tau = _dot(gm, t) / den
-        has_ol, any_clip = _pk_step(st, p, t, tau)
-        conj = not has_ol
-        factor = 1.0
-        if force is not None:
-            factor = force / (cell * float(p.sum()))
-            p *= factor
-        if has_ol or any_clip or it % _REFRESH == 0:
-            conv(p, out=u)
-            fresh = True
-        else:  # the step was linear: update u without a convolution
-            r *= tau
-            u -= r
-            if factor != 1.0:
-                u *= factor
-            fresh = False
-
-
 @dataclass(frozen=True, eq=False)
 class _Problem:
     """The checked input of :func:`solve_2d`, on its grid."""
@@ -785,7 +406,7 @@ def _check_controls(delta0: Any, force: Any, n: Any, tol: Any, maxiter: Any):
         delta0 = positive(delta0, "delta0")
     else:
         force = positive(force, "force")
-    n = _check_n(n)
+    n = check_n(n)
     if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not 0 < float(tol) < 1:
         raise InputError(f"tol must be a number in (0, 1), got {tol!r}")
     if isinstance(maxiter, bool) or not isinstance(maxiter, (numbers.Integral, np.integer)) or maxiter < 1:
@@ -856,7 +477,7 @@ def _iterate(prob: _Problem):
         box = _overlap_slices(w)
         wb = np.ascontiguousarray(w[box])
         nb1, nb2 = wb.shape
-        conv = _Convolver(prob.C[:nb1, :nb2], prob.workers)
+        conv = Convolver(prob.C[:nb1, :nb2], prob.workers)
         p0 = np.maximum(wb, 0.0)
         u0 = conv(p0)
         scale = float((p0 * wb).sum() / (p0 * u0).sum())  # best multiple of the overlap: a good start
@@ -864,7 +485,7 @@ def _iterate(prob: _Problem):
         u0 *= scale
         iters, maxiter = 0, prob.maxiter
         if wb.shape != w.shape:  # else the whole grid is the box: iterate on it directly
-            pb, _, _, iters, _, _, _ = _polonsky_keer(conv, wb, cell, None, p0, prob.tol, maxiter, prob.delta0, u0)
+            pb, _, _, iters, _, _, _ = polonsky_keer(conv, wb, cell, None, p0, prob.tol, maxiter, prob.delta0, u0)
             p0 = np.zeros((n, n))
             p0[box] = pb
             maxiter -= iters
@@ -875,8 +496,8 @@ def _iterate(prob: _Problem):
         p0 = np.full((n, n), prob.force / (cell * n * n))
         iters, maxiter, u0, conv = 0, prob.maxiter, None, None
     if conv is None:
-        conv = _Convolver(prob.C, prob.workers)
-    p, _, g, more, res, d0, ok = _polonsky_keer(conv, w, cell, prob.force, p0, prob.tol, maxiter, prob.delta0, u0)
+        conv = Convolver(prob.C, prob.workers)
+    p, _, g, more, res, d0, ok = polonsky_keer(conv, w, cell, prob.force, p0, prob.tol, maxiter, prob.delta0, u0)
     return p, g, iters + more, res, d0, ok
 
 

@@ -34,7 +34,12 @@ _MARKER = {"sphere": "o", "elliptic": "s"}
 #: margins is 6.7 in), so that a report includes it at about its natural size and 8-9 pt text stays 8-9 pt
 WIDTH = 6.7
 STYLE = {"font.size": 9, "axes.titlesize": 9, "axes.labelsize": 9, "xtick.labelsize": 8, "ytick.labelsize": 8,
-         "legend.fontsize": 8, "figure.titlesize": 10, "lines.markersize": 4.5}
+         "legend.fontsize": 8, "figure.titlesize": 10, "lines.markersize": 4.5,
+         # the report's fonts: Computer Modern for text (cmr10, shipped with matplotlib, named directly so that it
+         # holds when the figure is drawn outside this style) and for mathtext; cmr10 has no Unicode minus, so tick
+         # labels are set as mathtext
+         "font.family": "cmr10",
+         "mathtext.fontset": "cm", "axes.formatter.use_mathtext": True, "axes.unicode_minus": False}
 
 
 def _figure(*args, **kw):
@@ -148,12 +153,15 @@ def plot_study(study: ValidationStudy, directory: Path, stem: str, formats: tupl
     nus = sorted({r.nu for r in study.rows})
     colour = {v: cmap(0.85 * i / max(len(nus) - 1, 1)) for i, v in enumerate(nus)}
     shapes = [s for s in SHAPES if any(r.shape == s for r in study.rows)]
-    files = _save(_errors_figure(study, colour), directory, f"{stem}_errors", formats)
-    files += _save(_pressure_figure(study, shapes, cmap), directory, f"{stem}_pressure", formats)
-    files += _save(_contours_figure(study, shapes), directory, f"{stem}_contours", formats)
-    fig = _edge_shift_figure(study, colour)
-    if fig is not None:
-        files += _save(fig, directory, f"{stem}_edge_shift", formats)
+    import matplotlib
+
+    with matplotlib.rc_context(STYLE):  # drawn and saved in the style they were built in
+        files = _save(_errors_figure(study, colour), directory, f"{stem}_errors", formats)
+        files += _save(_pressure_figure(study, shapes, cmap), directory, f"{stem}_pressure", formats)
+        files += _save(_contours_figure(study, shapes), directory, f"{stem}_contours", formats)
+        fig = _edge_shift_figure(study, colour)
+        if fig is not None:
+            files += _save(fig, directory, f"{stem}_edge_shift", formats)
     return files
 
 
@@ -221,10 +229,17 @@ def _claimed_slope(ax, quantity: str, allx: list[float], ally: list[float]) -> f
     x0 = float(np.exp(np.mean(np.log(xs))))
     ys = y0 * (xs / x0) ** claimed
     ax.plot(xs, ys, "k--", lw=1.2, gid=f"slope {claimed}")
-    text = f"slope {claimed}" + (" (bound)" if kind == "bound" else "")
-    ax.annotate(text, xy=(float(np.sqrt(xs[0] * xs[1])), float(np.sqrt(ys[0] * ys[1]))), xytext=(4, -10),
-                textcoords="offset points", fontsize=8, ha="left", va="top", gid="slope label")
+    text = f"slope {claimed} " + ("(bound, dashed)" if kind == "bound" else "(dashed)")
+    # inside the panel's lower right corner (the errors rise to the right: that corner is free), never across its frame
+    ax.text(0.97, 0.04, text, transform=ax.transAxes, fontsize=8, ha="right", va="bottom", gid="slope label")
     return float(claimed)
+
+
+def _profiles(study: ValidationStudy, shape: str) -> tuple[float, list]:
+    """The profiles a pressure panel shows: nu = 0.3 if there (else the first), the three largest H/a."""
+    profs = [p for p in study.profiles if p.shape == shape and p.axis in ("r", "x1")]
+    nu_pick = 0.3 if any(p.nu == 0.3 for p in profs) else profs[0].nu
+    return nu_pick, sorted((p for p in profs if p.nu == nu_pick), key=lambda p: -p.H_over_a)[:3]
 
 
 @_styled
@@ -232,19 +247,19 @@ def _pressure_figure(study: ValidationStudy, shapes: list[str], cmap: Any):
     """Pressure profiles (nu = 0.3 if there, the three largest H/a): whole contact and edge zoom."""
     fig = _figure(figsize=(WIDTH, 2.7 * len(shapes) + 0.7), layout="constrained")
     axes = np.atleast_2d(fig.subplots(len(shapes), 2))
-    keys: dict[str, Any] = {}
+    picked = {shape: _profiles(study, shape) for shape in shapes}
+    # one colour per H/a value, the same in every panel and in the legend (never by position in a panel)
+    ratios = sorted({p.H_over_a for _, profs in picked.values() for p in profs}, reverse=True)
+    colour = {e: cmap(0.8 * k / max(len(ratios) - 1, 1)) for k, e in enumerate(ratios)}
     for row_ax, shape in zip(axes, shapes):
-        profs = [p for p in study.profiles if p.shape == shape and p.axis in ("r", "x1")]
-        nu_pick = 0.3 if any(p.nu == 0.3 for p in profs) else profs[0].nu
-        profs = sorted((p for p in profs if p.nu == nu_pick), key=lambda p: -p.H_over_a)[:3]
-        for k, p in enumerate(profs):
-            col = cmap(0.8 * k / max(len(profs) - 1, 1))
+        nu_pick, profs = picked[shape]
+        for p in profs:
+            col = colour[p.H_over_a]
             x = p.x / p.half_width
             pm = float(np.max(p.numeric))
             for ax in row_ax:
-                ax.plot(x, p.numeric / pm, "-", color=col, lw=1.5)
-                ax.plot(x, p.asymptotic / pm, "--", color=col, lw=1.2)
-            keys.setdefault(f"{p.H_over_a:g}", _key(color=col, lw=3, label=f"$H/a = {p.H_over_a:g}$"))
+                ax.plot(x, p.numeric / pm, "-", color=col, lw=1.5, gid=f"H/a = {p.H_over_a:g}: numerical")
+                ax.plot(x, p.asymptotic / pm, "--", color=col, lw=1.2, gid=f"H/a = {p.H_over_a:g}: asymptotic")
         lab = "r/a_0" if shape == "sphere" else "x_1/a_1"
         row_ax[0].set_xlim(0 if shape == "sphere" else -1.1, 1.1)
         row_ax[0].set_title(f"{shape}, $\\nu = {nu_pick:g}$: whole contact")
@@ -255,7 +270,8 @@ def _pressure_figure(study: ValidationStudy, shapes: list[str], cmap: Any):
             ax.set_xlabel(f"${lab}$")
             ax.grid(True, alpha=0.3)
         row_ax[0].set_ylabel(r"$p/p_{\max}$")
-    handles = [*keys.values(), _key(color="k", ls="-", label="numerical"),
+    keys = [_key(color=colour[e], lw=3, label=f"$H/a = {e:g}$") for e in ratios]
+    handles = [*keys, _key(color="k", ls="-", label="numerical"),
                _key(color="k", ls="--", label="composite asymptotic")]
     _legend_below(fig, handles, len(handles))
     fig.suptitle("Contact pressure: direct numerical solution and composite asymptotic expansion")

@@ -19,7 +19,9 @@ import sympy as sp
 
 from ... import symbols as S
 from ..._checks import InputError, InputTypeError, positive
+from ...display import RichDisplay, fmt
 from ...layers.kernels import IncompressibleLayer
+from ...normal import normal_latex
 from ...parse import as_expr
 from ...punch import Punch, PunchError
 from ...results import checked_lambdify, latex_equation
@@ -64,7 +66,7 @@ class EllipseValues:
 
 
 @dataclass(frozen=True)
-class IncompressibleEllipse:
+class IncompressibleEllipse(RichDisplay):
     """Closed-form solution of (I.3)-(I.4) for ``Phi = x1^2/(2 R1) + x2^2/(2 R2)`` (1.1).
 
     ``p = C (1 - x1^2/a^2 - x2^2/b^2)^2`` on the ellipse, zero outside.
@@ -162,13 +164,22 @@ class IncompressibleEllipse:
 
     def latex(self) -> str:
         return " \\\\\n".join([
-            latex_equation(sp.latex(self.aspect_equation), "0", "I.6"),
-            latex_equation("t", sp.latex(self.t), "I.6"),
-            latex_equation("a^2", sp.latex(self.a2_t), "I.7"),
-            latex_equation("b^2", sp.latex(self.b2_t), "I.7"),
-            latex_equation("C", sp.latex(self.C_t), "I.7"),
-            latex_equation("P", sp.latex(self.force_t), "I.8"),
+            latex_equation(normal_latex(self.aspect_equation), "0", "I.6"),
+            latex_equation("t", normal_latex(self.t), "I.6"),
+            latex_equation("a^2", normal_latex(self.a2_t), "I.7"),
+            latex_equation("b^2", normal_latex(self.b2_t), "I.7"),
+            latex_equation("C", normal_latex(self.C_t), "I.7"),
+            latex_equation("P", normal_latex(self.force_t), "I.8"),
         ])
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``: (I.6)-(I.8) in ``t = a²/b²``, ``r = R₁/R₂``."""
+        return ["IncompressibleEllipse: p = C (1 - x₁²/a² - x₂²/b²)² in the ellipse, ν = 1/2   (I.6)-(I.8)",
+                f"  {fmt(self.aspect_equation)} = 0,  t = a²/b², r = R₁/R₂   (I.6)",
+                f"  t  = {fmt(self.t)}",
+                f"  a² = {fmt(self.a2_t)},  b² = {fmt(self.b2_t)}   (I.7)",
+                f"  C  = {fmt(self.C_t)}   (I.7)",
+                f"  P  = {fmt(self.force_t)}   (I.8)"]
 
 
 @lru_cache(maxsize=128)
@@ -288,7 +299,7 @@ class RadialValues:
 
 
 @dataclass(frozen=True)
-class IncompressibleRadial:
+class IncompressibleRadial(RichDisplay):
     """Incompressible solution (I.3)-(I.4) for an axisymmetric punch, in quadratures (I.9).
 
     Attributes
@@ -315,10 +326,18 @@ class IncompressibleRadial:
 
     def latex(self) -> str:
         return " \\\\\n".join([
-            latex_equation(sp.latex(self.radius_equation), "0", "I.9"),
-            latex_equation("p(r)", sp.latex(sp.factor(self.pressure_of_c)), "I.9"),
-            latex_equation("P", sp.latex(sp.factor(self.force_of_c)), "I.9"),
+            latex_equation(normal_latex(self.radius_equation), "0", "I.9"),
+            latex_equation("p(r)", normal_latex(sp.factor(self.pressure_of_c)), "I.9"),
+            latex_equation("P", normal_latex(sp.factor(self.force_of_c)), "I.9"),
         ])
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``: (I.9) in the contact radius c."""
+        return [f"IncompressibleRadial: {self.punch.name}, ν = 1/2, in the contact radius c   (I.9)",
+                f"  Φ(r) = {fmt(self.profile)}",
+                f"  {fmt(self.radius_equation)} = 0",
+                f"  p(r) = {fmt(sp.factor(self.pressure_of_c))}",
+                f"  P    = {fmt(sp.factor(self.force_of_c))}"]
 
     @property
     def arguments(self) -> tuple[sp.Symbol, ...]:

@@ -20,8 +20,10 @@ import sympy as sp
 
 from ... import symbols as S
 from ..._checks import InputError, InputTypeError, check_order, parse_nu
+from ...display import RichDisplay, fmt
 from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
+from ...normal import join_signed, normal_latex
 from ...parse import sympy_value
 from ...punch import Punch
 from ...results import checked_lambdify, latex_equation
@@ -50,7 +52,7 @@ RANGE_HINT = ("the incompressible/two-term models need m_1 > 0, so that -m_1 H^2
 # =============================================================================================
 @boundary_methods
 @dataclass(frozen=True)
-class ThinLayerOperator:
+class ThinLayerOperator(RichDisplay):
     """The thin-layer operator (2.22)-(2.23) in dimensional form (I.2)::
 
         u_3 = (H/vartheta) sum_{n=0}^{order} (-1)^n c_n H^{2n} Delta^n p,   c_n = [s^{2n}] L(s)/s,
@@ -131,8 +133,22 @@ class ThinLayerOperator:
                 continue
             coef = sp.factor((-1) ** n * cn * S.H ** (2 * n + 1) / self.vartheta)
             op = "p" if n == 0 else (r"\Delta p" if n == 1 else rf"\Delta^{{{n}}} p")
-            parts.append(rf"\left({sp.latex(coef)}\right) {op}")
-        return r"u_3 = " + " + ".join(parts) + r" + \dots \tag{I.2}"
+            tex = normal_latex(coef)
+            parts.append((rf"\left({tex}\right)" if isinstance(coef, sp.Add) else tex) + rf"\, {op}")
+        return r"u_3 = " + join_signed(parts) + r" + \dots \tag{I.2}"
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``: (I.2) with its coefficients."""
+        parts = []
+        for n, cn in enumerate(self.c):
+            if cn != 0:
+                coef = sp.factor((-1) ** n * cn * S.H ** (2 * n + 1) / self.vartheta)
+                text = fmt(coef)
+                op = "p" if n == 0 else ("Δp" if n == 1 else f"Δ^{n} p")
+                parts.append((f"({text})" if isinstance(coef, sp.Add) else text) + " " + op)
+        return [f"ThinLayerOperator of {self.layer}, through Δ^{self.order}   (I.2)",
+                f"  u₃ = {join_signed(parts, latex=False)} + ...",
+                f"  c  = ({', '.join(fmt(cn) for cn in self.c)})   (c_n = [s^(2n)] L(s)/s)"]
 
     def lambdify(self, backend: str = "numpy") -> Callable:
         """Numeric ``(c_0, ..., c_order)`` as a function of the layer's parameter (none at nu = 1/2)."""
@@ -266,7 +282,7 @@ def model_coefficients(layer: LayerKernel, nu: sp.Basic) -> tuple[sp.Expr, sp.Ex
 # =============================================================================================
 @boundary_methods
 @dataclass(frozen=True)
-class ObstacleProblem:
+class ObstacleProblem(RichDisplay):
     """The thin-layer free-boundary problem for one punch, (I.3)-(I.4) at ``nu = 1/2``, (I.10) below::
 
         -Delta p + k^2 p = f  in omega,   p = dp/dn = 0  on its contour,   p >= 0,
@@ -333,17 +349,30 @@ class ObstacleProblem:
 
     def latex(self) -> str:
         """(I.3) or (I.10), the edge conditions (I.4) and, at nu = 1/2, the volume identity (I.5)."""
-        lhs = r"-\Delta p" if self.is_incompressible else rf"-\Delta p + {sp.latex(self.k2)}\, p"
+        lhs = r"-\Delta p" if self.is_incompressible else rf"-\Delta p + {normal_latex(self.k2)}\, p"
         tag = self.equation
         lines = [
-            latex_equation(lhs, sp.latex(sp.factor(self.source)) + r",\quad \mathbf{x} \in \omega", tag),
+            latex_equation(lhs, normal_latex(sp.factor(self.source)) + r",\quad \mathbf{x} \in \omega", tag),
             (r"p = \frac{\partial p}{\partial n} = 0 \ \text{on}\ \partial\omega,\quad p > 0 \ \text{in}\ \omega"
              r" \tag{I.4}"),
         ]
         if self.is_incompressible:
-            lines.append(rf"\iint_\omega \left({sp.latex(S.delta0 - self.punch.expr)}\right) d\mathbf{{x}} = 0"
+            lines.append(rf"\iint_\omega \left({normal_latex(S.delta0 - self.punch.expr)}\right) d\mathbf{{x}} = 0"
                          r" \tag{I.5}")
         return " \\\\\n".join(lines)
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``: the problem (I.3)-(I.5) or (I.10)."""
+        lhs = "-Δp" if self.is_incompressible else "-Δp + k² p"
+        out = [f"ObstacleProblem: {self.punch.name} on {self.layer}   ({self.equation}), (I.4)",
+               f"  {lhs} = f in ω,  p = ∂p/∂n = 0 on ∂ω,  p > 0 in ω",
+               f"  Φ  = {fmt(self.punch.expr)}",
+               f"  f  = {fmt(sp.factor(self.source))}"]
+        if not self.is_incompressible:
+            out.append(f"  k² = {fmt(self.k2)}")
+        else:
+            out.append("  ∬_ω (δ₀ - Φ) dx = 0   (I.5)")
+        return out
 
 
 @boundary

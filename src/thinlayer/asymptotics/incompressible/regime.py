@@ -11,6 +11,7 @@ import sympy as sp
 
 from ... import symbols as S
 from ..._checks import InputTypeError, parse_nu, positive
+from ...display import RichDisplay
 from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...results import checked_lambdify
@@ -23,7 +24,7 @@ __all__ = ["Regime", "regime"]
 # =============================================================================================
 @boundary_methods
 @dataclass(frozen=True)
-class Regime:
+class Regime(RichDisplay):
     """Where the compressible expansion and the incompressible model hold (I.13).
 
     Attributes
@@ -61,6 +62,13 @@ class Regime:
                 rf"4 m_1 (H/a)^2 = {self.compressible_correction:.3g},\quad "
                 rf"\tfrac{{3}}{{16}}\lambda^2 = {self.incompressible_correction:.3g}"
                 rf"\ \Rightarrow\ \text{{{self.model}}} \tag{{I.13}}")
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``: the model (I.13) picks and the sizes it compares with ``tol``."""
+        return [f"Regime: ν = {self.nu:.6g}, H/a = {self.H_over_a:.6g} -> {self.model} model   (I.13)",
+                f"  m₁ = {self.m1:.6g},  λ² = (a/H)²/m₁ = {self.lambda2:.4g}",
+                f"  compressible correction 4m₁ (H/a)² = {self.compressible_correction:.3g},  "
+                f"incompressible correction (3/16) λ² = {self.incompressible_correction:.3g},  tol = {self.tol:.3g}"]
 
     def lambdify(self, backend: str = "numpy") -> Callable:
         """``(lambda^2, 4/lambda^2, 3 lambda^2/16)`` as a numeric function of ``(nu, H_over_a)``."""

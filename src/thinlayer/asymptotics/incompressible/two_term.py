@@ -21,8 +21,10 @@ import sympy as sp
 from ... import symbols as S
 from ..._checks import InputError, InputTypeError, positive
 from ..._series import quotient_field
+from ...display import RichDisplay, fmt
 from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
+from ...normal import normal_latex
 from ...punch import Punch
 from ...results import checked_lambdify, latex_equation
 from .leading import c_sym, rho, rho_out
@@ -114,7 +116,7 @@ def two_term_edge_shift(layer: LayerKernel | None = None, dps: int = 20) -> mpma
 # the two-term model's edge layer in the compressible limit
 # =============================================================================================
 @dataclass(frozen=True)
-class TwoTermEdgeLayer:
+class TwoTermEdgeLayer(RichDisplay):
     """Edge layer of the two-term model (I.10) in the compressible limit (``k a >> 1``).
 
     In ``v = n/H`` (inward distance over H) and units of the outer slope ``g``:
@@ -140,9 +142,16 @@ class TwoTermEdgeLayer:
     equation = "I.10"
 
     def latex(self) -> str:
-        return " \\\\\n".join([latex_equation("q(v)", sp.latex(self.q), "I.10"),
-                                 latex_equation("v_0", sp.latex(self.edge), "I.10"),
-                                 latex_equation(r"\int (q - \max(v, 0))\,dv", sp.latex(self.force_defect), "I.10")])
+        return " \\\\\n".join([latex_equation("q(v)", normal_latex(self.q), "I.10"),
+                                 latex_equation("v_0", normal_latex(self.edge), "I.10"),
+                                 latex_equation(r"\int (q - \max(v, 0))\,dv", normal_latex(self.force_defect), "I.10")])
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        return ["TwoTermEdgeLayer: -m₁ q'' + q = v for v > v₀, q(v₀) = q'(v₀) = 0   (I.10)",
+                f"  q(v) = {fmt(self.q)}",
+                f"  v₀   = {fmt(self.edge)}",
+                f"  ∫ (q - max(v, 0)) dv = {fmt(self.force_defect)}"]
 
     def lambdify(self, backend: str = "numpy") -> Callable:
         """``q(v, m_1)`` (valid for ``v >= v_0``)."""
@@ -268,7 +277,7 @@ k_sym = sp.Symbol("k", positive=True)
 
 @boundary_methods
 @dataclass(frozen=True)
-class TwoTermSphere:
+class TwoTermSphere(RichDisplay):
     """The two-term model (I.10) for the sphere ``Phi = r^2/(2R)``, in parametric form in the radius c (I.11).
 
     Attributes
@@ -371,14 +380,23 @@ class TwoTermSphere:
         return SphereValues(float(self.nu), d0, RR, HH, mm, c, c - h * HH, P, x)
 
     def latex(self) -> str:
-        lines = [latex_equation(r"\delta_0", sp.latex(self.delta0_of_c), "I.11"),
-                 latex_equation("P", sp.latex(self.force_of_c), "I.11")]
+        lines = [latex_equation(r"\delta_0", normal_latex(self.delta0_of_c), "I.11"),
+                 latex_equation("P", normal_latex(self.force_of_c), "I.11")]
         if not self.is_incompressible:
-            lines.append(latex_equation("k^2", sp.latex(self.k2), "I.10"))
+            lines.append(latex_equation("k^2", normal_latex(self.k2), "I.10"))
             lines.append(latex_equation(r"\delta_0", r"\frac{c^2 (1 - 2\psi(kc))}{2R},\quad P = 2\pi f_2 c^6 \chi(kc),"
                                         r"\quad \psi(x) = \frac{x I_0(x)/I_1(x) - 2}{x^2},\quad "
                                         r"\chi(x) = \frac{1/4 - \psi(x)}{x^2}", "I.11"))
         return " \\\\\n".join(lines)
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``: (I.11) in the contact radius c."""
+        out = [f"TwoTermSphere: sphere Φ = r²/(2R) on {self.layer}, in the contact radius c   (I.10)-(I.11)",
+               f"  δ₀ = {fmt(self.delta0_of_c)}",
+               f"  P  = {fmt(self.force_of_c)}"]
+        if not self.is_incompressible:
+            out.append(f"  k² = {fmt(self.k2)}")
+        return out
 
 
 @lru_cache(maxsize=2)

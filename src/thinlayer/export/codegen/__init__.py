@@ -37,7 +37,19 @@ language    files                  function
 
 All functions take ``double``/``f64`` arguments in the order of :attr:`GeneratedCode.arguments`;
 outputs come in the order of :attr:`GeneratedCode.outputs`.  Every file starts with a comment
-that lists both, with the sympy symbol behind each argument.
+that lists both, with the sympy symbol behind each argument and what each argument and output is: its
+meaning, units and the paper's equation (:mod:`~thinlayer.export.codegen.meanings`); the numpy function's
+docstring lists them again (numpydoc).
+
+Numbers of one layer are named constants, not arguments: a result's ``codegen_constants()`` gives them
+(``{symbol: (number, note)}``), and the generated function defines each as a local with its note, e.g. the
+force law of ``BondedLayer(0.3)``::
+
+    h_s = 0.1220706478594777  # edge shift h*(nu=0.3), exact Wiener-Hopf solution (3.18), (3.25)
+
+(the second-order law's ``r_3`` and ``h^*``, the flat punch's ``A``, ``m_1``, ``h^*``, ``c_1``, ``h`` and series
+coefficients ``c_k`` alike).  With a symbolic nu, ``h^*`` stays an argument, described as
+``thinlayer.edge_shift_exact(nu)``.
 
 Common subexpressions (``sympy.cse``) are computed once, as locals ``t0, t1, ...`` at the top of the
 function body in every language (sympy's own ``cse`` option covers C only).  Floats are printed
@@ -65,17 +77,21 @@ Result protocol (for later result types, e.g. composite pressure, force law)::
         equation = "1.8"                    # optional: quoted in the generated header
         def codegen_expressions(self):
             return (delta0, H, mu, nu, R_1, R_2), {"P": force_expr}
+        def codegen_constants(self):        # optional: numbers of the layer the outputs name
+            return {h_star: (0.1220706478594777, "edge shift h*(nu=0.3), exact Wiener-Hopf (3.25)")}
 
 ``codegen_expressions()`` returns ``(args, outputs)``: the argument symbols in call order and a
 mapping from output name to sympy expression, in output order.  It takes precedence over every
-other way of reading an object.
+other way of reading an object.  The outputs may hold the symbols of ``codegen_constants()``, which are
+not arguments.
 
 Modules
 -------
 :mod:`~thinlayer.export.codegen.names` (identifiers, reserved words, collisions),
 :mod:`~thinlayer.export.codegen.spec` (reading a result into arguments and named outputs),
 :mod:`~thinlayer.export.codegen.printers` (sympy's printers and generators with the fixes below),
-:mod:`~thinlayer.export.codegen.files` (the header, the compiled-language files, the numpy module) and
+:mod:`~thinlayer.export.codegen.files` (the header, the compiled-language files, the numpy module),
+:mod:`~thinlayer.export.codegen.meanings` (what each argument and output is) and
 :mod:`~thinlayer.export.codegen.generator` (:func:`generate`, :func:`generate_all`, :class:`GeneratedCode`).
 
 Names

@@ -9,7 +9,7 @@ from typing import Any
 
 import sympy as sp
 
-from .files import compiled_files, header_lines, python_module
+from .files import argument_notes, compiled_files, header_lines, output_notes, python_module
 from .names import LANGUAGES, VECTOR_OUT, check_collisions, check_function_name, check_language, identifier
 from .spec import Spec, check_free_symbols, read_spec
 
@@ -121,27 +121,33 @@ def generate(result: Any, language: str, name: str | None = None, args: Sequence
 
     arg_ids = tuple(identifier(s.name, language) for s in spec.args)
     out_ids = tuple(identifier(k, language) for k, _ in spec.outputs)
+    const_ids = tuple(identifier(c.name, language) for c, _, _ in spec.constants)
     several = len(spec.outputs) > 1
-    _check_names(spec, language, fname, arg_ids, out_ids)
+    _check_names(spec, language, fname, arg_ids, out_ids, const_ids)
 
     new_syms = _real_symbols(spec.args, arg_ids)
-    rename = dict(zip(spec.args, new_syms))
+    new_consts = [sp.Symbol(i, real=True, positive=bool(v > 0), negative=bool(v < 0))  # its sign is known
+                  for i, (_, v, _) in zip(const_ids, spec.constants)]
+    rename = dict(zip(spec.args, new_syms)) | dict(zip((c for c, _, _ in spec.constants), new_consts))
     exprs = [e.xreplace(rename) for _, e in spec.outputs]
+    constants = [(s, v, note) for s, (_, v, note) in zip(new_consts, spec.constants)]
 
-    header = header_lines(spec, language, fname, arg_ids, out_ids, several)
+    header = header_lines(spec, language, fname, arg_ids, out_ids, several, const_ids)
     if language == "python":
-        files = python_module(fname, new_syms, arg_ids, out_ids, exprs, header)
+        files = python_module(fname, new_syms, arg_ids, out_ids, exprs, header, constants,
+                              argument_notes(spec, arg_ids), output_notes(out_ids, spec))
     else:
-        files = compiled_files(language, fname, new_syms, out_ids, exprs, header, several)
+        files = compiled_files(language, fname, new_syms, out_ids, exprs, header, several, constants)
     return GeneratedCode(language, fname, arg_ids, out_ids, tuple(spec.args), MappingProxyType(files))
 
 
 def _check_names(spec: Spec, language: str, fname: str, arg_ids: tuple[str, ...],
-                 out_ids: tuple[str, ...]) -> None:
-    """No two names of the generated function (function, arguments, outputs, C/Fortran locals) collide."""
+                 out_ids: tuple[str, ...], const_ids: tuple[str, ...] = ()) -> None:
+    """No two names of the generated function (function, arguments, constants, outputs, C/Fortran locals) collide."""
     several = len(spec.outputs) > 1
     entries = [(fname, "function name")]
     entries += [(i, f"argument {s.name}") for i, s in zip(arg_ids, spec.args)]
+    entries += [(i, f"constant {c.name}") for i, (c, _, _) in zip(const_ids, spec.constants)]
     if language in ("c", "fortran"):
         if several:
             entries.append((VECTOR_OUT, "output array"))

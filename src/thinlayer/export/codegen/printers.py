@@ -10,6 +10,7 @@ safe outside their branch (:func:`guard_roots`) and common subexpressions as loc
 from __future__ import annotations
 
 import math
+import textwrap
 from collections.abc import Sequence
 
 import sympy as sp
@@ -246,6 +247,9 @@ class _Locals:
     """
 
     locals: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
+    #: ``{local name: note}``: a comment line before the local (a named constant: where its number comes from)
+    local_notes: dict = {}
+    _comment_prefix = "//"
     _print_settings: dict = {"human": False, "strict": False}
 
     def _declare_globals(self, routine):
@@ -264,6 +268,9 @@ class _Locals:
             constants, _, text = self._printer_method_with_settings("doprint", dict(self._print_settings), val,
                                                                     assign_to=sym)
             decl += [self._constant(n, v) for n, v in sorted(constants, key=str)]
+            note = self.local_notes.get(sym.name)
+            if note:
+                code += [f"{self._comment_prefix} {ln}\n" for ln in textwrap.wrap(note, 100, break_on_hyphens=False)]
             code.append(self._local(text))
         return list(dict.fromkeys(decl)), code
 
@@ -293,6 +300,7 @@ class FortranGen(_Locals, FCodeGen):
     """Fortran generator whose files start with thinlayer's header comment (:attr:`header_lines`)."""
 
     header_lines: tuple[str, ...] = ()
+    _comment_prefix = "!"
     _print_settings = {"human": False, "source_format": "free", "standard": 95, "strict": False}
 
     def _get_header(self):
@@ -339,6 +347,7 @@ class JuliaGen(_Locals, JuliaCodeGen):
     """Julia generator: thinlayer's header and a ``preamble`` (``using SpecialFunctions``)."""
 
     header_lines: tuple[str, ...] = ()
+    _comment_prefix = "#"
     preamble: tuple[str, ...] = ()
 
     def _get_header(self):
@@ -355,6 +364,7 @@ class OctaveGen(_Locals, OctaveCodeGen):
     """Octave/MATLAB generator whose file starts with thinlayer's header comment."""
 
     header_lines: tuple[str, ...] = ()
+    _comment_prefix = "%"
 
     def _get_header(self):
         return _comment_block(self.header_lines, "%")

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Protocol, runtime_checkable
 
 import sympy as sp
@@ -25,7 +25,10 @@ class CodegenResult(Protocol):
 
     ``codegen_expressions()`` returns the argument symbols in call order and a mapping
     ``{output name: sympy expression}`` in output order.  Optional attributes: ``codegen_name``
-    (the default function name) and ``equation`` (the paper's equation number).
+    (the default function name), ``equation`` (the paper's equation number), ``punch`` (whose
+    parameters are described as such) and ``codegen_constants()``: ``{symbol: (number, note)}``, the numbers
+    of one layer (``h^*``, ``r_3``, ``A``, ...) that the outputs hold as named symbols; the generated code
+    defines each as a named constant with its note (where the number comes from) instead of an argument.
     """
 
     def codegen_expressions(self) -> tuple[Sequence[sp.Symbol], Mapping[str, sp.Expr]]:
@@ -42,6 +45,12 @@ class Spec:
     outputs: tuple[tuple[str, sp.Expr], ...]
     name: str
     source: str
+    #: ``(symbol, number, note)``: named constants folded into the generated function (not arguments)
+    constants: tuple[tuple[sp.Symbol, sp.Expr, str], ...] = ()
+    #: names of the punch's parameters (described as such in the generated header)
+    punch_parameters: tuple[str, ...] = field(default=())
+    #: the result's equation of the paper, if it has one
+    equation: str | None = None
 
 
 def _snake(name: str) -> str:
@@ -113,8 +122,20 @@ def _protocol_spec(result: Any, hook: Any, args: Any) -> Spec:
     r_args, outs = got
     name = getattr(result, "codegen_name", None) or _snake(type(result).__name__)
     source = getattr(result, "codegen_source", None) or _describe(result)
+    consts = getattr(result, "codegen_constants", None)
+    constants = []
+    for sym, (value, note) in (consts() if callable(consts) else {}).items():
+        value = _as_expr(value, f"constant {sym}")
+        if not isinstance(sym, sp.Symbol) or value.free_symbols:
+            raise InputError(f"{type(result).__name__}.codegen_constants(): {sym!r} must be a Symbol with a number, "
+                             f"got {value}")
+        constants.append((sym, value, str(note)))
+    punch = getattr(result, "punch", None)
+    params = tuple(q.name for q in getattr(punch, "parameters", ()) or ())
+    eq = getattr(result, "equation", None)
     return Spec(_as_args(r_args if args is None else args),
-                _outputs_from(dict(outs), type(result).__name__), name, source)
+                _outputs_from(dict(outs), type(result).__name__), name, source, tuple(constants), params,
+                eq if isinstance(eq, str) else None)
 
 
 def read_spec(result: Any, args: Any) -> Spec:
@@ -160,7 +181,7 @@ def check_free_symbols(spec: Spec) -> None:
     free: set = set()
     for _, e in spec.outputs:
         free |= e.free_symbols
-    missing = sorted(free - set(spec.args), key=lambda q: q.name)
+    missing = sorted(free - set(spec.args) - {c for c, _, _ in spec.constants}, key=lambda q: q.name)
     if missing:
         raise MissingArgumentError(
             f"the expression has free symbol(s) {', '.join(m.name for m in missing)} missing from the "

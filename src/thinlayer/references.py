@@ -1,0 +1,135 @@
+r"""The bibliography: every publication thinlayer cites, keyed by a citation key.
+
+Each field of an entry is taken from a record of the publication itself (the record is named in
+``record``); a field that could not be checked against such a record is left out, and ``note`` says
+what is missing.  Reports cite by key (``\cite{hayes1972}``) and list only what they cite
+(:func:`thinlayer.export._references_section.references_section`); the errata registry names the
+publication of each entry by its key (:attr:`thinlayer.errata.Erratum.source`).
+
+>>> from thinlayer import references
+>>> references.get("hayes1972").year
+1972
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .display import latex_escape
+
+__all__ = ["Reference", "ENTRIES", "get", "latex_item"]
+
+
+@dataclass(frozen=True)
+class Reference:
+    """One publication: only the fields a record of it confirms (``None`` or empty: not confirmed).
+
+    ``record`` names where the fields were read; ``note`` says what could not be confirmed. ``cited_as``
+    is set for a work known only from another publication's reference list (``"argatov, ref. 17"``).
+    """
+
+    key: str
+    authors: tuple[str, ...] = ()
+    title: str | None = None
+    journal: str | None = None
+    year: int | None = None
+    volume: str | None = None
+    issue: str | None = None
+    pages: str | None = None
+    doi: str | None = None
+    publisher: str | None = None
+    record: str = ""
+    note: str = ""
+    cited_as: str = ""
+
+    def latex(self) -> str:
+        r"""The entry as LaTeX text for a ``\bibitem`` (plain fields escaped)."""
+        parts = []
+        if self.authors:
+            parts.append(latex_escape(_join(self.authors)))
+        if self.title:
+            parts.append(r"\emph{" + latex_escape(self.title) + "}")
+        venue = []
+        if self.journal:
+            venue.append(latex_escape(self.journal))
+        if self.volume:
+            venue.append(r"\textbf{" + latex_escape(self.volume) + "}" + (f"({latex_escape(self.issue)})" if self.issue
+                                                                          else ""))
+        if self.pages:
+            venue.append(latex_escape(self.pages.replace("-", "--")))
+        if self.publisher:
+            venue.append(latex_escape(self.publisher))
+        if self.year:
+            venue.append(f"({self.year})")
+        if venue:
+            parts.append(" ".join(venue))
+        if self.doi:
+            parts.append(r"doi:\,\texttt{" + latex_escape(self.doi) + "}")
+        text = ", ".join(parts)
+        if self.note:
+            text += (". " if text else "") + latex_escape(self.note)
+        return text.rstrip(".") + "."
+
+
+def _join(names: tuple[str, ...]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+#: the seed paper's title, as its own text gives it (the project's copy carries no authors and no journal)
+SEED_TITLE = "The pressure of a punch in the form of an elliptic paraboloid on a thin elastic layer"
+
+ENTRIES: tuple[Reference, ...] = (
+    Reference(
+        "argatov", title=SEED_TITLE,
+        record="the title page of the project's copy of the paper (shared/paper/thin-layer-punch.md)",
+        note="The seed paper; the project's copy gives neither its authors nor its journal, year, volume, pages or "
+             "DOI, and no record of the publication could be consulted, so they are not given here"),
+    Reference(
+        "hayes1972", authors=("W. C. Hayes", "L. M. Keer", "G. Herrmann", "L. F. Mockros"),
+        title="A mathematical analysis for indentation tests of articular cartilage",
+        journal="Journal of Biomechanics", year=1972, volume="5", issue="5", pages="541-551",
+        record="Northwestern University's research record of the article and the scan of its first page "
+               "(J. Biomechanics 1972, Vol. 5, pp. 541-551, Pergamon Press)",
+        note="DOI not confirmed by a record, so not given"),
+    Reference(
+        "dimitriadis2002", authors=("E. K. Dimitriadis", "F. Horkay", "J. Maresca", "B. Kachar", "R. S. Chadwick"),
+        title="Determination of elastic moduli of thin layers of soft material using the atomic force microscope",
+        journal="Biophysical Journal", year=2002, pages="2798-2810", doi="10.1016/S0006-3495(02)75620-8",
+        record="a bibliographic database record of the article (authors, title, DOI, pages)",
+        note="Volume not confirmed by a record, so not given"),
+    Reference(
+        "garcia2018", authors=("Garcia", "Garcia"), journal="Biophysical Journal", year=2018, volume="114",
+        pages="2923",
+        record="thinlayer's own citation (thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES)",
+        note="Cited as thinlayer records it; title, initials, last page and DOI could not be checked against a "
+             "record of the publication"),
+    Reference(
+        "boussinesq1885", authors=("J. Boussinesq",),
+        title="Application des potentiels \u00e0 l'\u00e9tude de l'\u00e9quilibre et du mouvement des solides "
+              "\u00e9lastiques", publisher="Gauthier-Villars, Paris", year=1885,
+        record="reference lists of later articles that cite it"),
+    Reference(
+        "alexandrov", cited_as="argatov, ref. 17",
+        note="Alexandrov's method of the boundary layer and his approximation (3.19) of the kernel, as cited by the "
+             "seed paper (its reference [17]); the seed paper's reference list is not in the project's copy, so the "
+             "work is named as the paper names it"),
+)
+
+_BY_KEY = {r.key: r for r in ENTRIES}
+
+
+def get(key: str) -> Reference:
+    """The entry of a citation key (``KeyError`` naming the known keys otherwise)."""
+    try:
+        return _BY_KEY[key]
+    except KeyError:
+        raise KeyError(f"no reference {key!r}; known: {', '.join(_BY_KEY)}") from None
+
+
+def latex_item(key: str) -> str:
+    r"""``\bibitem{key} ...`` of an entry; a work known only through another's reference list names it."""
+    ref = get(key)
+    body = ref.latex()
+    if ref.cited_as:
+        via, _, num = ref.cited_as.partition(", ")
+        body = rf"Cited in \cite{{{via}}}, {latex_escape(num)}. " + body
+    return rf"\bibitem{{{key}}} {body}"
