@@ -97,15 +97,27 @@ def _layer(nu: str, model: str = "bonded"):
 _KINDS = ("elliptic_paraboloid", "paraboloid", "fourth_degree")
 
 
-def _punch(args):
+def _punch(args, allow_flat: bool = False):
+    """The punch of ``--punch EXPR``, ``--kind NAME`` (with ``--param``) or, where ``allow_flat``, ``--flat A``.
+
+    Returns the punch, or ``(punch, flat)`` with ``allow_flat`` (``flat``: the flat-ended cylinder was asked for).
+    """
     from ..punch import Punch
 
-    if (args.kind is None) == (args.punch is None):
-        raise BadInput("give exactly one of --punch EXPR (a polynomial in x_1, x_2) and --kind NAME "
-                       f"({', '.join(_KINDS)})")
-    if args.kind is not None:
-        return getattr(Punch, args.kind)()
-    return Punch(args.punch)
+    flat_a = getattr(args, "flat", None) if allow_flat else None
+    given = [o for o, v in (("--punch", args.punch), ("--kind", args.kind), ("--flat", flat_a)) if v is not None]
+    if len(given) != 1:
+        choices = "--punch EXPR (a polynomial in x_1, x_2), --kind NAME " + f"({', '.join(_KINDS)})" + (
+            " and --flat A" if allow_flat else "")
+        raise BadInput(f"give exactly one of {choices}" + (f"; got {' and '.join(given)}" if given else ""))
+    if flat_a is not None:
+        from ..punch import FlatPunch
+
+        if args.param:
+            raise BadInput("--flat A is the flat-ended cylinder of radius A: leave out --param")
+        return FlatPunch(flat_a), True
+    punch = getattr(Punch, args.kind)() if args.kind is not None else Punch(args.punch)
+    return (punch, False) if allow_flat else punch
 
 
 def _params(items: list[str] | None) -> dict[str, float]:
@@ -140,6 +152,18 @@ def _expr_json(e: Any) -> dict:
     return {"expr": str(e), "latex": normal_latex(e), "value": _num(e) if e.is_number else None}
 
 
+def _print_text(text: str) -> None:
+    """Print Unicode text, or its ASCII form (:func:`thinlayer.normal.to_ascii`) on a stream that cannot take it."""
+    enc = getattr(sys.stdout, "encoding", None) or "utf-8"
+    try:
+        text.encode(enc)
+    except (UnicodeEncodeError, LookupError):
+        from ..normal import to_ascii
+
+        text = to_ascii(text)
+    print(text)
+
+
 def _print(obj: Any, as_json: bool) -> None:
     if as_json:
         bad = _nonfinite(obj)
@@ -151,11 +175,32 @@ def _print(obj: Any, as_json: bool) -> None:
         print(obj)
 
 
-def _add_punch_args(p: argparse.ArgumentParser) -> None:
+def _add_punch_args(p: argparse.ArgumentParser, flat: bool = False) -> None:
     p.add_argument("--punch", help="the punch Phi as a polynomial in x_1, x_2, e.g. 'x_1**2/8 + x_2**2/2'")
     p.add_argument("--kind", choices=_KINDS, help="a catalogue punch with symbolic parameters instead of --punch")
     p.add_argument("--param", action="append", metavar="NAME=VALUE",
                    help="a value for a punch parameter (repeatable), e.g. --param R_1=4 --param R_2=1")
+    if flat:
+        p.add_argument("--flat", type=_finite, metavar="A",
+                       help="a flat-ended cylinder of radius A instead of --kind/--punch (--delta0 is its depth w0)")
+
+
+#: the bases of a layer (``--base``)
+BASES = ("bonded", "frictionless")
+
+
+def _base_arg(p: argparse.ArgumentParser, help: str, old: str | None = None) -> None:
+    """``--base bonded|frictionless`` (one name in every subcommand); ``old``: the former spelling, kept hidden."""
+    p.add_argument("--base", choices=BASES, default="bonded", help=help)
+    if old:
+        p.add_argument(old, dest="base", choices=BASES, help=argparse.SUPPRESS)
+
+
+def _model_choices() -> tuple[str, ...]:
+    """The ``solve --model`` choices."""
+    from .solve_cli import MODEL_CHOICES
+
+    return MODEL_CHOICES
 
 
 def _add_overwrite(p: argparse.ArgumentParser, help: str) -> None:
@@ -177,7 +222,7 @@ def _add_output_args(p: argparse.ArgumentParser, latex: bool = True) -> None:
 def _cmd_report(args) -> int:
     from .derivation import load_derivation, write_report
 
-    der = load_derivation(args.file)
+    der = load_derivation(_derivation_path(args.file))
     tex = write_report(der, args.out, pdf=args.pdf, force=args.overwrite)
     pdf = tex.with_suffix(".pdf") if args.pdf else None
     if args.json:
@@ -192,13 +237,34 @@ def _cmd_report(args) -> int:
     return EXIT_OK
 
 
+def _derivation_path(name: str) -> str | Path:
+    """``report FILE``: a bare name (no folder, no suffix) names the catalogue, anything else must exist."""
+    from .derivation import DOCUMENTS, catalogue
+
+    path = Path(name)
+    bare = path.name == name and not path.suffix and name not in (".", "..")
+    if bare:
+        cat = catalogue()
+        if name in cat:
+            return cat[name]
+        if name in DOCUMENTS or path.exists():
+            return name
+        raise BadInput(f"{name}: no derivation of that name; the catalogue has {', '.join([*cat, *DOCUMENTS])} "
+                       "(or give the path of a .toml file)")
+    if not path.exists() and not path.is_symlink():
+        stem = path.stem if path.suffix == ".toml" else ""
+        hint = f"; 'thinlayer report {stem}' is the catalogue's" if stem in catalogue() else ""
+        raise BadInput(f"{name}: the file does not exist{hint}")
+    return path
+
+
 def _cmd_coefficients(args) -> int:
     from ..layers.coefficients import kernel_coefficients
     from ..layers.moments import kernel_moment
 
     if args.order < 1 or args.order > 60:
         raise BadInput(f"--order {args.order}: an integer from 1 to 60")
-    layer = _layer(args.nu, args.model)
+    layer = _layer(args.nu, args.base)
     co = kernel_coefficients(layer, args.order)
     if args.latex:
         print(co.latex())
@@ -207,22 +273,22 @@ def _cmd_coefficients(args) -> int:
     for n in range(min(args.order, 3) + 1):
         for k in range(n + 1):
             moments[f"mu_{2 * k},{2 * n - 2 * k}"] = _expr_json(kernel_moment(layer, 2 * k, 2 * n - 2 * k))
-    out = {"nu": args.nu, "model": args.model, "order": args.order, "A": _expr_json(co.A),
+    out = {"nu": args.nu, "model": args.base, "order": args.order, "A": _expr_json(co.A),
            "m": [_expr_json(x) for x in co.m], "M": [_expr_json(x) for x in co.M], "moments": moments}
     # m[n], M[n] for n = 0..order (m_0 = M_0 = 1)
     if args.json:
         _print(out, True)
-    else:
-        print(f"A = {out['A']['expr']}")
-        for n, (a, b) in enumerate(zip(out["m"], out["M"])):
-            print(f"m_{n} = {a['expr']}\nM_{n} = {b['expr']}")
+    else:  # the normal form in Unicode maths (m_0 = M_0 = 1 are left out)
+        nu = "symbolic" if layer.numeric_nu is None and args.base == "bonded" else args.nu
+        head = f"coefficients of the {args.base} layer's kernel" + (f", ν = {nu}" if args.base == "bonded" else "")
+        _print_text("\n".join([f"{head}   (2.4), (2.20), (4.2)", *co.text_lines()[1:]]))
     return EXIT_OK
 
 
 def _cmd_inner(args) -> int:
     from ..asymptotics.inner import inner_pressure
 
-    layer = _layer(args.nu, args.model)
+    layer = _layer(args.nu, args.base)
     punch = _punch(args)
     if args.param:
         punch = punch.subs(_params(args.param))
@@ -235,60 +301,12 @@ def _cmd_inner(args) -> int:
                 "terms": [_expr_json(t) for t in ip.terms],
                 "scaled_terms": [_expr_json(t) for t in ip.scaled_terms],
                 "pressure": _expr_json(ip.pressure)}, True)
-    else:
-        for k, t in enumerate(ip.terms):
-            print(f"p_{k} = {t}")
-    return EXIT_OK
-
-
-def _cmd_solve(args) -> int:
-    from ..contact.solve import solve
-
-    layer = _solve_layer(args.layer, args.nu)
-    if args.flat is not None:
-        from ..punch import FlatPunch
-
-        if args.kind is not None or args.punch is not None or args.param:
-            raise BadInput("--flat A is the flat-ended cylinder of radius A: leave out --kind, --punch and --param")
-        punch = FlatPunch(args.flat)
-    else:
-        punch = _punch(args)
-    if (args.delta0 is None) == (args.force is None):
-        raise BadInput("give exactly one of --delta0 (indentation) and --force (total force P)")
-    if (args.mu is None) == (args.E is None):
-        raise BadInput("give exactly one of --mu (shear modulus) and --E (Young's modulus)")
-    opts = {} if args.boundary_layer == "exact" else {"boundary_layer": args.boundary_layer}
-    if args.order == 2:  # the compressible model's second-order laws (SO.9), (SO.10)
-        if args.flat is not None:
-            raise BadInput("--order 2 is the second order of a polynomial punch's thin-layer expansion; the flat "
-                           "punch (--flat) has its own laws: leave out --order")
-        opts["order"] = 2
-    ans = solve(layer, punch, delta0=args.delta0, force=args.force, H=args.H, mu=args.mu, E=args.E,
-                model=args.model, tol=args.tol, parameters=_params(args.param), **opts)
-    for name in ("force", "contact_area", "delta0"):
-        val = getattr(ans, name)
-        if not (math.isfinite(val) and val > 0):
-            raise BadInput(f"the {name.replace('_', ' ')} came out as {val}: not a finite positive number "
-                           "(check --H, --delta0, --mu/--E and --param)")
-    if args.latex:
-        print(ans.latex())
-        return EXIT_OK
-    out = ans.as_dict()
-    out["layer"] = args.layer
-    if ans.model == "compressible":  # the expansion's own terms (1.8), (3.25)
-        sol = ans.detail
-        v = sol.values
-        out.update({"force_leading": v.P0, "force_correction": v.P1, "contact_area_leading": v.area0,
-                    "perimeter": v.perimeter, "edge_shift_exact": sol.edge_shift,
-                    "edge_shift_alexandrov": sol.edge_shift_alexandrov,
-                    "remainder": {k: {"statement": t, "relative_size": e}
-                                  for k, (t, e) in sol.order_of_accuracy.items()}})
-        if getattr(sol, "order", 1) == 2:
-            out.update({"order": 2, "force_second_correction": float(sol.P2)})
-    if args.json:
-        _print(out, True)
-    else:
-        print(ans)
+    else:  # the normal form in Unicode maths; the lambdify() line is Python's business, not the shell's
+        nu = "symbolic" if layer.numeric_nu is None and args.base == "bonded" else args.nu
+        head = (f"inner pressure (2.26): {punch.name} on the {args.base} layer"
+                + (f", ν = {nu}" if args.base == "bonded" else "") + f", {ip.order} term{'s' * (ip.order > 1)}")
+        lines = [ln for ln in ip.text_lines()[1:] if "lambdify" not in ln]
+        _print_text("\n".join([head, *lines]))
     return EXIT_OK
 
 
@@ -304,24 +322,6 @@ def _solve_layer(kind: str, nu: str):
         return FrictionlessLayer(val) if kind == "frictionless" else BondedLayer(val)
     except (ValueError, TypeError, ArithmeticError) as exc:
         raise BadInput(f"--nu {nu}: {exc}") from exc
-
-
-def _solve_order(text: str) -> int:
-    """``solve --order``: 1 (the first-order laws (1.8), (3.25)) or 2 (the second order (SO.9), (SO.10))."""
-    if text.strip() not in ("1", "2"):
-        raise argparse.ArgumentTypeError(f"must be 1 or 2 (the order of the thin-layer laws), got {text!r}")
-    return int(text)
-
-
-def _tolerance(text: str) -> float:
-    """``--tol``: a relative tolerance in (0, 1]."""
-    try:
-        v = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"--tol must be a number in (0, 1], got {text!r}") from None
-    if not (0 < v <= 1):
-        raise argparse.ArgumentTypeError(f"--tol must be a number in (0, 1], got {text!r}")
-    return v
 
 
 def _cmd_errata(args) -> int:
@@ -537,11 +537,13 @@ def _add_report(sub: Any, fmt: type) -> None:
                        help="carry out a derivation file and write its LaTeX report (and PDF)",
                        description="Carry out a derivation file (derivations/*.toml) and write <out>/<name>.tex.\n"
                                    "JSON keys: tex, pdf (null without --pdf).",
-                       epilog="examples:\n  thinlayer report derivations/sphere.toml --out build --pdf\n"
-                              "  thinlayer report errata --out build     # the whole errata registry")
-    r.add_argument("file", help="a derivation file, e.g. derivations/elliptic_paraboloid.toml, a catalogue name "
-                                "(sphere), or errata (the whole errata registry as one document)")
-    r.add_argument("--out", default="build", help="output folder, created if missing (default: build)")
+                       epilog="examples:\n  thinlayer report sphere --out thinlayer-out --pdf --overwrite   # a catalogue name\n"
+                              "  thinlayer report derivations/quartic_punch.toml --out thinlayer-out   # a file\n"
+                              "  thinlayer report errata --out thinlayer-out     # the whole errata registry")
+    r.add_argument("file", help="a catalogue name (sphere, elliptic_paraboloid, ...: the derivation files shipped "
+                                "with thinlayer), the path of a derivation file (it must exist), or errata (the whole "
+                                "errata registry as one document)")
+    r.add_argument("--out", default="thinlayer-out", help="output folder, created if missing (default: thinlayer-out)")
     r.add_argument("--pdf", action="store_true",
                    help="also compile the report (pdflatex; shell escape off, reading and writing only in its "
                         "temporary folder)")
@@ -561,7 +563,7 @@ def _add_coefficients(sub: Any, fmt: type) -> None:
                        epilog="examples:\n  thinlayer coefficients --nu 3/10 --order 4 --json\n"
                               "  thinlayer coefficients --order 2 --latex     # symbolic nu")
     c.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction like 3/10, or a number")
-    c.add_argument("--model", choices=("bonded", "frictionless"), default="bonded", help="base of the layer")
+    _base_arg(c, "base of the layer: bonded (default) or frictionless", old="--model")
     c.add_argument("--order", type=_order, default=3, help="number of coefficients m_1..m_order (default 3)")
     _add_output_args(c)
     c.set_defaults(func=_cmd_coefficients)
@@ -575,54 +577,11 @@ def _add_inner(sub: Any, fmt: type) -> None:
                        epilog="examples:\n  thinlayer inner --kind elliptic_paraboloid --latex\n"
                               "  thinlayer inner --punch 'x_1**2/2 + x_2**4' --nu 3/10 --json")
     i.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction, or a number")
-    i.add_argument("--model", choices=("bonded", "frictionless"), default="bonded", help="base of the layer")
+    _base_arg(i, "base of the layer: bonded (default) or frictionless", old="--model")
     i.add_argument("--order", type=_order, default=None, help="number of terms (default: degree//2 + 1)")
     _add_punch_args(i)
     _add_output_args(i)
     i.set_defaults(func=_cmd_inner)
-
-
-def _add_solve(sub: Any, fmt: type) -> None:
-    s = sub.add_parser("solve", formatter_class=fmt, help="force, contact size and pressure for numeric parameters",
-                       description="Force, contact area and contact radius by the model that holds (thinlayer.solve):\n"
-                                   "the compressible expansion, the two-term or incompressible model near nu = 1/2,\n"
-                                   "or the direct numerical solver.\n"
-                                   "JSON keys: model, reason, force, delta0, contact_area, contact_radius, semi_axes, "
-                                   "max_pressure,\nH, mu, E, nu, H_over_a, error_estimate (relative), tol, layer; "
-                                   "with the compressible model also\nforce_leading, force_correction, "
-                                   "contact_area_leading, perimeter, edge_shift_exact,\nedge_shift_alexandrov, "
-                                   "remainder; with --order 2 also order, force_second_correction (P_2 of (SO.9)).",
-                       epilog="examples:\n  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 "
-                              "--H 0.1 --E 2 --json\n  thinlayer solve --layer frictionless --nu 0.5 --punch "
-                              "'x_1**2/8 + x_2**2/2' --force 100 --H 0.05 --mu 1\n"
-                              "  thinlayer solve --flat 1 --nu 0.3 --delta0 0.01 --H 0.5 --E 2.6\n"
-                              "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 --H 0.05 "
-                              "--mu 1 --order 2")
-    s.add_argument("--layer", choices=("bonded", "frictionless"), default="bonded",
-                   help="the base under the layer: bonded (default) or frictionless")
-    s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
-    s.add_argument("--H", type=_finite, required=True, help="layer thickness (> 0)")
-    s.add_argument("--mu", type=_finite, default=None, help="shear modulus (> 0); or give --E")
-    s.add_argument("--E", type=_finite, default=None, help="Young's modulus (> 0); or give --mu")
-    s.add_argument("--delta0", type=_finite, help="indentation (> 0)")
-    s.add_argument("--force", type=_finite, help="total force P instead of --delta0 (inverse problem)")
-    s.add_argument("--model", choices=("auto", "asymptotic", "compressible", "two-term", "incompressible",
-                                       "any-thickness", "direct"),
-                   default="auto", help="auto (default): the first model within --tol, then any-thickness, else the "
-                                        "direct solver; "
-                                        "asymptotic: refuse instead of solving directly; or one model")
-    s.add_argument("--tol", type=_tolerance, default=0.05,
-                   help="largest relative error estimate accepted (default 0.05)")
-    s.add_argument("--order", type=_solve_order, default=1,
-                   help="order of the compressible model's laws: 1 (default; force (1.8), area (3.25)) or 2 "
-                        "(second order: force (SO.9) to O((H/a)^4), area (SO.10) to O((H/a)^3))")
-    s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
-                   help="boundary layer of the compressible model's composite pressure (default exact)")
-    s.add_argument("--flat", type=_finite, metavar="A",
-                   help="a flat-ended cylinder of radius A instead of --kind/--punch (--delta0 is its depth w0)")
-    _add_punch_args(s)
-    _add_output_args(s)
-    s.set_defaults(func=_cmd_solve)
 
 
 def _add_errata(sub: Any, fmt: type) -> None:
@@ -663,8 +622,7 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("--law", choices=("thin", "thick", "any-thickness"), default="thin",
                    help="flat-punch: the thin-layer law (F.12)-(F.16), the thick series (F.18), or the exact kappa "
                         "tabulated for 0.001 <= a/H <= 200 (python, c) (default thin)")
-    g.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
-                   help="base of the layer (any-thickness, force --order 2; default bonded)")
+    _base_arg(g, "base of the layer (any-thickness, flat-punch, force --order 2; default bonded)")
     g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
     g.add_argument("--out", help="write the files into this folder (created) instead of printing")
     _add_overwrite(g, help="overwrite existing files in --out (default: refuse, before anything is written)")
@@ -705,18 +663,19 @@ def build_parser() -> argparse.ArgumentParser:
         prog="thinlayer", formatter_class=fmt,
         description="Symbolic asymptotics of a rigid punch pressed into a thin elastic layer.",
         epilog="examples:\n"
-               "  thinlayer report derivations/elliptic_paraboloid.toml --out build --pdf\n"
+               "  thinlayer report elliptic_paraboloid --out thinlayer-out --pdf --overwrite\n"
                "  thinlayer coefficients --nu 3/10 --order 4 --json\n"
                "  thinlayer solve --nu 0.3 --kind elliptic_paraboloid --param R_1=4 --param R_2=1 "
-               "--delta0 0.5 --H 0.05\n\n"
+               "--delta0 0.5 --H 0.05 --E 2.6\n\n"
                "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure,\n"
                "130 Ctrl-C, 143 SIGTERM, 141 output pipe closed")
     ap.add_argument("--version", action="version", version=f"thinlayer {_version()}")
     sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
     from .fit_cli import add_fit_parser
     from .flat_cli import add_flat_parser
+    from .solve_cli import add_solve_parser
 
-    for add in (_add_report, _add_coefficients, _add_inner, _add_solve, _add_errata, _add_codegen):
+    for add in (_add_report, _add_coefficients, _add_inner, add_solve_parser, _add_errata, _add_codegen):
         add(sub, fmt)
     add_validate(sub, fmt)
     add_fit_parser(sub, fmt)
@@ -780,7 +739,9 @@ def main(argv: list[str] | None = None) -> int:
         _err(f"the input nests too deeply ({_one_line(exc)})")
         return EXIT_BAD_INPUT
     except (ValueError, TypeError, ArithmeticError, NotImplementedError, KeyError, OSError) as exc:
-        _err(_one_line(exc))
+        from .solve_cli import cli_words
+
+        _err(cli_words(_one_line(exc)))
         return EXIT_BAD_INPUT
     except MemoryError:
         _err("out of memory: choose a smaller order, degree or grid")
