@@ -16,6 +16,7 @@ import json
 import math
 import re
 import sys
+import warnings
 from pathlib import Path
 from typing import Any
 
@@ -144,19 +145,31 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
 def cmd_fit(args: argparse.Namespace) -> int:
     """Run ``thinlayer fit``; returns the exit code (0).  Bad input raises ValueError/TypeError (one line)."""
     from ..contact.fit import fit
+    from ..errors import ValidityWarning
     from ..validation.output import atomic_write, refuse_existing
 
     if args.out is not None:
         refuse_existing([args.out], args.overwrite)
     delta, force = read_curve(args.csv, args.columns)
-    res = fit(delta, force, punch=args.R, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
-              fit_offset=args.fit_offset, model=args.model)
+    with warnings.catch_warnings():  # a fit outside its model's range: the output says NOT VALID and why
+        warnings.simplefilter("ignore", ValidityWarning)
+        res = fit(delta, force, punch=args.R, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
+                  fit_offset=args.fit_offset, model=args.model)
     out = {"file": str(args.csv), **res.as_dict()}
     bad = [k for k, v in out.items() if isinstance(v, float) and not math.isfinite(v)]
     if bad:
         raise InputError(f"the fit's {bad[0]} is not a finite number: the data cannot determine the parameters")
-    text = json.dumps(out, indent=2, allow_nan=False) if args.json else str(res)
-    print(text)
+    if args.json:
+        text = json.dumps(out, indent=2, allow_nan=False)
+    else:  # Unicode maths, in the command line's words
+        from .solve_cli import cli_words, pretty
+
+        head = (f"fit of E by the {res.model} model: sphere R = {res.R:.6g} on a {res.base} layer, ν = {res.nu:.6g}; "
+                f"{res.n_points} points, χ_max = {res.chi_max:.3g}")
+        text = "\n".join([head, *(pretty(cli_words(ln)) for ln in res.text_lines()[1:])])
+    from .cli import _print_text
+
+    _print_text(text)
     if args.out is not None:
         atomic_write(args.out, text + "\n")
         if not args.quiet:

@@ -38,15 +38,16 @@ def add_flat_parser(subparsers: Any, formatter_class: type) -> argparse.Argument
         description="The stiffness factor kappa(a/H) of a flat-ended cylinder of radius a on a layer of thickness H\n"
                     "(thinlayer.flat_punch_stiffness): exact (Fredholm equation (F.6)-(F.7)), thin-layer law\n"
                     "(F.10)-(F.16), thick series (F.18), or auto (the cheapest within --max-error).\n"
-                    "JSON: {layer, nu, model, rows: [{a_over_H, kappa, model, error_estimate}]}.",
+                    "JSON: {layer (the base), nu, model, rows: [{a_over_H, kappa, model, error_estimate}]}.",
         epilog="examples:\n  thinlayer flat-punch --a-over-H 0.5 2 10 --nu 0.3\n"
                "  thinlayer flat-punch --a-over-H 50 --nu 0.5 --model thin --json\n"
                "  thinlayer solve --flat 1.0 --nu 0.3 --H 0.5 --delta0 0.01 --E 2.6   # force of one punch")
     s.add_argument("--a-over-H", dest="a_over_H", type=_ratio, nargs="+", required=True,
                    help=f"punch radius over layer thickness (> 0; at most {MAX_VALUES} values)")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
-    s.add_argument("--layer", choices=("bonded", "frictionless"), default="bonded",
-                   help="the base under the layer: bonded (default) or frictionless")
+    from .cli import _base_arg
+
+    _base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
     s.add_argument("--model", choices=("auto", "exact", "thin", "thick"), default="auto",
                    help="auto (default): thick series, then thin-layer law within --max-error, else exact")
     s.add_argument("--max-error", type=_ratio, default=1e-2,
@@ -66,7 +67,7 @@ def cmd_flat(args: argparse.Namespace) -> int:
     if len(args.a_over_H) > MAX_VALUES:
         raise InputError(f"--a-over-H: {len(args.a_over_H)} values, at most {MAX_VALUES} on one command line")
     nu = float(parse_nu(args.nu, floats="float", upper_closed=True, symbols=False, example="0.3, '3/10' or 0.5"))
-    layer = FrictionlessLayer(nu) if args.layer == "frictionless" else (
+    layer = FrictionlessLayer(nu) if args.base == "frictionless" else (
         IncompressibleLayer() if nu == 0.5 else BondedLayer(nu))
     if args.max_error > 1:
         raise InputError(f"--max-error {args.max_error:g}: a relative error in (0, 1]")
@@ -74,11 +75,14 @@ def cmd_flat(args: argparse.Namespace) -> int:
     rows = [{"a_over_H": float(a), "kappa": float(k), "model": m, "error_estimate": float(e)}
             for a, k, e, m in zip(args.a_over_H, kappa, est, used)]
     if args.json:
-        print(json.dumps({"layer": args.layer, "nu": nu, "model": args.model, "rows": rows}, indent=2,
+        print(json.dumps({"layer": args.base, "nu": nu, "model": args.model, "rows": rows}, indent=2,
                          allow_nan=False))
         return 0
-    print(f"flat-ended cylinder on a {args.layer} layer, nu = {nu:g}: P = 4 mu a w0 kappa/(1 - nu)   (F.1)")
-    print(f"  {'a/H':>10}  {'kappa':>16}  {'model':<6}  estimate")
-    for r in rows:
-        print(f"  {r['a_over_H']:>10.6g}  {r['kappa']:>16.10g}  {r['model']:<6}  {r['error_estimate']:.1e}")
+    from .cli import _print_text
+
+    lines = [f"flat-ended cylinder on a {args.base} layer, ν = {nu:g}: P = 4μ a w₀ κ/(1 - ν)   (F.1)",
+             f"  {'a/H':>10}  {'κ':>16}  {'model':<6}  estimate"]
+    lines += [f"  {r['a_over_H']:>10.6g}  {r['kappa']:>16.10g}  {r['model']:<6}  {r['error_estimate']:.1e}"
+              for r in rows]
+    _print_text("\n".join(lines))
     return 0

@@ -118,6 +118,9 @@ def _tolerance(text: str) -> float:
 _SUP = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 _PRETTY = [
     (re.compile(r"sqrt\(R delta0\)"), "√(Rδ₀)"),
+    (re.compile(r"sqrt\(R delta\)"), "√(Rδ)"),
+    (re.compile(r"(?<![-\w])delta\b"), "δ"),
+    (re.compile(r"\bchi_max\b"), "χ_max"),
     (re.compile(r"(?<![-\w])(?:delta0|delta_0)\b"), "δ₀"),
     (re.compile(r"(?<![-\w])nu\b"), "ν"),
     (re.compile(r"(?<![-\w])mu\b"), "μ"),

@@ -46,9 +46,10 @@ def add_cli(subparsers: Any, formatter_class: Any = None) -> Any:
                     "on stderr. Ctrl-C stops cleanly: the rows done are printed and written (exit code 130).\n"
                     "JSON keys: rows, observed_orders, edge_shift_checks, skipped, interrupted, pending, settings,\n"
                     "seconds, passed. Exit code 1 if an observed order or the h* check does not match.",
-        epilog="examples:\n  thinlayer validate\n  thinlayer validate --out build/validation --plots\n"
+        epilog="examples:\n  thinlayer validate     # the default study: minutes\n"
                "  thinlayer validate --shapes sphere --nu 0.3,0.45 --ratios 0.1,0.05,0.025 --json\n"
-               "  thinlayer validate --full --out build/validation --plots     # several minutes",
+               "  thinlayer validate --shapes sphere --nu 0.3 --ratios 0.1,0.05 --out thinlayer-out/validation --plots\n"
+               "  thinlayer validate --full --out thinlayer-out/validation --plots     # several minutes",
         **kw)
     p.add_argument("--full", action="store_true",
                    help="the full study: nine H/a values, the elliptic case for every nu (2D grids up to 2304^2)")
