@@ -537,13 +537,15 @@ def _add_report(sub: Any, fmt: type) -> None:
                        help="carry out a derivation file and write its LaTeX report (and PDF)",
                        description="Carry out a derivation file (derivations/*.toml) and write <out>/<name>.tex.\n"
                                    "JSON keys: tex, pdf (null without --pdf).",
-                       epilog="examples:\n  thinlayer report sphere --out thinlayer-out --pdf --overwrite   # a catalogue name\n"
+                       epilog="examples:\n"
+                              "  thinlayer report sphere --out thinlayer-out --pdf --overwrite   # a catalogue name\n"
                               "  thinlayer report derivations/quartic_punch.toml --out thinlayer-out   # a file\n"
                               "  thinlayer report errata --out thinlayer-out     # the whole errata registry")
     r.add_argument("file", help="a catalogue name (sphere, elliptic_paraboloid, ...: the derivation files shipped "
                                 "with thinlayer), the path of a derivation file (it must exist), or errata (the whole "
                                 "errata registry as one document)")
-    r.add_argument("--out", default="thinlayer-out", help="output folder, created if missing (default: thinlayer-out)")
+    r.add_argument("--out", default="thinlayer-out",
+                   help="output folder, created if missing (default: thinlayer-out)")
     r.add_argument("--pdf", action="store_true",
                    help="also compile the report (pdflatex; shell escape off, reading and writing only in its "
                         "temporary folder)")

@@ -350,7 +350,8 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                     "contact_radius,\nsemi_axes, max_pressure, H, mu, E, nu, H_over_a, error_estimate (relative), "
                     "tol, layer; with the\ncompressible model also force_leading, force_correction, "
                     "contact_area_leading, perimeter,\nedge_shift_exact, edge_shift_alexandrov, remainder; with "
-                    "--order 2 also order, force_second_correction\n(P_2 of (SO.9)). A sweep: {swept, rows: [...]} (max_pressure null "
+                    "--order 2 also order, force_second_correction\n(P_2 of (SO.9)). A sweep: {swept, rows: [...]} "
+                    "(max_pressure null "
                     "without --max-pressure). "
                     f"CSV columns: {', '.join(CSV_COLUMNS)}.",
         epilog="examples:\n"

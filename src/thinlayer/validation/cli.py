@@ -48,7 +48,7 @@ def add_cli(subparsers: Any, formatter_class: Any = None) -> Any:
                     "seconds, passed. Exit code 1 if an observed order or the h* check does not match.",
         epilog="examples:\n  thinlayer validate     # the default study: minutes\n"
                "  thinlayer validate --shapes sphere --nu 0.3,0.45 --ratios 0.1,0.05,0.025 --json\n"
-               "  thinlayer validate --shapes sphere --nu 0.3 --ratios 0.1,0.05 --out thinlayer-out/validation --plots\n"
+               "  thinlayer validate --shapes sphere --nu 0.3 --ratios 0.1,0.05 --out thinlayer-out/v --plots\n"
                "  thinlayer validate --full --out thinlayer-out/validation --plots     # several minutes",
         **kw)
     p.add_argument("--full", action="store_true",
