@@ -441,16 +441,28 @@ def _nearly_incompressible_result(args, punch):
         raise BadInput(f"incompressible: {exc}") from exc
 
 
+#: what ``thinlayer codegen`` generates (the choices of RESULT)
+CODEGEN_RESULTS = ("inner", "force", "coefficients", "composite", "incompressible", "two-term", "any-thickness",
+                   "flat-punch")
+#: the languages of the codegen registry, :data:`thinlayer.export.codegen.LANGUAGES`: written out so that building
+#: the parser imports no sympy printer (``thinlayer --help`` stays fast); a test keeps them equal
+LANGUAGES = ("c", "fortran", "rust", "julia", "octave", "python")
+#: the languages of the tabulated laws (any-thickness, flat-punch --law any-thickness): a numpy module and C
+TABULATED_LANGUAGES = ("python", "c")
+
+
 def _cmd_codegen_any_thickness(args) -> int:
     """``codegen any-thickness`` (the sphere's law (T.7)) or ``codegen flat-punch --law any-thickness`` (the
     flat punch's exact kappa, tabulated) of one (nu, base) as a numpy module or a C file.
     """
     from ..parse import parse_number
 
-    langs = [x.strip() for x in args.lang.split(",") if x.strip()] if args.lang != "all" else ["python", "c"]
-    bad = [x for x in langs if x not in ("python", "c")]
+    langs = ([x.strip() for x in args.lang.split(",") if x.strip()] if args.lang != "all"
+             else list(TABULATED_LANGUAGES))
+    bad = [x for x in langs if x not in TABULATED_LANGUAGES]
     if bad or not langs:
-        raise BadInput(f"--lang {args.lang!r}: the any-thickness laws are generated in python (numpy) and c")
+        raise BadInput(f"--lang {args.lang!r}: the any-thickness laws are generated in "
+                       f"{' and '.join(TABULATED_LANGUAGES)} (numpy module, C file)")
     flat = args.result == "flat-punch"
     if args.nu in (None, "symbolic") and not (flat and args.base == "frictionless"):
         raise BadInput(f"{args.result}: give --nu, a number in (-1, 1/2] (the law is tabulated per nu)")
@@ -618,14 +630,14 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                               "  thinlayer codegen incompressible --kind elliptic_paraboloid --lang c,python\n"
                               "  thinlayer codegen two-term --kind paraboloid --nu 0.45 --lang julia\n"
                               "  thinlayer codegen any-thickness --nu 0.45 --lang python,c --out gen")
-    g.add_argument("result", choices=("inner", "force", "coefficients", "composite", "incompressible", "two-term",
-                                      "any-thickness", "flat-punch"),
-                   help="what to generate")
+    g.add_argument("result", choices=CODEGEN_RESULTS, help="what to generate")
     g.add_argument("--law", choices=("thin", "thick", "any-thickness"), default="thin",
                    help="flat-punch: the thin-layer law (F.12)-(F.16), the thick series (F.18), or the exact kappa "
                         "tabulated for 0.001 <= a/H <= 200 (python, c) (default thin)")
     _base_arg(g, "base of the layer (any-thickness, flat-punch, force --order 2; default bonded)")
-    g.add_argument("--lang", default="c", help="comma-separated languages or 'all' (default c)")
+    g.add_argument("--lang", default="c", help=f"comma-separated languages of thinlayer.export.codegen.LANGUAGES "
+                                               f"({', '.join(LANGUAGES)}) or 'all' (default c; any-thickness and "
+                                               f"flat-punch --law any-thickness: {', '.join(TABULATED_LANGUAGES)})")
     g.add_argument("--out", help="write the files into this folder (created) instead of printing")
     _add_overwrite(g, help="overwrite existing files in --out (default: refuse, before anything is written)")
     g.add_argument("--name", help="function name (default from the result)")
