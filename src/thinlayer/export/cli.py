@@ -19,12 +19,21 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from .cli_args import (  # noqa: F401 - BadInput and the shared helpers, importable from here as before
+    BASES,
+    KINDS,
+    BadInput,
+    add_punch_args,
+    base_arg,
+    nonfinite,
+    print_text,
+    punch_from_args,
+    punch_params,
+    solve_layer,
+)
+
 EXIT_OK, EXIT_FAILURE, EXIT_BAD_INPUT = 0, 1, 2
 EXIT_INTERRUPTED, EXIT_BROKEN_PIPE, EXIT_TERMINATED = 130, 141, 143
-
-
-class BadInput(ValueError):
-    """Raised for invalid command-line values (exit code 2)."""
 
 
 class Terminated(BaseException):
@@ -57,23 +66,6 @@ def _order(text: str) -> int:
         raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
 
 
-def _nonfinite(obj: Any, path: str = "") -> str | None:
-    """The key path of the first non-finite number in a JSON-like object, or None."""
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return path or "value"
-    if isinstance(obj, dict):
-        items: Any = obj.items()
-    elif isinstance(obj, (list, tuple)):
-        items = enumerate(obj)
-    else:
-        return None
-    for k, v in items:
-        bad = _nonfinite(v, f"{path}.{k}" if path else str(k))
-        if bad:
-            return bad
-    return None
-
-
 # ---------------------------------------------------------------------------------------------
 # shared argument parsing
 # ---------------------------------------------------------------------------------------------
@@ -94,48 +86,6 @@ def _layer(nu: str, model: str = "bonded"):
         raise BadInput(f"--nu {nu}: {exc}") from exc
 
 
-_KINDS = ("elliptic_paraboloid", "paraboloid", "fourth_degree")
-
-
-def _punch(args, allow_flat: bool = False):
-    """The punch of ``--punch EXPR``, ``--kind NAME`` (with ``--param``) or, where ``allow_flat``, ``--flat A``.
-
-    Returns the punch, or ``(punch, flat)`` with ``allow_flat`` (``flat``: the flat-ended cylinder was asked for).
-    """
-    from ..punch import Punch
-
-    flat_a = getattr(args, "flat", None) if allow_flat else None
-    given = [o for o, v in (("--punch", args.punch), ("--kind", args.kind), ("--flat", flat_a)) if v is not None]
-    if len(given) != 1:
-        choices = "--punch EXPR (a polynomial in x_1, x_2), --kind NAME " + f"({', '.join(_KINDS)})" + (
-            " and --flat A" if allow_flat else "")
-        raise BadInput(f"give exactly one of {choices}" + (f"; got {' and '.join(given)}" if given else ""))
-    if flat_a is not None:
-        from ..punch import FlatPunch
-
-        if args.param:
-            raise BadInput("--flat A is the flat-ended cylinder of radius A: leave out --param")
-        return FlatPunch(flat_a), True
-    punch = getattr(Punch, args.kind)() if args.kind is not None else Punch(args.punch)
-    return (punch, False) if allow_flat else punch
-
-
-def _params(items: list[str] | None) -> dict[str, float]:
-    out = {}
-    for it in items or []:
-        if "=" not in it:
-            raise BadInput(f"--param {it!r}: write NAME=VALUE, e.g. --param R_1=4")
-        k, v = it.split("=", 1)
-        try:
-            val = float(v)
-        except ValueError as exc:
-            raise BadInput(f"--param {it!r}: {v!r} is not a number") from exc
-        if not math.isfinite(val):
-            raise BadInput(f"--param {it!r}: {v!r} is not a finite number")
-        out[k.strip()] = val
-    return out
-
-
 def _num(x: Any) -> float | None:
     try:
         return float(x)
@@ -152,55 +102,15 @@ def _expr_json(e: Any) -> dict:
     return {"expr": str(e), "latex": normal_latex(e), "value": _num(e) if e.is_number else None}
 
 
-def _print_text(text: str) -> None:
-    """Print Unicode text, or its ASCII form (:func:`thinlayer.normal.to_ascii`) on a stream that cannot take it."""
-    enc = getattr(sys.stdout, "encoding", None) or "utf-8"
-    try:
-        text.encode(enc)
-    except (UnicodeEncodeError, LookupError):
-        from ..normal import to_ascii
-
-        text = to_ascii(text)
-    print(text)
-
-
 def _print(obj: Any, as_json: bool) -> None:
     if as_json:
-        bad = _nonfinite(obj)
+        bad = nonfinite(obj)
         if bad:
             raise BadInput(f"the result {bad} is not a finite number: the inputs are outside the range this "
                            "model can answer")
         print(json.dumps(obj, indent=2, allow_nan=False))
     else:
         print(obj)
-
-
-def _add_punch_args(p: argparse.ArgumentParser, flat: bool = False) -> None:
-    p.add_argument("--punch", help="the punch Phi as a polynomial in x_1, x_2, e.g. 'x_1**2/8 + x_2**2/2'")
-    p.add_argument("--kind", choices=_KINDS, help="a catalogue punch with symbolic parameters instead of --punch")
-    p.add_argument("--param", action="append", metavar="NAME=VALUE",
-                   help="a value for a punch parameter (repeatable), e.g. --param R_1=4 --param R_2=1")
-    if flat:
-        p.add_argument("--flat", type=_finite, metavar="A",
-                       help="a flat-ended cylinder of radius A instead of --kind/--punch (--delta0 is its depth w0)")
-
-
-#: the bases of a layer (``--base``)
-BASES = ("bonded", "frictionless")
-
-
-def _base_arg(p: argparse.ArgumentParser, help: str, old: str | None = None) -> None:
-    """``--base bonded|frictionless`` (one name in every subcommand); ``old``: the former spelling, kept hidden."""
-    p.add_argument("--base", choices=BASES, default="bonded", help=help)
-    if old:
-        p.add_argument(old, dest="base", choices=BASES, help=argparse.SUPPRESS)
-
-
-def _model_choices() -> tuple[str, ...]:
-    """The ``solve --model`` choices."""
-    from .solve_cli import MODEL_CHOICES
-
-    return MODEL_CHOICES
 
 
 def _add_overwrite(p: argparse.ArgumentParser, help: str) -> None:
@@ -281,7 +191,7 @@ def _cmd_coefficients(args) -> int:
     else:  # the normal form in Unicode maths (m_0 = M_0 = 1 are left out)
         nu = "symbolic" if layer.numeric_nu is None and args.base == "bonded" else args.nu
         head = f"coefficients of the {args.base} layer's kernel" + (f", ν = {nu}" if args.base == "bonded" else "")
-        _print_text("\n".join([f"{head}   (2.4), (2.20), (4.2)", *co.text_lines()[1:]]))
+        print_text("\n".join([f"{head}   (2.4), (2.20), (4.2)", *co.text_lines()[1:]]))
     return EXIT_OK
 
 
@@ -289,9 +199,9 @@ def _cmd_inner(args) -> int:
     from ..asymptotics.inner import inner_pressure
 
     layer = _layer(args.nu, args.base)
-    punch = _punch(args)
+    punch = punch_from_args(args)
     if args.param:
-        punch = punch.subs(_params(args.param))
+        punch = punch.subs(punch_params(args.param))
     ip = inner_pressure(layer, punch, args.order)
     if args.latex:
         print(ip.latex())
@@ -306,22 +216,8 @@ def _cmd_inner(args) -> int:
         head = (f"inner pressure (2.26): {punch.name} on the {args.base} layer"
                 + (f", ν = {nu}" if args.base == "bonded" else "") + f", {ip.order} term{'s' * (ip.order > 1)}")
         lines = [ln for ln in ip.text_lines()[1:] if "lambdify" not in ln]
-        _print_text("\n".join([head, *lines]))
+        print_text("\n".join([head, *lines]))
     return EXIT_OK
-
-
-def _solve_layer(kind: str, nu: str):
-    """The layer of ``thinlayer solve``: bonded (nu up to 1/2, 1/2 the incompressible layer) or frictionless."""
-    from ..layers.kernels import BondedLayer, FrictionlessLayer
-
-    try:
-        val: Any = nu if "/" in nu else float(nu)
-    except ValueError as exc:
-        raise BadInput(f"--nu {nu!r}: use an exact fraction such as 3/10, or a number in (-1, 1/2]") from exc
-    try:
-        return FrictionlessLayer(val) if kind == "frictionless" else BondedLayer(val)
-    except (ValueError, TypeError, ArithmeticError) as exc:
-        raise BadInput(f"--nu {nu}: {exc}") from exc
 
 
 def _cmd_errata(args) -> int:
@@ -346,18 +242,18 @@ def _codegen_result(args):
         if args.nu not in (None, "symbolic"):
             raise BadInput("coefficients are generated as functions of nu: leave out --nu")
         return kernel_coefficients(_layer("symbolic"), args.order or 3)
-    punch = _punch(args) if args.result != "flat-punch" else None
+    punch = punch_from_args(args) if args.result != "flat-punch" else None
     if args.result == "inner":
         from ..asymptotics.inner import inner_pressure
 
         if args.param:
-            punch = punch.subs(_params(args.param))
+            punch = punch.subs(punch_params(args.param))
         return inner_pressure(_layer(args.nu or "symbolic"), punch, args.order)
     if args.result == "force":
         from ..asymptotics.force_law import force_law
 
         if args.param:
-            punch = punch.subs(_params(args.param))
+            punch = punch.subs(punch_params(args.param))
         if args.order not in (None, 1, 2):
             raise BadInput(f"force: --order {args.order}: 1 (the force law (1.8) and area (3.25), the default) or 2 "
                            "(the second-order laws (SO.9), (SO.10))")
@@ -373,7 +269,7 @@ def _codegen_result(args):
     if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
         raise BadInput("composite needs numeric --nu, --delta0 and --H (and --param values)")
     sol = solve(_layer(args.nu), punch, delta0=args.delta0, H=args.H, mu=args.mu,
-                parameters=_params(args.param), boundary_layer="alexandrov")
+                parameters=punch_params(args.param), boundary_layer="alexandrov")
     return sol.composite
 
 
@@ -399,7 +295,7 @@ def _flat_punch_law(args):
 
     if args.nu in (None, "symbolic") and args.base == "bonded":
         raise BadInput("flat-punch: give --nu (the laws are generated for one layer), or --base frictionless")
-    layer = _solve_layer(args.base, args.nu if args.nu not in (None, "symbolic") else "0")
+    layer = solve_layer(args.base, args.nu if args.nu not in (None, "symbolic") else "0")
     return thin_flat_punch(layer) if args.law == "thin" else thick_flat_punch(layer)
 
 
@@ -413,7 +309,7 @@ def _nearly_incompressible_result(args, punch):
     from ..layers.kernels import IncompressibleLayer
 
     if args.param:
-        punch = punch.subs(_params(args.param))
+        punch = punch.subs(punch_params(args.param))
     sphere = punch.name.startswith("paraboloid")
     if args.result == "two-term":
         if not sphere:
@@ -470,7 +366,7 @@ def _cmd_codegen_any_thickness(args) -> int:
         from ..contact.flat_punch import flat_punch_source
         from ..layers.kernels import IncompressibleLayer
 
-        layer = _solve_layer(args.base, args.nu if args.nu not in (None, "symbolic") else "0")
+        layer = solve_layer(args.base, args.nu if args.nu not in (None, "symbolic") else "0")
         if layer.base == "bonded" and layer.numeric_nu == 0.5:
             layer = IncompressibleLayer()
         name = args.name or "thinlayer_flat_punch"
@@ -577,7 +473,7 @@ def _add_coefficients(sub: Any, fmt: type) -> None:
                        epilog="examples:\n  thinlayer coefficients --nu 3/10 --order 4 --json\n"
                               "  thinlayer coefficients --order 2 --latex     # symbolic nu")
     c.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction like 3/10, or a number")
-    _base_arg(c, "base of the layer: bonded (default) or frictionless", old="--model")
+    base_arg(c, "base of the layer: bonded (default) or frictionless", old="--model")
     c.add_argument("--order", type=_order, default=3, help="number of coefficients m_1..m_order (default 3)")
     _add_output_args(c)
     c.set_defaults(func=_cmd_coefficients)
@@ -591,9 +487,9 @@ def _add_inner(sub: Any, fmt: type) -> None:
                        epilog="examples:\n  thinlayer inner --kind elliptic_paraboloid --latex\n"
                               "  thinlayer inner --punch 'x_1**2/2 + x_2**4' --nu 3/10 --json")
     i.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction, or a number")
-    _base_arg(i, "base of the layer: bonded (default) or frictionless", old="--model")
+    base_arg(i, "base of the layer: bonded (default) or frictionless", old="--model")
     i.add_argument("--order", type=_order, default=None, help="number of terms (default: degree//2 + 1)")
-    _add_punch_args(i)
+    add_punch_args(i)
     _add_output_args(i)
     i.set_defaults(func=_cmd_inner)
 
@@ -634,7 +530,7 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("--law", choices=("thin", "thick", "any-thickness"), default="thin",
                    help="flat-punch: the thin-layer law (F.12)-(F.16), the thick series (F.18), or the exact kappa "
                         "tabulated for 0.001 <= a/H <= 200 (python, c) (default thin)")
-    _base_arg(g, "base of the layer (any-thickness, flat-punch, force --order 2; default bonded)")
+    base_arg(g, "base of the layer (any-thickness, flat-punch, force --order 2; default bonded)")
     g.add_argument("--lang", default="c", help=f"comma-separated languages of thinlayer.export.codegen.LANGUAGES "
                                                f"({', '.join(LANGUAGES)}) or 'all' (default c; any-thickness and "
                                                f"flat-punch --law any-thickness: {', '.join(TABULATED_LANGUAGES)})")
@@ -647,7 +543,7 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("--delta0", type=_finite, help="indentation (composite)")
     g.add_argument("--H", type=_finite, help="layer thickness (composite)")
     g.add_argument("--mu", type=_finite, default=1.0, help="shear modulus (composite, default 1)")
-    _add_punch_args(g)
+    add_punch_args(g)
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
 

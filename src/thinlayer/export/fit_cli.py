@@ -167,9 +167,9 @@ def cmd_fit(args: argparse.Namespace) -> int:
         head = (f"fit of E by the {res.model} model: sphere R = {res.R:.6g} on a {res.base} layer, ν = {res.nu:.6g}; "
                 f"{res.n_points} points, χ_max = {res.chi_max:.3g}")
         text = "\n".join([head, *(pretty(cli_words(ln)) for ln in res.text_lines()[1:])])
-    from .cli import _print_text
+    from .cli_args import print_text
 
-    _print_text(text)
+    print_text(text)
     if args.out is not None:
         atomic_write(args.out, text + "\n")
         if not args.quiet:

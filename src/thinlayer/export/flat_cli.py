@@ -45,9 +45,9 @@ def add_flat_parser(subparsers: Any, formatter_class: type) -> argparse.Argument
     s.add_argument("--a-over-H", dest="a_over_H", type=_ratio, nargs="+", required=True,
                    help=f"punch radius over layer thickness (> 0; at most {MAX_VALUES} values)")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
-    from .cli import _base_arg
+    from .cli_args import base_arg
 
-    _base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
+    base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
     s.add_argument("--model", choices=("auto", "exact", "thin", "thick"), default="auto",
                    help="auto (default): thick series, then thin-layer law within --max-error, else exact")
     s.add_argument("--max-error", type=_ratio, default=1e-2,
@@ -78,11 +78,11 @@ def cmd_flat(args: argparse.Namespace) -> int:
         print(json.dumps({"layer": args.base, "nu": nu, "model": args.model, "rows": rows}, indent=2,
                          allow_nan=False))
         return 0
-    from .cli import _print_text
+    from .cli_args import print_text
 
     lines = [f"flat-ended cylinder on a {args.base} layer, ν = {nu:g}: P = 4μ a w₀ κ/(1 - ν)   (F.1)",
              f"  {'a/H':>10}  {'κ':>16}  {'model':<6}  estimate"]
     lines += [f"  {r['a_over_H']:>10.6g}  {r['kappa']:>16.10g}  {r['model']:<6}  {r['error_estimate']:.1e}"
               for r in rows]
-    _print_text("\n".join(lines))
+    print_text("\n".join(lines))
     return 0

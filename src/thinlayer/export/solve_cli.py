@@ -337,7 +337,7 @@ def _table(answers: list[Any], swept: str) -> list[str]:
 # ---------------------------------------------------------------------------------------------
 def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
     """Add ``solve`` to the ``thinlayer`` subcommands; the handler is :func:`cmd_solve`."""
-    from .cli import _add_punch_args, _base_arg, _model_choices
+    from .cli_args import add_punch_args, base_arg
 
     s = sub.add_parser(
         "solve", formatter_class=fmt, help="force, contact size and pressure for numeric parameters (or a sweep)",
@@ -364,7 +364,7 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.01:1:100 --H 0.1 --E 2 "
                "--format csv\n"
                "  thinlayer solve --nu 0.45 --kind paraboloid --param R=10 --delta0 0.1 --H 0.05,0.1,0.5,2 --mu 1")
-    _base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
+    base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
     s.add_argument("--H", type=parse_values, required=True,
                    help="layer thickness (> 0), or a sweep START:STOP:COUNT or A,B,C")
@@ -373,7 +373,7 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
     s.add_argument("--delta0", type=parse_values, help="indentation (> 0), or a sweep START:STOP:COUNT or A,B,C")
     s.add_argument("--force", type=parse_values,
                    help="total force P instead of --delta0 (inverse problem), or a sweep")
-    s.add_argument("--model", choices=_model_choices(), default="auto",
+    s.add_argument("--model", choices=MODEL_CHOICES, default="auto",
                    help="auto (default): the first model within --tol, then any-thickness, else the direct solver; "
                         "asymptotic: refuse instead of solving directly; or one model")
     s.add_argument("--tol", type=_tolerance, default=0.05,
@@ -383,7 +383,7 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                         "(second order: force (SO.9) to O((H/a)^4), area (SO.10) to O((H/a)^3))")
     s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
                    help="boundary layer of the compressible model's composite pressure (default exact)")
-    _add_punch_args(s, flat=True)
+    add_punch_args(s, flat=True)
     s.add_argument("--format", choices=("text", "json", "csv"), default=None,
                    help="output format (default text; --json is --format json)")
     s.add_argument("--output", type=Path, metavar="FILE",
@@ -416,7 +416,7 @@ def _sweep(args: argparse.Namespace) -> tuple[str | None, list[float]]:
 
 
 def _bad(msg: str) -> Exception:
-    from .cli import BadInput
+    from .cli_args import BadInput
 
     return BadInput(msg)
 
@@ -424,7 +424,7 @@ def _bad(msg: str) -> Exception:
 def cmd_solve(args: argparse.Namespace) -> int:
     """Run ``thinlayer solve``; returns 0.  Bad input raises ValueError/TypeError (one line, exit 2)."""
     from ..contact.solve import solve
-    from .cli import _params, _print_text, _punch, _solve_layer
+    from .cli_args import print_text, punch_from_args, punch_params, solve_layer
 
     fmt = "json" if args.json else args.format
     if args.json and args.format not in (None, "json"):
@@ -442,15 +442,15 @@ def cmd_solve(args: argparse.Namespace) -> int:
         from ..validation.output import refuse_existing
 
         refuse_existing([args.output], args.overwrite)  # before the first solve
-    layer = _solve_layer(args.base, args.nu)
-    punch, flat = _punch(args, allow_flat=True)
+    layer = solve_layer(args.base, args.nu)
+    punch, flat = punch_from_args(args, allow_flat=True)
     opts = {} if args.boundary_layer == "exact" else {"boundary_layer": args.boundary_layer}
     if args.order == 2:  # the compressible model's second-order laws (SO.9), (SO.10)
         if flat:
             raise _bad("--order 2 is the second order of a polynomial punch's thin-layer expansion; the flat punch "
                        "has its own laws: leave out --order")
         opts["order"] = 2
-    params = _params(args.param)
+    params = punch_params(args.param)
     given = "delta0" if args.delta0 is not None else "force"
     answers = []
     for k, value in enumerate(values):
@@ -476,21 +476,21 @@ def cmd_solve(args: argparse.Namespace) -> int:
     base = args.base
     if fmt in (None, "text"):
         if swept is None:
-            _print_text("\n".join(text_lines(answers[0], base, given, args.verbose, _punch_text(punch, params))))
+            print_text("\n".join(text_lines(answers[0], base, given, args.verbose, _punch_text(punch, params))))
         else:
             a = answers[0]
             head = [_punch_text(punch, params), _layer_text(a, base) if swept != "H" else
                     f"{base} layer, ν = {_g(a.nu, 6)}, μ = {_g(a.mu, 6)} (E = {_g(a.E, 6)})"]
-            _print_text("\n".join(head + _table(answers, swept)))
+            print_text("\n".join(head + _table(answers, swept)))
         return 0
     rows = [_row(a, base, detail=swept is None, max_pressure=swept is None or args.max_pressure) for a in answers]
     if fmt == "csv":
         text = to_csv(rows)
     else:
-        from .cli import _nonfinite
+        from .cli_args import nonfinite
 
         obj: Any = rows[0] if swept is None else {"swept": swept, "rows": rows}
-        bad = _nonfinite(obj)
+        bad = nonfinite(obj)
         if bad:
             raise _bad(f"the result {bad} is not a finite number: the inputs are outside the range this model can "
                        "answer")
