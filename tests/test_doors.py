@@ -482,6 +482,8 @@ NO_USER_VALUES: dict[str, str] = {
     **{f"thinlayer.{k}.{m}": "prints the object" for k in ("Punch", "FlatPunch", "Indentation") for m in ("latex",
                                                                                                           "text_lines")},
     "thinlayer.Punch.codegen_expressions": "returns the punch's own expressions",
+    **{f"thinlayer.asymptotics.{m}.codegen_constants": "returns the law's layer constants (h*, r_3): no argument"
+       for m in ("force_law.ForceLaw", "second_order.SecondOrderLaw")},
     "thinlayer.LayerKernel": "the abstract base of the layers: no constructor (Python refuses to instantiate it)",
     "thinlayer.Indentation.as_dict": "returns the numbers it holds",
     "thinlayer.errors.boundary": "a decorator for thinlayer's own functions (its argument is code, not a value)",
