@@ -20,7 +20,8 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "thinlayer"
 
 #: group -> rank.  A module imports only from its own group or from a lower rank.
 RANK = {
-    "thinlayer._checks": 0,      # argument validators: import nothing of thinlayer
+    "thinlayer.errors": 0,       # the exception classes users meet: import nothing of thinlayer
+    "thinlayer._checks": 1,      # argument validators: import only thinlayer.errors
     "thinlayer._series": 0,      # power-series arithmetic
     "thinlayer._lazy": 0,        # package names imported on first use (PEP 562)
     "thinlayer.symbols": 0,      # the paper's symbols

@@ -143,3 +143,95 @@ def test_obstacle_nodes_refused_before_work(monkeypatch):
     _forbid(monkeypatch, obstacle, "_grid_solve")
     with pytest.raises(WorkLimitError, match="n \\(nodes per side\\) = 641 exceeds the limit 321"):
         obstacle.solve_obstacle_grid(IncompressibleLayer(), tl.Punch.paraboloid(R=1), 0.5, 0.05, n=641)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# issue 23 item 3: refused by cost, under a hard CPU limit
+# ---------------------------------------------------------------------------------------------------------------
+#: inputs that ran for minutes before issue 23 (each > 30 s when measured), with what must refuse them
+REFUSED_BY_COST = {
+    "float literal 1e999999 in a punch": "tl.Punch('x_1**2 + 1e999999*x_2**2')",
+    "float literal 1e-999999": "tl.Punch('x_1**2 + 1e-999999*x_2**2')",
+    "1e309 as a parameter value": "tl.Punch.paraboloid().subs({'R': '1e309'})",
+    "((9**1000)**1000)**30": "tl.Punch('x_1**2*((9**1000)**1000)**30')",
+    "a 3001-digit integer": "tl.Punch('x_1**2 + ' + '9' * 3001 + '*x_2**2')",
+    "(a+b+c+d)**1000": "tl.Punch('x_1**2*(a+b+c+d)**1000 + x_2**2')",
+    "x_2**2*(a+b+c+d+e)**200": "tl.Punch('x_1**2 + x_2**2*(a+b+c+d+e)**200')",
+    "(x_1+x_2+a+b+c)**40": "tl.inner_pressure(tl.BondedLayer(0.3), tl.Punch('(x_1+x_2+a+b+c)**40'))",
+    "(a+b+c)**-500 in a denominator": "tl.Punch('x_1**2/(a+b+c)**500 + x_2**2')",
+    "a punch with 300 parameters": "tl.Punch(' + '.join(f'a{k}*x_1**2' for k in range(300)) + ' + x_2**2')",
+    "Punch.general(40): 860 parameters": "tl.Punch.general(40)",
+    "a sympy-built (a+b+c+d)**1000": "tl.Punch(x1**2 * (a + b + c + d)**1000 + x2**2)",
+    "BondedLayer('1e-99999999')": "tl.BondedLayer('1e-99999999')",
+    "FrictionlessLayer('0.' + 5000 digits)": "tl.FrictionlessLayer('0.' + '3' * 5000)",
+    "fit() with 10 million points": "tl.fit(np.broadcast_to(0.5, (10**7,)), np.broadcast_to(1.0, (10**7,)), "
+                                    "punch=10.0, H=1.0)",
+    "fit() with a 10-million-element list": "tl.fit([0.5] * 10**7, [1.0] * 10**7, punch=10.0, H=1.0)",
+    "force_arrays with 1e8 depths": "tl.force_arrays(tl.BondedLayer(0.3), tl.Punch.paraboloid(10), "
+                                    "np.broadcast_to(0.1, (10**8,)), 0.05)",
+    "flat_punch_stiffness with 1e7 ratios": "tl.flat_punch_stiffness(tl.BondedLayer(0.3), "
+                                            "np.broadcast_to(30.0, (10**7,)), 'thin')",
+    "CLI inner --punch 1e999999": "cli(['inner', '--punch', 'x_1**2 + 1e999999*x_2**2'])",
+    "derivation file expr ((9**1000)**1000)**30": "cli(['report', toml('x_1**2*((9**1000)**1000)**30'), '--out', "
+                                                   "str(tmp / 'out')])",
+}
+
+_CHILD = r'''
+import json, resource, sys, time, contextlib, io
+from pathlib import Path
+import numpy as np
+import sympy as sp
+import thinlayer as tl
+from thinlayer.export.cli import main as cli_main
+from thinlayer.symbols import x1, x2
+a, b, c, d = sp.symbols("a b c d")
+tmp = Path(sys.argv[1])
+cases = json.loads(sys.argv[2])
+budget = float(sys.argv[3])
+
+def cli(argv):
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        code = cli_main(argv)
+    if code != 2:
+        raise RuntimeError(f"exit {code}: {err.getvalue()!r}")
+    raise ValueError(err.getvalue().strip())
+
+def toml(expr):
+    f = tmp / "d.toml"
+    f.write_text(f"[derivation]\nname='d'\n[layer]\nnu='3/10'\n[punch]\nexpr='{expr}'\n")
+    return str(f)
+
+# the hard stop: what is used so far, plus every case's budget (a runaway is killed by SIGXCPU)
+used = resource.getrusage(resource.RUSAGE_SELF).ru_utime + resource.getrusage(resource.RUSAGE_SELF).ru_stime
+limit = int(used + budget * len(cases)) + 2
+resource.setrlimit(resource.RLIMIT_CPU, (limit, limit + 1))
+for name, code in cases.items():
+    t0 = time.process_time()
+    try:
+        eval(code)
+        out = {"name": name, "ok": False, "error": "accepted"}
+    except (ValueError, TypeError) as exc:
+        out = {"name": name, "ok": True, "error": f"{type(exc).__name__}: {exc}"}
+    except Exception as exc:
+        out = {"name": name, "ok": False, "error": f"{type(exc).__name__}: {exc}"}
+    out["cpu"] = time.process_time() - t0
+    print(json.dumps(out), flush=True)
+'''
+
+
+def test_refused_inputs_under_a_cpu_limit(tmp_path):
+    """Each input of issue 23's unbounded-work list is refused in one line within 2 s of CPU, in a child process
+    whose RLIMIT_CPU kills it if any input runs away (before the fix each ran > 30 s)."""
+    import json
+    import subprocess
+    import sys
+
+    budget = 2.0
+    proc = subprocess.run([sys.executable, "-c", _CHILD, str(tmp_path), json.dumps(REFUSED_BY_COST), str(budget)],
+                          capture_output=True, text=True, timeout=600)
+    rows = [json.loads(line) for line in proc.stdout.splitlines() if line.startswith("{")]
+    assert proc.returncode == 0, f"the child died (a runaway hit RLIMIT_CPU?): {proc.returncode} {proc.stderr[-500:]}"
+    assert [r["name"] for r in rows] == list(REFUSED_BY_COST)
+    bad = [r for r in rows if not r["ok"] or r["cpu"] > budget or "\n" in r["error"].strip()]
+    assert not bad, "\n".join(f"{r['name']}: {r['cpu']:.2f} s CPU, {r['error'][:200]}" for r in bad)

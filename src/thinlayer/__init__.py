@@ -45,9 +45,13 @@ _PUBLIC = {
     "force_arrays": "thinlayer.asymptotics.solution",
     **dict.fromkeys(["solve_2d", "solve_axisymmetric"], "thinlayer.numerics"),
     **dict.fromkeys(["MissingArgumentError", "checked_lambdify"], "thinlayer.results"),
+    **dict.fromkeys(["ThinlayerError", "InputError", "InputTypeError", "WorkLimitError", "NotDerivedError",
+                     "ComputationError"], "thinlayer.errors"),
+    "ExpressionError": "thinlayer.parse",
+    "ValidityError": "thinlayer.asymptotics.solution",
 }
 #: public submodules
-_MODULES = {"errata": "thinlayer.errata", "symbols": "thinlayer.symbols"}
+_MODULES = {"errata": "thinlayer.errata", "errors": "thinlayer.errors", "symbols": "thinlayer.symbols"}
 
 __all__ = [
     # layers: the kernel L(u) (2.3)-(2.4)
@@ -66,7 +70,7 @@ __all__ = [
     "force_any_thickness", "fit",
     # the flat-ended cylinder's stiffness kappa(a/H) (F.1)-(F.19)
     "flat_punch_stiffness",
-    # errors and tools
+    # errors and tools (every exception class is in thinlayer.errors, and importable from here)
     "IncompressibleLayerError", "PunchError", "MissingArgumentError", "checked_lambdify",
     # modules
     "errata", "symbols",

@@ -1,13 +1,15 @@
 """Argument validators shared by every stage: one place for each rule.
 
-Imports nothing of thinlayer (it is the bottom of the import table in
-``tests/test_architecture.py``).  Each check returns the normalised value or raises a
-``TypeError``/``ValueError`` whose one-line message names the argument and what would be valid.
+Imports only :mod:`thinlayer.errors` (it is next to the bottom of the import table in
+``tests/test_architecture.py``) and re-exports its exception classes.  Each check returns the normalised value
+or raises an :class:`~thinlayer.errors.InputError`/:class:`~thinlayer.errors.InputTypeError` whose one-line
+message names the argument and what would be valid.
 """
 from __future__ import annotations
 
 import math
 import numbers
+import re
 from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
@@ -15,7 +17,19 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-__all__ = ["WorkLimitError", "check_bounded", "check_choice", "check_int", "check_list", "check_order", "parse_nu",
+from .errors import (
+    ComputationError,
+    InputError,
+    InputTypeError,
+    NotDerivedError,
+    ThinlayerError,
+    WorkLimitError,
+    boundary,
+)
+
+__all__ = ["ComputationError", "InputError", "InputTypeError", "NotDerivedError", "ThinlayerError", "WorkLimitError",
+           "array_size", "boundary", "check_array_size", "check_bounded", "check_choice", "check_int", "check_list",
+           "check_order", "parse_nu",
            "positive"]
 
 HALF = sp.Rational(1, 2)
@@ -28,14 +42,10 @@ def check_order(n: Any, name: str) -> int:
     3
     """
     if isinstance(n, bool) or not isinstance(n, numbers.Integral):
-        raise TypeError(f"{name} must be a non-negative integer, got {n!r}")
+        raise InputTypeError(f"{name} must be a non-negative integer, got {n!r}")
     if n < 0:
-        raise ValueError(f"{name} must be a non-negative integer, got {n}")
+        raise InputError(f"{name} must be a non-negative integer, got {n}")
     return int(n)
-
-
-class WorkLimitError(ValueError):
-    """A request whose work or memory would exceed a documented limit; raised before any work starts."""
 
 
 def check_bounded(value: Any, name: str, limit: float, reason: str) -> Any:
@@ -63,10 +73,30 @@ def check_bounded(value: Any, name: str, limit: float, reason: str) -> Any:
     return value
 
 
+def array_size(value: Any) -> int:
+    """The number of values in an array-like, counted without converting it (a list of lists: its shape)."""
+    size = getattr(value, "size", None)
+    if isinstance(size, numbers.Integral) and hasattr(value, "shape"):
+        return int(size)
+    n = 1
+    while isinstance(value, (list, tuple)):
+        n *= len(value)
+        if not value:
+            break
+        value = value[0]
+    return n
+
+
+def check_array_size(value: Any, name: str, limit: int, reason: str) -> Any:
+    """``value`` if it holds at most ``limit`` values (counted before any conversion), else a WorkLimitError."""
+    check_bounded(array_size(value), f"the number of values of {name}", limit, reason)
+    return value
+
+
 def check_int(value: Any, name: str, lo: int) -> int:
     """An integer ``>= lo`` (a count of points, modes, iterations)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < lo:
-        raise ValueError(f"{name} must be an integer >= {lo}, got {value!r}")
+        raise InputError(f"{name} must be an integer >= {lo}, got {value!r}")
     return int(value)
 
 
@@ -77,17 +107,17 @@ def positive(value: Any, name: str) -> float:
     2.0
     """
     if isinstance(value, bool) or not isinstance(value, (numbers.Real, sp.Number, mpmath.mpf)):
-        raise TypeError(f"{name} must be a positive real number, got {value!r} ({type(value).__name__})")
+        raise InputTypeError(f"{name} must be a positive real number, got {value!r} ({type(value).__name__})")
     v = float(value)
     if not (math.isfinite(v) and v > 0):
-        raise ValueError(f"{name} must be a finite positive number, got {value!r}")
+        raise InputError(f"{name} must be a finite positive number, got {value!r}")
     return v
 
 
 def check_choice(value: str, allowed: tuple[str, ...], name: str) -> str:
     """One of a fixed set of strings."""
     if value not in allowed:
-        raise ValueError(f"{name} must be one of {allowed}, got {value!r}")
+        raise InputError(f"{name} must be one of {allowed}, got {value!r}")
     return value
 
 
@@ -98,9 +128,9 @@ def check_list(values: Any, check: Callable[[Any], Any], name: str) -> tuple:
     try:
         vals = tuple(values)
     except TypeError as exc:
-        raise TypeError(f"{name} must be a sequence of numbers, got {values!r}") from exc
+        raise InputTypeError(f"{name} must be a sequence of numbers, got {values!r}") from exc
     if not vals:
-        raise ValueError(f"{name} is empty: give at least one value")
+        raise InputError(f"{name} is empty: give at least one value")
     out: list = []
     for v in vals:
         c = check(v)
@@ -115,6 +145,43 @@ def _exact_binary(x: float | mpmath.mpf) -> sp.Rational:
         sign, man, exp, _ = x._mpf_
         return sp.Rational(int(man) * 2 ** max(exp, 0), 2 ** max(-exp, 0)) * (-1 if sign else 1)
     return sp.Rational(*float(x).as_integer_ratio())
+
+
+#: a Poisson ratio written as text: a decimal number (exponent allowed) or a fraction of two integers
+_NU_TEXT = re.compile(r"(?P<sign>[+-]?)(?P<int>\d*)(?:\.(?P<frac>\d*))?(?:[eE](?P<exp>[+-]?\d+))?"
+                      r"(?:\s*/\s*(?P<den>[+-]?\d+))?")
+#: the most digits of an exact Poisson ratio written as text (numerator or denominator, exponent included; the
+#: derivation files allow 6 too): the exact coefficients grow with the digits -- order 200 took 2.7 s with 3/10,
+#: 7 s with 6 digits, 12 s with 10 and 57 s with 30 (2 cores, load 4)
+MAX_NU_DIGITS = 6
+
+
+def _exact_nu(text: str, example: str) -> sp.Rational:
+    """The exact rational of a Poisson ratio written as text, its size checked before any big number is built.
+
+    ``Fraction("1e-99999999")`` builds ``10**99999999`` (minutes); here the digits, exponent included, are counted
+    from the text first.
+    """
+    t = text.strip()
+    if len(t) > 100:
+        raise WorkLimitError(f"nu={t[:30] + ' ...'!r} has {len(t)} characters, more than 100: give a float (e.g. 0.3) "
+                             "or a short fraction (e.g. '3/10')")
+    m = _NU_TEXT.fullmatch(t)
+    if m is None or not (m["int"] or m["frac"]):
+        shown = t if len(t) <= 40 else t[:30] + " ..."
+        raise InputError(f"nu={shown!r} is not a number; give e.g. {example}")
+    digits = len((m["int"] or "").lstrip("0")) + len(m["frac"] or "")
+    exp = int(m["exp"]) if m["exp"] and len(m["exp"].lstrip("+-")) <= 6 else (0 if not m["exp"] else 10**6)
+    size = max(digits + max(exp, 0), len(m["frac"] or "") - min(exp, 0), len((m["den"] or "").lstrip("+-0")))
+    if size > MAX_NU_DIGITS:
+        shown = "more than a million" if size >= 10**6 else f"about {size}"
+        raise WorkLimitError(f"nu={t if len(t) <= 40 else t[:30] + ' ...'!r} has {shown} digits as an exact "
+                             f"fraction, above the limit {MAX_NU_DIGITS}: exact coefficients grow with its digits; "
+                             "give a float (e.g. 0.3) or a short fraction (e.g. '3/10')")
+    try:
+        return sp.Rational(Fraction(t))
+    except (TypeError, ValueError, ZeroDivisionError) as exc:
+        raise InputError(f"nu={t!r} is not a number; give e.g. {example}") from exc
 
 
 def parse_nu(
@@ -160,24 +227,21 @@ def parse_nu(
     """
     if isinstance(nu, sp.Symbol):
         if not symbols:
-            raise TypeError(f"a numeric Poisson ratio is needed here (e.g. nu={example.split(',')[-1].strip()}), "
+            raise InputTypeError(f"a numeric Poisson ratio is needed here (e.g. nu={example.split(',')[-1].strip()}), "
                             f"got the symbol {nu}")
         return nu
     if isinstance(nu, bool):
-        raise TypeError("nu must be a number, got a bool")
+        raise InputTypeError("nu must be a number, got a bool")
     if isinstance(nu, sp.Basic) and not nu.is_number:
-        raise TypeError(f"nu must be None, a Symbol or a number, got the expression {nu!r}")
+        raise InputTypeError(f"nu must be None, a Symbol or a number, got the expression {nu!r}")
     if isinstance(nu, (sp.Rational, numbers.Integral, Fraction)):
         val: Any = sp.Rational(nu)
     elif isinstance(nu, str):
-        try:
-            val = sp.Rational(Fraction(nu.strip()))
-        except (TypeError, ValueError, ZeroDivisionError) as exc:
-            raise ValueError(f"nu={nu!r} is not a number; give e.g. {example}") from exc
+        val = _exact_nu(nu, example)
     elif isinstance(nu, (float, sp.Float, mpmath.mpf, numbers.Real)):
         f = mpmath.mpf(str(nu)) if isinstance(nu, sp.Float) else mpmath.mpf(nu)
         if not mpmath.isfinite(f):
-            raise ValueError(f"nu must be finite, got {nu!r}")
+            raise InputError(f"nu must be finite, got {nu!r}")
         if floats == "exact":
             val = _exact_binary(f)
         elif floats == "Float":
@@ -187,13 +251,13 @@ def parse_nu(
         else:
             val = f
     else:
-        raise TypeError(f"nu must be a Symbol, a rational or a float, got {type(nu).__name__}")
+        raise InputTypeError(f"nu must be a Symbol, a rational or a float, got {type(nu).__name__}")
     lo, hi = sp.Rational(lower), sp.Rational(upper)
     v = sp.Rational(val) if isinstance(val, sp.Rational) else val
     inside = (lo < v <= hi) if upper_closed else (lo < v < hi)
     if not inside:
         rel = "<=" if upper_closed else "<"
-        raise ValueError(f"Poisson ratio nu={nu!r} is outside the admissible range {lo} < nu {rel} {hi}"
+        raise InputError(f"Poisson ratio nu={nu!r} is outside the admissible range {lo} < nu {rel} {hi}"
                          + (f": {range_hint}" if range_hint else ""))
     return val
 

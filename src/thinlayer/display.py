@@ -54,6 +54,7 @@ from typing import Any
 import mpmath
 import sympy as sp
 
+from .errors import InputError
 from .normal import normal_text, to_ascii
 
 __all__ = ["RichDisplay", "Table", "display_math", "fmt", "latex_escape", "table"]
@@ -237,7 +238,7 @@ def table(header: Iterable[str], rows: Iterable[Iterable[Any]], digits: int = 12
     body = tuple(tuple(fmt(c, digits) for c in r) for r in rows)
     for r in body:
         if len(r) != len(head):
-            raise ValueError(f"a row has {len(r)} cells but the header has {len(head)}: {r}")
+            raise InputError(f"a row has {len(r)} cells but the header has {len(head)}: {r}")
     return Table(head, body)
 
 

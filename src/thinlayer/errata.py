@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import symbols as S
+from ._checks import InputError
 from .display import latex_escape
 from .parse import as_expr
 
@@ -44,10 +45,10 @@ class Concern:
     def __post_init__(self) -> None:
         for p in self.punches:
             if p != "any" and p not in PUNCHES:
-                raise ValueError(f"punch {p!r}: expected 'any' or one of {PUNCHES}")
+                raise InputError(f"punch {p!r}: expected 'any' or one of {PUNCHES}")
         for la in self.layers:
             if la != "any" and la not in LAYERS:
-                raise ValueError(f"layer {la!r}: expected 'any' or one of {LAYERS}")
+                raise InputError(f"layer {la!r}: expected 'any' or one of {LAYERS}")
 
     def selects(self, equations: Iterable[str], punches: Iterable[str], layers: Iterable[str]) -> bool:
         """Whether a report that uses ``equations`` for ``punches`` on ``layers`` carries the entry."""

@@ -212,8 +212,8 @@ def _factored(base: sp.Expr) -> sp.Expr | None:
     """``factor(base)`` of a polynomial sum small enough to factor for printing (no floats; total degree at most
     8), else None.  Cached: the same few factors (``1 - 2 nu``, ``1 - nu``) recur in every coefficient.
     """
-    if base.has(sp.Float) or not base.is_polynomial():
-        return None
+    if base.has(sp.Float) or len(base.free_symbols) > 6 or len(base.args) > 40 or not base.is_polynomial():
+        return None  # (many symbols: sympy's dense factorisation took 90 s on a 30-parameter punch's report)
     gens = sorted(base.free_symbols, key=sp.default_sort_key)
     if gens and sp.Poly(base, *gens).total_degree() > _FACTOR_DEGREE:
         return None

@@ -15,8 +15,17 @@ letters, digits and underscores.  The coordinates become ``thinlayer.symbols.x1,
 name a plain sympy Symbol of that name -- ``E``, ``I``, ``S``, ``N``, ``Q``, ``beta``, ``gamma`` and
 ``lambda`` included (never Euler's number, the imaginary unit or a sympy function).  Anything else
 (a call, an attribute, a string, ``^``, ``[``, ``=``, ...) is an :class:`ExpressionError` naming the token
-and its position.  Work is bounded before it starts: the text's length, the nesting depth and each
-exponent (an integer of magnitude at most :data:`MAX_EXPONENT`).
+and its position.
+
+Work is bounded before it starts, by cost and not by shape (each limit a :class:`~thinlayer.errors.WorkLimitError`
+naming it and why): the text's length (:data:`MAX_LENGTH`), the nesting depth, each exponent (an integer of
+magnitude at most :data:`MAX_EXPONENT`), each number literal (an integer of at most :data:`MAX_DIGITS` digits; a
+decimal of at most :data:`MAX_FLOAT_DIGITS` significant digits inside the normal double range, so ``1e999999`` and
+``1e-999999`` are refused at the token), every exact intermediate number (at most :data:`MAX_BITS` bits: the size
+of a power is estimated as ``bits(base) |exponent|`` before it is computed, so ``((9**1000)**1000)**30`` is refused
+at once), and the expansion of the whole formula estimated from its tree (:func:`expression_cost`): total degree
+in all symbols (:data:`MAX_TOTAL_DEGREE`), number of terms (:data:`MAX_TERMS`: ``(a1 + ... + an)**k`` has
+``C(n + k - 1, k)`` terms, products multiply) and distinct parameter names (:data:`MAX_PARAMETERS`).
 
 Examples
 --------
@@ -32,7 +41,9 @@ from __future__ import annotations
 import math
 import numbers
 import re
+import sys
 from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
@@ -40,8 +51,11 @@ import mpmath
 import sympy as sp
 
 from . import symbols as S
+from .errors import InputError, InputTypeError, WorkLimitError, boundary, boundary_methods
 
-__all__ = ["ExpressionError", "MAX_EXPONENT", "MAX_LENGTH", "as_expr", "parse_expression", "parse_number"]
+__all__ = ["Cost", "ExpressionError", "MAX_BITS", "MAX_DIGITS", "MAX_EXPONENT", "MAX_FLOAT_DIGITS", "MAX_LENGTH",
+           "MAX_PARAMETERS", "MAX_TERMS", "MAX_TOTAL_DEGREE", "as_expr", "check_cost", "expression_cost",
+           "parse_expression", "parse_number", "sympy_value"]
 
 #: longest formula read (characters)
 MAX_LENGTH = 10_000
@@ -49,14 +63,167 @@ MAX_LENGTH = 10_000
 MAX_DEPTH = 100
 #: largest magnitude of an exponent
 MAX_EXPONENT = 1000
+#: most digits of an integer literal (about MAX_BITS bits)
+MAX_DIGITS = 3000
+#: most significant digits of a decimal literal (its precision)
+MAX_FLOAT_DIGITS = 50
+#: largest exact number, numerator or denominator, anywhere in a formula (bits): Python prints integers of at
+#: most 4300 digits, and a power's size is estimated before it is computed
+MAX_BITS = 10_000
+#: largest total degree in all symbols after expansion (``x_1**1000`` is one term and cheap; (a + b)**1000 is not)
+MAX_TOTAL_DEGREE = 1000
+#: most terms after expansion: sympy expands 2000 terms in ~0.1 s; ``(x_1 + x_2 + a + b + c)**40`` has 135751
+MAX_TERMS = 2000
+#: most distinct parameter names (coordinates excluded); Punch.general(20) has 230 and its inner expansion
+#: takes 4 s with a symbolic nu
+MAX_PARAMETERS = 250
 
 _ALLOWED = "numbers, the coordinates x_1, x_2, parameter names, + - * / ** and parentheses"
 _TOKEN = re.compile(r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*)"
                     r"|(?P<op>\*\*|[-+*/()]))")
 
 
-class ExpressionError(ValueError):
+class ExpressionError(InputError):
     """A user's formula that the grammar does not accept."""
+
+
+class FormulaTooLargeError(ExpressionError, WorkLimitError):
+    """A formula whose numbers or expansion would exceed a documented limit (refused before the work)."""
+
+
+_CAP = 10**15  # estimates saturate here (far above every limit)
+
+
+@boundary_methods
+@dataclass(frozen=True)
+class Cost:
+    """Upper bounds of what expanding a formula produces, read off its tree without expanding it.
+
+    Attributes
+    ----------
+    degree : int
+        Total degree in all symbols.
+    terms : int
+        Number of terms: a sum adds, a product multiplies, ``(t_1 + ... + t_n)**k`` has at most
+        ``C(n + k - 1, k)`` (and at most the number of monomials of its degree in its symbols).
+    bits : int
+        Size of the largest exact coefficient (bits of numerator or denominator).
+    """
+
+    degree: int
+    terms: int
+    bits: int
+
+
+def _bits(q: sp.Rational) -> int:
+    return max(int(q.p).bit_length(), int(q.q).bit_length())
+
+
+def _power_cost(base: Cost, k: int, nsym: int) -> Cost:
+    k = abs(k)
+    degree = min(base.degree * k, _CAP)
+    if base.terms <= 1 or k == 0:
+        terms = 1
+    else:
+        n = base.terms
+        # C(n + k - 1, k): computed in logs first, so that a huge estimate costs nothing
+        log_terms = math.lgamma(n + k) - math.lgamma(k + 1) - math.lgamma(n)
+        terms = _CAP if log_terms > math.log(_CAP) else math.comb(n + k - 1, k)
+        if nsym:  # at most the monomials of degree <= degree in nsym symbols
+            log_mono = math.lgamma(degree + nsym + 1) - math.lgamma(nsym + 1) - math.lgamma(degree + 1)
+            if log_mono < math.log(_CAP):
+                terms = min(terms, math.comb(degree + nsym, nsym))
+    bits = base.bits * k + (k * max(base.terms, 1).bit_length() if base.terms > 1 else 0)
+    return Cost(degree, min(terms, _CAP), min(bits, _CAP))
+
+
+@boundary
+def expression_cost(expr: sp.Basic) -> Cost:
+    """Estimate of the expansion of ``expr`` (:class:`Cost`), from its tree: linear in the tree's size.
+
+    Examples
+    --------
+    >>> from sympy.abc import a, b, c, d
+    >>> expression_cost((a + b + c + d)**1000).terms      # C(1003, 3)
+    167668501
+    """
+    if not isinstance(expr, sp.Basic):
+        raise InputTypeError(f"expression_cost needs a sympy expression, got {type(expr).__name__} (read a formula "
+                             "with parse_expression)")
+    memo: dict = {}
+
+    def walk(e: sp.Basic) -> Cost:
+        got = memo.get(e)
+        if got is not None:
+            return got
+        if e.is_Number:
+            out = Cost(0, 1, _bits(e) if e.is_Rational else 0)
+        elif e.is_Symbol:
+            out = Cost(1, 1, 0)
+        elif isinstance(e, sp.Add):
+            parts = [walk(a) for a in e.args]
+            out = Cost(max(p.degree for p in parts), min(sum(p.terms for p in parts), _CAP),
+                       max(p.bits for p in parts) + 1)
+        elif isinstance(e, sp.Mul):
+            parts = [walk(a) for a in e.args]
+            terms = 1
+            for p in parts:
+                terms = min(terms * p.terms, _CAP)
+            out = Cost(min(sum(p.degree for p in parts), _CAP), terms, min(sum(p.bits for p in parts), _CAP))
+        elif isinstance(e, sp.Pow) and e.exp.is_Integer:
+            out = _power_cost(walk(e.base), int(e.exp), len(e.base.free_symbols))
+        elif isinstance(e, sp.Pow) and e.exp.is_Rational:  # a root: as costly as the power of its numerator
+            out = _power_cost(walk(e.base), max(abs(int(e.exp.p)), 1), len(e.base.free_symbols))
+        else:  # a function or any other node: one term, its arguments' cost
+            parts = [walk(a) for a in e.args if isinstance(a, sp.Basic)]
+            out = Cost(max([1 if e.free_symbols else 0] + [p.degree for p in parts]), 1,
+                       max([0] + [p.bits for p in parts]))
+        memo[e] = out
+        return out
+
+    return walk(expr)
+
+
+@boundary
+def check_cost(expr: sp.Basic, what: str = "formula", *, cost: Cost | None = None) -> sp.Basic:
+    """``expr`` if expanding it stays within the limits (module docstring), else a one-line error naming the limit.
+
+    Applied to every parsed formula, and by :class:`~thinlayer.Punch` to a sympy expression it is given.  Also
+    checks that every float in it lies in the normal double range.
+    """
+    if not isinstance(expr, sp.Basic):
+        raise InputTypeError(f"check_cost needs a sympy expression, got {type(expr).__name__} (read a formula with "
+                             "parse_expression)")
+    try:
+        c = cost if cost is not None else expression_cost(expr)
+    except RecursionError:
+        raise FormulaTooLargeError(f"the {what} nests too deeply to be read") from None
+    names = {q for q in expr.free_symbols if q.name not in _COORDINATE_NAMES}
+    checks = (
+        (c.bits, MAX_BITS, "holds an exact number of {} bits", "exact arithmetic and printing slow down with the "
+                                                               "size; Python prints at most 4300 digits"),
+        (c.degree, MAX_TOTAL_DEGREE, "has total degree {} in all symbols once expanded",
+         "polynomial arithmetic grows with the degree"),
+        (c.terms, MAX_TERMS, "expands to {} terms", "expanding and deriving grow with the number of terms "
+                                                    "(2000 terms expand in about 0.1 s)"),
+        (len(names), MAX_PARAMETERS, "has {} distinct parameter names", "the inner expansion of Punch.general(20), "
+                                                                       "230 parameters, takes 4 s with a symbolic nu"),
+    )
+    for value, limit, label, why in checks:
+        if value > limit:
+            shown = f"more than {_CAP:.0e}" if value >= _CAP else f"{value}"
+            raise FormulaTooLargeError(f"the {what} {label.format(shown)}, above the limit {limit}: {why}; give a "
+                                       "smaller formula or numbers for some parameters")
+    for f in expr.atoms(sp.Float):
+        if float(f) != 0.0 and not (sys.float_info.min <= abs(float(f)) <= sys.float_info.max):
+            raise FormulaTooLargeError(f"the {what} holds the number {sp.sstr(f, full_prec=False)}, outside the "
+                                       f"double range {sys.float_info.min:.4g} <= |x| <= {sys.float_info.max:.4g}: "
+                                       "rescale the units")
+    return expr
+
+
+_COORDINATE_NAMES = frozenset({"x_1", "x_2", "x1", "x2"})
+_DECIMAL = re.compile(r"(\d*)\.?(\d*)(?:[eE]([+-]?\d+))?")
 
 
 def _tokens(text: str) -> list[tuple[str, str, int]]:
@@ -85,6 +252,7 @@ class _Parser:
         self.names = dict(names)
         self.allowed = allowed
         self.depth = 0
+        self.seen: set[str] = set()
 
     def peek(self) -> tuple[str, str, int] | None:
         return self.toks[self.i] if self.i < len(self.toks) else None
@@ -105,13 +273,13 @@ class _Parser:
 
     def expr(self) -> sp.Expr:
         self.deeper()
-        out = self.term()
+        terms = [self.term()]
         while (tok := self.peek()) is not None and tok[1] in "+-" and tok[0] == "op":
             self.take()
             rhs = self.term()
-            out = out + rhs if tok[1] == "+" else out - rhs
+            terms.append(rhs if tok[1] == "+" else -rhs)
         self.depth -= 1
-        return out
+        return sp.Add(*terms)  # at once: adding one term at a time costs O(n^2)
 
     def term(self) -> sp.Expr:
         out = self.unary()
@@ -124,6 +292,9 @@ class _Parser:
                 out = out / rhs
             else:
                 out = out * rhs
+            if out.is_Rational and _bits(out) > MAX_BITS:  # each factor is bounded, so the product is cheap
+                raise FormulaTooLargeError(f"the number at position {tok[2]} has {_bits(out)} bits, above the limit "
+                                           f"{MAX_BITS}: exact arithmetic and printing slow down with the size")
         return out
 
     def unary(self) -> sp.Expr:
@@ -149,13 +320,18 @@ class _Parser:
                                       f"at most {MAX_EXPONENT}")
             if base == 0 and exp < 0:
                 raise ExpressionError(f"0 to a negative power at position {tok[2]}")
+            # the cost of the power, estimated before sympy computes it (an exact number's power is computed
+            # at once: ((9**1000)**1000)**30 would be a number of 95 million bits)
+            cost = _power_cost(expression_cost(base), int(exp), len(base.free_symbols))
+            if cost.bits > MAX_BITS or cost.terms > MAX_TERMS or cost.degree > MAX_TOTAL_DEGREE:
+                check_cost(base**0, cost=cost, what=f"power at position {tok[2]}")
             return base**exp
         return base
 
     def atom(self) -> sp.Expr:
         kind, value, pos = self.take()
         if kind == "num":
-            return sp.Integer(int(value)) if value.isdigit() else sp.Float(value)
+            return _number(value, pos)
         if kind == "name":
             nxt = self.peek()
             if nxt is not None and nxt[1] == "(":
@@ -166,6 +342,12 @@ class _Parser:
             if self.allowed is not None and value not in self.allowed:
                 valid = ", ".join(sorted(set(self.names) | self.allowed)) or "none"
                 raise ExpressionError(f"unknown name {value!r} at position {pos}: the valid names are {valid}")
+            self.seen.add(value)
+            if len(self.seen) > MAX_PARAMETERS:  # refused while reading: a sum of 300 names costs 0.7 s to build
+                raise FormulaTooLargeError(f"{value!r} at position {pos} is the parameter name number "
+                                           f"{len(self.seen)}, above the limit {MAX_PARAMETERS}: the inner "
+                                           "expansion of Punch.general(20), 230 parameters, takes 4 s with a "
+                                           "symbolic nu")
             return sp.Symbol(value)
         if value == "(":
             inner = self.expr()
@@ -174,6 +356,32 @@ class _Parser:
         raise ExpressionError(f"{value!r} at position {pos} is not allowed here: {_ALLOWED} are allowed")
 
 
+def _number(text: str, pos: int) -> sp.Number:
+    """A number token, its size checked before it is built (``sp.Float("1e999999")`` takes a minute)."""
+    if text.isdigit():
+        digits = len(text.lstrip("0"))
+        if digits > MAX_DIGITS:
+            raise FormulaTooLargeError(f"the integer at position {pos} has {digits} digits, above the limit "
+                                       f"{MAX_DIGITS}: exact arithmetic slows down with the size")
+        return sp.Integer(int(text))
+    m = _DECIMAL.fullmatch(text)
+    mantissa = (m[1] + m[2]).strip("0")
+    if len(mantissa) > MAX_FLOAT_DIGITS:
+        raise FormulaTooLargeError(f"the number at position {pos} has {len(mantissa)} significant digits, above the "
+                                   f"limit {MAX_FLOAT_DIGITS}")
+    value = float(text)  # fast for any exponent: inf or 0 beyond the double range
+    shown = text if len(text) <= 30 else text[:25] + "..."
+    if not math.isfinite(value):
+        raise ExpressionError(f"the number {shown} at position {pos} is beyond the double range (|x| <= "
+                              f"{sys.float_info.max:.4g}): rescale the units")
+    if mantissa and abs(value) < sys.float_info.min:
+        raise ExpressionError(f"the number {shown} at position {pos} is below the double range "
+                              f"({sys.float_info.min:.4g} <= |x| <= {sys.float_info.max:.4g}; write 0 for zero): "
+                              "rescale the units")
+    return sp.Float(text) if mantissa else sp.Float(0)
+
+
+@boundary
 def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str] | None = None,
                      what: str = "formula") -> sp.Expr:
     """A user's formula as a sympy expression, read by the restricted grammar (never evaluated as code).
@@ -199,7 +407,7 @@ def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str
         The text is not a formula of the grammar; the message names the token and its position.
     """
     if not isinstance(text, str):
-        raise TypeError(f"{what} must be a string here, got {type(text).__name__}")
+        raise InputTypeError(f"{what} must be a string here, got {type(text).__name__}")
     if len(text) > MAX_LENGTH:
         raise ExpressionError(f"cannot read the {what}: it has {len(text)} characters, more than {MAX_LENGTH}")
     coords = {"x_1": S.x1, "x_2": S.x2, "x1": S.x1, "x2": S.x2} if coordinates else {}
@@ -212,14 +420,16 @@ def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str
         if parser.peek() is not None:
             tok = parser.peek()
             raise ExpressionError(f"{tok[1]!r} at position {tok[2]} is not allowed here: {_ALLOWED} are allowed")
+        check_cost(out, what)
     except ExpressionError as exc:
         shown = text if len(text) <= 80 else text[:60] + " ... " + text[-15:]
-        raise ExpressionError(f"cannot read {shown!r}: {exc}") from None
+        raise type(exc)(f"cannot read {shown!r}: {exc}") from None
     except RecursionError:
         raise ExpressionError(f"cannot read the {what}: it nests too deeply") from None
     return out
 
 
+@boundary
 def parse_number(value: Any, what: str) -> sp.Expr:
     """A number given as a string (``"3/10"``, ``"0.3"``, ``"1e-3"``), an int, a float or a sympy number.
 
@@ -227,7 +437,7 @@ def parse_number(value: Any, what: str) -> sp.Expr:
     No names are allowed; the result must be finite.
     """
     if isinstance(value, bool):
-        raise TypeError(f"{what} must be a number, got a bool")
+        raise InputTypeError(f"{what} must be a number, got a bool")
     if isinstance(value, str):
         out = parse_expression(value, coordinates=False, names=(), what=what)
     else:
@@ -237,6 +447,24 @@ def parse_number(value: Any, what: str) -> sp.Expr:
     return out
 
 
+@boundary
+def sympy_value(value: Any, what: str, *, symbol: bool = False) -> sp.Basic:
+    """An argument that takes a sympy expression: a sympy object as given, a number converted, a string read by
+    the grammar (:func:`parse_expression`, never evaluated); ``symbol=True`` requires a sympy Symbol.
+
+    sympy's own functions (``sp.diff``, ``sp.sinh``, ``.subs``) sympify a string, which runs it as Python: every
+    method that hands an argument to them converts it here first.
+    """
+    if symbol:
+        if isinstance(value, sp.Symbol):
+            return value
+        raise InputTypeError(f"{what} must be a sympy Symbol, got {value!r:.60} ({type(value).__name__})")
+    if isinstance(value, sp.Basic):
+        return value
+    return as_expr(value, what)
+
+
+@boundary
 def as_expr(value: Any, what: str = "value") -> sp.Expr:
     """A sympy object from a number or a sympy object; a string goes through :func:`parse_expression`.
 
@@ -247,7 +475,7 @@ def as_expr(value: Any, what: str = "value") -> sp.Expr:
     if isinstance(value, sp.Basic):
         return value
     if isinstance(value, bool):
-        raise TypeError(f"{what} must be a number or a sympy expression, got a bool")
+        raise InputTypeError(f"{what} must be a number or a sympy expression, got a bool")
     if isinstance(value, numbers.Integral):
         return sp.Integer(int(value))
     if isinstance(value, Fraction):
@@ -257,6 +485,6 @@ def as_expr(value: Any, what: str = "value") -> sp.Expr:
     if isinstance(value, numbers.Real):
         f = float(value)
         if not math.isfinite(f):
-            raise ValueError(f"{what} must be finite, got {value!r}")
+            raise InputError(f"{what} must be finite, got {value!r}")
         return sp.Float(f)
-    raise TypeError(f"{what} must be a number, a string formula or a sympy expression, got {type(value).__name__}")
+    raise InputTypeError(f"{what} must be a number, a string formula or a sympy expression, got {type(value).__name__}")

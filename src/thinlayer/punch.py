@@ -12,6 +12,7 @@ Lambda stays visible in Phi^*.
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import ClassVar
 
@@ -19,14 +20,26 @@ import sympy as sp
 
 from . import symbols as S
 from .display import RichDisplay, fmt
+from .errors import InputError, InputTypeError, WorkLimitError, boundary_methods
 from .normal import normal_latex
-from .parse import ExpressionError, as_expr, parse_expression
+from .parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, expression_cost, parse_expression, sympy_value
 from .symbols import laplacian
 
 
-class PunchError(ValueError):
+class PunchError(InputError):
     """The punch is not a polynomial in (x1, x2) or is otherwise inadmissible."""
 
+
+class PunchTooLargeError(PunchError, WorkLimitError):
+    """A punch whose degree, terms or parameters exceed a documented limit (refused before any work)."""
+
+
+#: Most terms of a punch once expanded, and its largest total degree in all symbols (coordinates and parameters).
+#: Measured on 2 cores at load 12 (about 3x an idle machine): Punch.general(20), 230 terms of degree 21, inner
+#: expansion 4 s; x_1**2 (a+b)**58 + x_2**2 (degree 60) force law 9 s; x_1**2 (a+b+c+d+e)**8 (495 terms)
+#: force law 40 s and the punch itself 8 s; (x_1**2 + x_2**2)(a+...+j)**3 (440 terms) over 300 s.
+MAX_TERMS = 300
+MAX_TOTAL_DEGREE = 60
 
 #: Largest total degree of a punch.  Measured: the inner expansion of a degree-40 punch (21 terms) takes
 #: 3.0 s with a symbolic nu (10.8 s at degree 60), 0.55 s with nu = 3/10.
@@ -46,6 +59,7 @@ def _degree_bound(expr: sp.Expr) -> int:
     return 0
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class Punch(RichDisplay):
     """A rigid punch ``x3 = -Phi(x1, x2)`` with polynomial Phi (1.1).
@@ -88,7 +102,8 @@ class Punch(RichDisplay):
             try:
                 expr = parse_expression(expr, what="punch")
             except ExpressionError as exc:
-                raise PunchError(f"the punch: {exc}") from None
+                raise (PunchTooLargeError if isinstance(exc, WorkLimitError) else PunchError)(
+                    f"the punch: {exc}") from None
         if expr is None or isinstance(expr, (bool, bytes)):
             raise PunchError(f"the punch must be a polynomial in x_1, x_2 (a sympy expression or a string such as "
                              f"'x_1**2/2 + x_2**2/2'), got {expr!r}")
@@ -100,6 +115,20 @@ class Punch(RichDisplay):
             raise PunchError(f"x1 and x2 must be two different sympy Symbols, got {x1!r}, {x2!r}")
         # the user's coordinates may be any symbols (also unassumed ones): map onto the canonical ones
         expr = expr.xreplace({x1: S.x1, x2: S.x2})
+        if _degree_bound(expr) <= 4 * MAX_DEGREE:  # (a degree above it is refused below, naming x_1, x_2)
+            try:
+                cost = expression_cost(expr)
+                check_cost(expr, "punch", cost=cost)  # a sympy expression given directly: the limits of a string
+            except WorkLimitError as exc:
+                raise PunchTooLargeError(str(exc)) from None
+            for value, limit, what in ((cost.terms, MAX_TERMS, "terms once expanded"),
+                                       (cost.degree, MAX_TOTAL_DEGREE, "as total degree in x_1, x_2 and its "
+                                                                       "parameters")):
+                if value > limit:
+                    raise PunchTooLargeError(
+                        f"the punch has {value} {what}, above the limit {limit} of a punch: deriving its force law "
+                        f"then takes minutes (Punch.general(20), 230 terms of degree 21, is the largest measured "
+                        "in seconds); give numbers for some parameters (Punch.subs) or a smaller polynomial")
         if expr.has(sp.zoo, sp.oo, sp.nan):
             raise PunchError(f"the punch expression {expr} is not finite")
         if not expr.is_polynomial(S.x1, S.x2):
@@ -115,9 +144,9 @@ class Punch(RichDisplay):
         if bound > MAX_DEGREE:  # before sp.Poly, whose dense form of x_1**100000 alone is huge
             deg = sp.Poly(expr, S.x1, S.x2).total_degree() if bound <= 4 * MAX_DEGREE else bound
             if deg > MAX_DEGREE:
-                raise PunchError(f"the punch has degree {deg} in x_1, x_2, above the limit {MAX_DEGREE}: the inner "
-                                 "expansion of a degree-40 punch already takes 3 s with a symbolic nu; "
-                                 "give a polynomial of lower degree")
+                raise PunchTooLargeError(f"the punch has degree {deg} in x_1, x_2, above the limit {MAX_DEGREE}: "
+                                         "the inner expansion of a degree-40 punch already takes 3 s with a "
+                                         "symbolic nu; give a polynomial of lower degree")
         poly = sp.Poly(expr, S.x1, S.x2)
         if poly.total_degree() < 1:
             raise PunchError(f"the punch Phi = {expr} is constant; it must depend on {x1} or {x2}")
@@ -171,8 +200,13 @@ class Punch(RichDisplay):
         if isinstance(degree, bool) or not isinstance(degree, int) or degree < 1:
             raise PunchError(f"degree must be a positive integer, got {degree!r}")
         if degree > MAX_DEGREE:
-            raise PunchError(f"degree = {degree} exceeds the limit {MAX_DEGREE} of a punch (the inner expansion of "
-                             "a degree-40 punch takes 3 s with a symbolic nu)")
+            raise PunchTooLargeError(f"degree = {degree} exceeds the limit {MAX_DEGREE} of a punch (the inner "
+                                     "expansion of a degree-40 punch takes 3 s with a symbolic nu)")
+        count = (degree + 1) * (degree + 2) // 2 - 1
+        if count > MAX_PARAMETERS:
+            raise PunchTooLargeError(f"degree = {degree} gives {count} coefficients, above the limit {MAX_PARAMETERS} "
+                                     "of parameters (degree <= 20: 230 coefficients, the inner expansion takes 4 s "
+                                     "with a symbolic nu; degree 40 took 74 s)")
         terms = [sp.Symbol(f"{prefix}_{i}{j}" if degree < 10 else f"{prefix}_{i},{j}") * S.x1**i * S.x2**j
                  for i in range(degree + 1) for j in range(degree + 1 - i) if i + j]
         return cls(sp.Add(*terms), name=f"general polynomial of degree {degree}")
@@ -195,18 +229,35 @@ class Punch(RichDisplay):
             p = p.diff(S.x1).diff(S.x1) + p.diff(S.x2).diff(S.x2)
         return p.as_expr()
 
-    def subs(self, values: dict) -> "Punch":
-        """A new punch with parameters replaced (scaling entries of replaced parameters dropped)."""
+    def subs(self, values: Mapping) -> "Punch":
+        """A new punch with parameters replaced (scaling entries of replaced parameters dropped).
+
+        ``values`` maps a parameter (its name or its Symbol) to a number, a sympy expression or a string, which is
+        read by the restricted grammar (:func:`thinlayer.parse.parse_expression`), never evaluated.
+        """
+        if not isinstance(values, Mapping):
+            raise InputTypeError(f"the punch's parameter values must be a dict such as {{'R': 10}}, got "
+                                 f"{type(values).__name__}")
         by_name = {q.name: q for q in self.parameters}
-        values = {by_name.get(k, sp.Symbol(k)) if isinstance(k, str) else k: v for k, v in values.items()}
-        unknown = [k for k in values if k not in self.parameters]
-        if unknown:
-            raise PunchError(f"{unknown} are not parameters of the punch; its parameters are {self.parameters}")
-        sc = {k: v for k, v in self.scaling if k not in values}
-        return Punch(self.expr.subs(values), scaling=sc, name=self.name)
+        out = {}
+        for k, v in values.items():
+            key = by_name.get(k) if isinstance(k, str) else k if isinstance(k, sp.Symbol) else None
+            if key is None or key not in self.parameters:
+                raise PunchError(f"{k!r} is not a parameter of the punch; its parameters are "
+                                 f"{', '.join(by_name) or 'none'}")
+            try:
+                out[key] = parse_expression(v, what=f"the value of {key.name}") if isinstance(v, str) \
+                    else check_cost(as_expr(v, f"the value of {key.name}"), f"the value of {key.name}")
+            except WorkLimitError as exc:
+                raise PunchTooLargeError(str(exc)) from None
+            except (TypeError, ValueError) as exc:
+                raise PunchError(str(exc)) from None
+        sc = {k: v for k, v in self.scaling if k not in out}
+        return Punch(self.expr.xreplace(out), scaling=sc, name=self.name)
 
     def scaled(self, Hs: sp.Expr = S.H_s, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2) -> sp.Expr:
         """Phi^*(xi) = Lambda Phi(H_* xi; theta(theta^*)) (1.2), (2.13)."""
+        Hs, v1, v2 = sympy_value(Hs, "Hs"), sympy_value(v1, "v1", symbol=True), sympy_value(v2, "v2", symbol=True)
         e = self.expr.xreplace({S.x1: Hs * v1, S.x2: Hs * v2}).xreplace(dict(self.scaling))
         return sp.expand(S.Lambda * e)
 
@@ -231,6 +282,7 @@ class Punch(RichDisplay):
                 f"  degree {self.degree}, parameters: {pars}"]
 
 
+@boundary_methods
 @dataclass(frozen=True, init=False)
 class FlatPunch(RichDisplay):
     """A rigid flat-ended cylinder of radius ``a``: ``u3 = w0`` on the disc ``r < a``, a fixed contact (F.1).
@@ -277,4 +329,4 @@ class FlatPunch(RichDisplay):
 
 
 # re-exported helper, used by the inner expansion
-__all__ = ["FlatPunch", "Punch", "PunchError", "laplacian"]
+__all__ = ["FlatPunch", "Punch", "PunchError", "PunchTooLargeError", "laplacian"]

@@ -17,6 +17,7 @@ from typing import Any, Protocol, runtime_checkable
 
 import sympy as sp
 
+from .errors import InputError, InputTypeError, boundary
 from .normal import normal_latex
 
 BACKENDS = ("numpy", "mpmath", "math", "sympy")
@@ -50,7 +51,7 @@ class SymbolicResult(Result, Protocol):
         ...
 
 
-class MissingArgumentError(ValueError):
+class MissingArgumentError(InputError):
     """An expression has free symbols that are not among the lambdify arguments."""
 
 
@@ -60,12 +61,13 @@ def _as_symbols(args: Sequence[sp.Symbol] | sp.Symbol) -> tuple[sp.Symbol, ...]:
     args = tuple(args)
     for a in args:
         if not isinstance(a, sp.Symbol):
-            raise TypeError(f"lambdify arguments must be sympy Symbols, got {a!r} ({type(a).__name__})")
+            raise InputTypeError(f"lambdify arguments must be sympy Symbols, got {a!r} ({type(a).__name__})")
     if len(set(args)) != len(args):
-        raise ValueError(f"lambdify arguments repeat a symbol: {args}")
+        raise InputError(f"lambdify arguments repeat a symbol: {args}")
     return args
 
 
+@boundary
 def checked_lambdify(
     args: Sequence[sp.Symbol] | sp.Symbol,
     exprs: sp.Expr | Iterable[sp.Expr],
@@ -89,10 +91,17 @@ def checked_lambdify(
         naming each free symbol missing from ``args``.
     """
     if backend not in BACKENDS:
-        raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")
+        raise InputError(f"backend must be one of {BACKENDS}, got {backend!r}")
     args = _as_symbols(args)
+    if isinstance(exprs, (str, bytes)):  # sympy.lambdify would paste a string into the generated code
+        raise InputTypeError("exprs must be sympy expressions, not a string (read a formula with "
+                             "thinlayer.parse.parse_expression)")
     single = isinstance(exprs, sp.Basic)
     items = [exprs] if single else list(exprs)
+    bad = [e for e in items if not isinstance(e, sp.Basic)]
+    if bad:
+        raise InputTypeError(f"exprs must be sympy expressions, got {type(bad[0]).__name__} (read a formula with "
+                             "thinlayer.parse.parse_expression)")
     free: set[sp.Symbol] = set()
     for e in items:
         free |= e.free_symbols if isinstance(e, sp.Basic) else set()

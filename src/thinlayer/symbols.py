@@ -51,7 +51,10 @@ def starred(sym: sp.Symbol) -> sp.Symbol:
 
 
 def laplacian(f: sp.Expr, v1: sp.Symbol, v2: sp.Symbol, power: int = 1) -> sp.Expr:
-    """``Delta^power f`` in the variables (v1, v2)."""
+    """``Delta^power f`` in the variables (v1, v2): a sympy expression (a string would be sympified, i.e. run)."""
+    if not isinstance(f, sp.Basic) or not isinstance(v1, sp.Symbol) or not isinstance(v2, sp.Symbol):
+        raise TypeError(f"laplacian needs a sympy expression and two Symbols, got {type(f).__name__}, "
+                        f"{type(v1).__name__}, {type(v2).__name__} (read a formula with thinlayer.parse)")
     for _ in range(power):
         f = sp.diff(f, v1, 2) + sp.diff(f, v2, 2)
     return f

@@ -106,3 +106,37 @@ def test_fit_of_1000_points_with_thickness_and_offset():
     fit(d, P, punch=10.0, H=1.0, nu=0.45, fit_H=True, fit_offset=True)  # the law of nu = 0.45, cached
     r = fit(d, P, punch=10.0, H=1.0, nu=0.45, fit_H=True, fit_offset=True)  # time: benchmarks/bench_any_thickness.py
     assert abs(r.E / 3.0 - 1) < 5 * r.E_se / 3.0 + 1e-3 and math.isfinite(r.H_se)
+
+
+def test_published_series_outside_their_range_are_marked_invalid():
+    """Issue 23: data at chi_max = 7 fitted with the Dimitriadis 2002 series returned E = 0.177 +- 0.011 against a
+    true 2, unflagged.  The curve here comes from the direct solver (independent of every model fitted): the
+    series now comes back marked valid=False, with a ValidityWarning naming the range and the model that holds;
+    the any-thickness fit of the same points recovers E."""
+    from thinlayer.errors import ValidityWarning
+
+    R, H, E, nu = 10.0, 1.0, 2.0, 0.5
+    d = np.array([0.4, 1.5, 3.0, 4.9])  # chi = sqrt(R d)/H up to 7
+    P = direct_curve(IncompressibleLayer(), R, H, E / 3.0, d)
+    for model in ("dimitriadis2002", "garcia2018", "hertz"):
+        with pytest.warns(ValidityWarning, match="NOT VALID.*any-thickness"):
+            r = fit(d, P, punch=R, H=H, nu=nu, model=model)
+        assert not r.valid and r.model_error > 0.05 and "outside its range" in r.validity
+        assert "NOT VALID" in str(r) and r.as_dict()["valid"] is False
+        assert abs(r.E / E - 1) > 0.05  # the value it would have returned unflagged is wrong indeed
+    good = fit(d, P, punch=R, H=H, nu=nu)
+    assert good.valid and abs(good.E / E - 1) < 1e-3 and good.chi_max == pytest.approx(7.0)
+
+
+def test_published_series_inside_their_range_are_valid():
+    """A thick sample (chi_max = 0.3): each series within 5 % of the any-thickness law, so valid (and within 3 % in
+    E); the same series at nu = 0.3, where they are not printed, marked invalid."""
+    R, E = 5.0, 1.0
+    d = np.linspace(0.01, 1.0, 20)
+    for model in ("dimitriadis2002", "garcia2018"):
+        P = force_any_thickness(d, R, 7.5, E=E, nu=0.5)
+        r = fit(d, P, punch=R, H=7.5, nu=0.5, model=model)
+        assert r.valid and r.model_error < 0.05 and abs(r.E / E - 1) < 0.03
+    P = force_any_thickness(d, R, 1.0, E=E, nu=0.3)
+    with pytest.warns(Warning, match="printed for nu = 1/2"):
+        assert not fit(d, P, punch=R, H=1.0, nu=0.3, model="dimitriadis2002").valid

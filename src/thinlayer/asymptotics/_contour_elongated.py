@@ -11,6 +11,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from .._checks import InputError
 from ._contour_region import Poly2
 from ._contour_spectral import trig_eval
 
@@ -65,7 +66,7 @@ class _ArcLength:
             sig = a[:, None] + 0.5 * h[:, None] * (_PNODES + 1.0)
             vals = speed(sig.ravel()).reshape(sig.shape)
             if not np.all(np.isfinite(vals)):
-                raise ValueError("the speed |dx/dsigma| of the contour is not finite (beyond the double range)")
+                raise InputError("the speed |dx/dsigma| of the contour is not finite (beyond the double range)")
             co = vals @ _PMAT.T
             if vbar is None:
                 vbar = float(np.mean(vals))

@@ -13,7 +13,9 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from ..parse import as_expr, parse_expression
+from .._checks import ComputationError, InputError, InputTypeError, WorkLimitError
+from ..parse import as_expr, check_cost, expression_cost, parse_expression
+from ..punch import MAX_DEGREE
 
 
 def as_polynomial(Phi) -> tuple[sp.Expr, list[tuple[int, int, float]]]:
@@ -24,27 +26,32 @@ def as_polynomial(Phi) -> tuple[sp.Expr, list[tuple[int, int, float]]]:
     try:
         expr = as_expr(expr, "Phi")
     except (TypeError, ValueError) as exc:
-        raise TypeError(f"Phi must be a sympy expression in x1, x2, got {Phi!r} ({type(Phi).__name__})") from exc
+        raise InputTypeError(f"Phi must be a sympy expression in x1, x2, got {Phi!r} ({type(Phi).__name__})") from exc
     if not isinstance(expr, sp.Expr):
-        raise TypeError(f"Phi must be a sympy expression in x1, x2, got {expr!r} ({type(expr).__name__})")
+        raise InputTypeError(f"Phi must be a sympy expression in x1, x2, got {expr!r} ({type(expr).__name__})")
     # symbols that carry the canonical names but other assumptions are the coordinates too
     ren = {q: {S.x1.name: S.x1, S.x2.name: S.x2}[q.name] for q in expr.free_symbols
            if q.name in (S.x1.name, S.x2.name)}
     expr = expr.xreplace(ren)
+    cost = expression_cost(expr)  # a sympy expression given directly: bounded like a string, before any work
+    check_cost(expr, "Phi", cost=cost)
+    if cost.degree > MAX_DEGREE:
+        raise WorkLimitError(f"Phi has degree up to {cost.degree}, above the limit {MAX_DEGREE} of a punch: the "
+                             "contour's polynomial arithmetic grows with it; give a polynomial of lower degree")
     other = sorted(expr.free_symbols - {S.x1, S.x2}, key=lambda q: q.name)
     if other:
         names = ", ".join(q.name for q in other)
         hint = ""
         if any(q.name in ("x1", "x2") for q in other):
             hint = " (the coordinates are thinlayer.symbols.x1, x2, named x_1, x_2)"
-        raise ValueError(
+        raise InputError(
             f"Phi = {expr} has free symbol(s) {names} besides the coordinates x_1, x_2{hint}; "
             "substitute numeric values for the punch parameters first"
         )
     if expr.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
-        raise ValueError(f"Phi = {expr} is not finite")
+        raise InputError(f"Phi = {expr} is not finite")
     if not expr.is_polynomial(S.x1, S.x2):
-        raise ValueError(
+        raise InputError(
             f"Phi = {expr} is not a polynomial in x_1, x_2; the contour needs "
             "Phi = sum c_ij x_1^i x_2^j with numeric coefficients"
         )
@@ -53,7 +60,7 @@ def as_polynomial(Phi) -> tuple[sp.Expr, list[tuple[int, int, float]]]:
     for (i, j), c in poly.terms():
         cv = complex(sp.N(c))
         if cv.imag != 0 or not math.isfinite(cv.real):
-            raise ValueError(f"Phi = {expr} has the non-real coefficient {c} of x_1^{i} x_2^{j}")
+            raise InputError(f"Phi = {expr} has the non-real coefficient {c} of x_1^{i} x_2^{j}")
         if cv.real != 0.0:
             terms.append((int(i), int(j), cv.real))
     return expr, terms
@@ -143,11 +150,11 @@ def _bounding_radius(P: Poly2, delta0: float, expr, fr: Frame) -> tuple[float, b
     c0 = P.constant()
     if d == 0:
         if c0 >= delta0:
-            raise ValueError(
+            raise InputError(
                 f"no contact: Phi = {expr} is constant, min Phi = {fr.val(c0)} >= delta0 = {fr.val(delta0)}; "
                 "delta0 must exceed the minimum of Phi"
             )
-        raise ValueError(f"Phi = {expr} is constant below delta0 = {fr.val(delta0)}: the contact area "
+        raise InputError(f"Phi = {expr} is constant below delta0 = {fr.val(delta0)}: the contact area "
                          "{delta0 - Phi > 0} is the whole plane (unbounded)")
     theta = np.linspace(0.0, 2 * np.pi, 2048, endpoint=False)
     lead = P.homogeneous(d, theta)
@@ -155,7 +162,7 @@ def _bounding_radius(P: Poly2, delta0: float, expr, fr: Frame) -> tuple[float, b
     m = float(np.min(lead))
     if m < -1e-12 * big:
         th = fr.angle(float(theta[int(np.argmin(lead))]))
-        raise ValueError(
+        raise InputError(
             f"the contact area {{delta0 - Phi > 0}} is unbounded: Phi = {expr} tends to -infinity along "
             f"the direction (cos t, sin t), t = {short(th)}; the punch must rise in every direction "
             "(e.g. a positive definite leading part)"
@@ -312,7 +319,7 @@ def transformed(P: Poly2, fr: Frame) -> Poly2:
         try:
             vals[(i, j)] = float(v)
         except OverflowError:
-            raise ValueError(f"Phi overflows on its natural lengths: the coefficient of u_1^{i} u_2^{j} in "
+            raise InputError(f"Phi overflows on its natural lengths: the coefficient of u_1^{i} u_2^{j} in "
                              f"Phi(A u)/delta0 exceeds the double range (|A| = {np.abs(fr.A).max():g})") from None
     big = max((abs(v) for v in vals.values()), default=0.0)
     return Poly2([(i, j, v) for (i, j), v in vals.items() if abs(v) > 1e-300 * big and v != 0.0])
@@ -355,7 +362,7 @@ def round_frame(curve_u: np.ndarray, fr: Frame) -> tuple[Frame, np.ndarray, floa
     _, _, M = _moments(curve_u)
     lam, V = np.linalg.eigh(4.0 * M)
     if not (lam.min() > 0 and np.all(np.isfinite(lam))):
-        raise RuntimeError("degenerate region polygon (no area in one direction)")
+        raise ComputationError("degenerate region polygon (no area in one direction)")
     S = (V * np.sqrt(lam)) @ V.T
     Sinv = (V / np.sqrt(lam)) @ V.T
     A = fr.A
@@ -410,7 +417,7 @@ def _outer_box(P: Poly2, delta0: float, expr, fr: Frame):
         if all(_edge_clear(P, delta0, (-R * f, R * f, -R * f, R * f)) for f in fs):
             return (-2 * R, 2 * R, -2 * R, 2 * R)
         R *= 2.0
-    raise ValueError(
+    raise InputError(
         f"the contact area {{delta0 - Phi > 0}} is unbounded for Phi = {expr}, delta0 = {fr.val(delta0)}: "
         "the set {Phi < delta0} reaches the edge of every box up to "
         f"|x| = {fr.length(R)}; the punch must rise above delta0 in every direction"
@@ -503,11 +510,11 @@ def _closed_lines(xs, ys, Z, level, expr, delta0, fr: Frame, outer: tuple):
             continue
         if not np.allclose(ln[0], ln[-1], rtol=0, atol=1e-12 * (abs(ln).max() + 1e-300)):
             if (xs[0], xs[-1], ys[0], ys[-1]) != tuple(outer):
-                raise RuntimeError(
+                raise ComputationError(
                     f"could not resolve the level set Phi = {fr.val(delta0)} of Phi = {expr}: it leaves every zoom "
                     "box of the search grid (features much thinner than the region, e.g. long narrow arms)"
                 )
-            raise ValueError(
+            raise InputError(
                 f"the contact area {{delta0 - Phi > 0}} is unbounded for Phi = {expr}, delta0 = {fr.val(delta0)}: "
                 "a level line Phi = delta0 leaves the search box"
             )
@@ -537,7 +544,7 @@ def _lowest_point(P: Poly2, F: np.ndarray, X: np.ndarray, Y: np.ndarray, crit: l
             best = (v, cx, cy)
     scale = max(delta0, abs(best[0]))
     if best[0] >= delta0 - 1e-12 * scale:
-        raise ValueError(
+        raise InputError(
             f"no contact: delta0 = {fr.val(delta0)} does not exceed the minimum of Phi = {expr}, "
             f"min Phi = {fr.val(best[0])} at {fr.pt(best[1], best[2])}; "
             "delta0 must be larger than min Phi for the set {delta0 - Phi > 0} to be non-empty"
@@ -599,7 +606,7 @@ def _check_smooth(P: Poly2, crit: list, delta0: float, expr, fr: Frame) -> None:
     for cx, cy in crit:
         v = float(P.value(cx, cy))
         if abs(v - delta0) <= 1e-8 * max(delta0, abs(v)):
-            raise ValueError(
+            raise InputError(
                 f"the contour Phi = delta0 = {fr.val(delta0)} of Phi = {expr} is not smooth: it passes through "
                 f"the critical point {fr.pt(cx, cy)} where grad Phi = 0; "
                 "choose a delta0 different from the critical values of Phi"
@@ -625,17 +632,17 @@ def _small_components(P: Poly2, curves: list, mins: list, delta0: float, expr, o
 def _check_one_region(P: Poly2, curves: list, crit: list, delta0: float, expr, fr: Frame) -> np.ndarray:
     """The one closed curve of a simply connected region; holes and extra components are errors."""
     if not curves:
-        raise RuntimeError(f"could not resolve the level set Phi = {fr.val(delta0)} of Phi = {expr} on a grid")
+        raise ComputationError(f"could not resolve the level set Phi = {fr.val(delta0)} of Phi = {expr} on a grid")
     if len(curves) > 1:
         nested = any(_inside(b, *a[0])[0] for a in curves for b in curves if a is not b)
         cents = "; ".join(fr.pt(c[:, 0].mean(), c[:, 1].mean(), bare=True) for c in curves)
         if nested:
-            raise ValueError(
+            raise InputError(
                 f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} is not simply "
                 f"connected: its boundary has {len(curves)} nested closed curves (a region with a hole, e.g. an "
                 f"annulus) around {cents}; the boundary-layer analysis needs one simply connected region"
             )
-        raise ValueError(
+        raise InputError(
             f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} has {len(curves)} "
             f"components (near {cents}); the boundary-layer analysis needs one simply connected region"
         )
@@ -644,13 +651,13 @@ def _check_one_region(P: Poly2, curves: list, crit: list, delta0: float, expr, f
         v = float(P.value(cx, cy))
         ins = _inside(curve, cx, cy)[0]
         if ins and v > delta0:
-            raise ValueError(
+            raise InputError(
                 f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} is not simply "
                 f"connected: it has a hole around {fr.pt(cx, cy)} where Phi = {fr.val(v)} > "
                 "delta0; the boundary-layer analysis needs one simply connected region"
             )
         if not ins and v < delta0:
-            raise ValueError(
+            raise InputError(
                 f"the contact area {{delta0 - Phi > 0}} for Phi = {expr}, delta0 = {fr.val(delta0)} has more than "
                 f"one component: Phi = {fr.val(v)} < delta0 at {fr.pt(cx, cy)} outside the "
                 "main one; the boundary-layer analysis needs one simply connected region"
@@ -694,9 +701,9 @@ def region_curve(P: Poly2, delta0: float, expr):
     return region(P, delta0, expr)[:3]
 
 
-def too_elongated(expr, delta0: float, ratio: float) -> ValueError:
+def too_elongated(expr, delta0: float, ratio: float) -> InputError:
     """The one-line error for a contour whose aspect ratio leaves the double range."""
-    return ValueError(
+    return InputError(
         f"the contact contour of Phi = {expr} at delta0 = {short(delta0)} is too elongated for double precision: "
         f"its aspect ratio (longest/shortest principal axis) is {ratio:.3g}, above the supported limit "
         f"{ASPECT_MAX:g} (the tip curvature, about ratio^2/length, and the powers of the frame lengths "

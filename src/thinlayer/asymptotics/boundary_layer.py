@@ -93,10 +93,12 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import InputError, InputTypeError
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..normal import normal_latex
-from ..parse import as_expr
+from ..parse import as_expr, sympy_value
 from ..results import latex_equation
 
 #: fast normal variable (3.7), distance from the edge (3.22), Laplace variable, kernel argument
@@ -123,7 +125,8 @@ __all__ = [
 # ---------------------------------------------------------------------------------------------
 def _check_layer(layer: Any) -> LayerKernel:
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer LayerKernel (e.g. BondedLayer(0.3)), got {type(layer).__name__}")
+        raise InputTypeError(f"layer must be a thinlayer LayerKernel (e.g. BondedLayer(0.3)), "
+                             f"got {type(layer).__name__}")
     return layer
 
 
@@ -137,7 +140,7 @@ def _to_mpf(x: Any) -> mpmath.mpf:
         return mpmath.mpf(x)
     x = as_expr(x)
     if not x.is_number:
-        raise ValueError(f"a numeric value is needed, got the expression {x}; build the layer with a numeric nu")
+        raise InputError(f"a numeric value is needed, got the expression {x}; build the layer with a numeric nu")
     return mpmath.mpf(str(sp.N(x, mpmath.mp.dps + 10)))
 
 
@@ -147,15 +150,15 @@ def _to_sympy(x: Any, dps: int) -> sp.Expr:
 
 def _check_t(t_: Any) -> mpmath.mpf:
     if isinstance(t_, bool):
-        raise TypeError("t must be a real number, got a bool")
+        raise InputTypeError("t must be a real number, got a bool")
     try:
         tt = _to_mpf(t_)
     except (TypeError, ValueError, sp.SympifyError) as exc:
-        raise TypeError(f"t must be a real number, got {t_!r}") from exc
+        raise InputTypeError(f"t must be a real number, got {t_!r}") from exc
     if tt == 0:
-        raise ValueError("t = 0: the kernel N(t) ~ -pi log|t| is singular there; give t != 0")
+        raise InputError("t = 0: the kernel N(t) ~ -pi log|t| is singular there; give t != 0")
     if not mpmath.isfinite(tt):
-        raise ValueError(f"t must be finite, got {t_!r}")
+        raise InputError(f"t must be finite, got {t_!r}")
     return abs(tt)
 
 
@@ -201,9 +204,9 @@ def boundary_layer_kernel(layer: LayerKernel, t: Any, method: str = "bessel2") -
     """
     layer = _check_layer(layer)
     if layer.parameter is not None:
-        raise ValueError("boundary_layer_kernel needs a numeric nu; build e.g. BondedLayer(0.3)")
+        raise InputError("boundary_layer_kernel needs a numeric nu; build e.g. BondedLayer(0.3)")
     if method not in ("bessel2", "bessel1"):
-        raise ValueError(f"method must be 'bessel2' or 'bessel1', got {method!r}")
+        raise InputError(f"method must be 'bessel2' or 'bessel1', got {method!r}")
     tt = _check_t(t)
     with mpmath.extradps(5):
         F = lambda s: layer.L_numeric(s, backend="mpmath", over_u=True)
@@ -299,10 +302,10 @@ def alexandrov_fit(A: Any, m1: Any, dps: int = 30) -> AlexandrovParameters:
         with mpmath.workdps(dps + 10):
             A_, m_ = mpmath.mpf(A), mpmath.mpf(m1)
             if A_ <= 0:
-                raise ValueError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
+                raise InputError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
             disc = A_**2 + 2 * m_
             if disc <= 0:
-                raise ValueError(
+                raise InputError(
                     f"A^2 + 2 m_1 = {mpmath.nstr(disc, 8)} <= 0: Alexandrov's B = 1/(A + sqrt(A^2 + 2 m_1)) "
                     "is complex, so (3.20)-(3.21) have no real solution"
                 )
@@ -314,9 +317,9 @@ def alexandrov_fit(A: Any, m1: Any, dps: int = 30) -> AlexandrovParameters:
     disc = sp.factor(sp.together(A_**2 + 2 * m_))
     if disc.is_number:
         if not A_.is_positive:
-            raise ValueError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
+            raise InputError(f"A = {A_} must be positive for Alexandrov's approximation (3.20)")
         if not disc.is_positive:
-            raise ValueError(
+            raise InputError(
                 f"A^2 + 2 m_1 = {disc} <= 0: Alexandrov's B = 1/(A + sqrt(A^2 + 2 m_1)) is complex, "
                 "so (3.20)-(3.21) have no real solution"
             )
@@ -439,14 +442,14 @@ def alexandrov_kernel(layer: Any, t: Any, method: str = "laplace") -> mpmath.mpf
     mpmath.mpf at the current ``mpmath.mp.dps``.
     """
     if method not in ("laplace", "fourier"):
-        raise ValueError(f"method must be 'laplace' or 'fourier', got {method!r}")
+        raise InputError(f"method must be 'laplace' or 'fourier', got {method!r}")
     par = _params(layer)
     tt = _check_t(t)
     with mpmath.extradps(10):
         B, C = par.numeric()
         if method == "laplace":
             if not C > B * B:  # A B < 1 always (module docstring); guard anyway
-                raise ValueError(f"the 'laplace' route needs C > B^2, got B={B}, C={C}; use method='fourier'")
+                raise InputError(f"the 'laplace' route needs C > B^2, got B={B}, C={C}; use method='fourier'")
             val = mpmath.besselk(0, B * tt) + (C - B * B) * _pv_cut(tt, B, C)
         else:
             def rem(s):
@@ -460,7 +463,7 @@ def alexandrov_kernel(layer: Any, t: Any, method: str = "laplace") -> mpmath.mpf
 @lru_cache(maxsize=8)
 def _leggauss(n: int) -> tuple[np.ndarray, np.ndarray]:
     if n < 8:
-        raise ValueError(f"nodes must be an integer >= 8, got {n}")
+        raise InputError(f"nodes must be an integer >= 8, got {n}")
     return np.polynomial.legendre.leggauss(n)
 
 
@@ -486,7 +489,7 @@ def alexandrov_kernel_numpy(layer: Any, t: Any, nodes: int = 80) -> np.ndarray:
     B, C = (float(x) for x in par.numeric())
     tt = np.abs(np.asarray(t, dtype=float))
     if np.any(tt == 0) or not np.all(np.isfinite(tt)):
-        raise ValueError("t must be finite and != 0 (N~ ~ -pi log|t| at t = 0)")
+        raise InputError("t must be finite and != 0 (N~ ~ -pi log|t| at t = 0)")
     u0 = float(np.arccosh(np.sqrt(C) / B))
     ch0 = np.cosh(u0)
     xg, wg = _leggauss(int(nodes))
@@ -513,6 +516,7 @@ def alexandrov_kernel_numpy(layer: Any, t: Any, nodes: int = 80) -> np.ndarray:
 # ---------------------------------------------------------------------------------------------
 # the boundary-layer solution (3.23)-(3.25)
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class AlexandrovSolution(RichDisplay):
     """Boundary layer with Alexandrov's kernel, normalised: ``q** = (vartheta H_* b_1^*/A) Q(v)``.
@@ -542,12 +546,14 @@ class AlexandrovSolution(RichDisplay):
 
         Q(v) = v erf(sqrt(B (v - h))) + sqrt((v - h)/(pi B)) exp(-B (v - h)).
         """
+        v_ = sympy_value(v_, "v")
         _, B, _, h = self._BCh()
         x = v_ - h
         return v_ * sp.erf(sp.sqrt(B * x)) + sp.sqrt(x / (sp.pi * B)) * sp.exp(-B * x)
 
     def q_hat(self, v_: sp.Expr = v) -> sp.Piecewise:
         """``Q`` extended by 0 outside the contact area: ``Piecewise((Q(v), v >= h), (0, True))``."""
+        v_ = sympy_value(v_, "v")
         _, _, _, h = self._BCh()
         return sp.Piecewise((self.q(v_), v_ >= h), (0, True))
 
@@ -557,6 +563,7 @@ class AlexandrovSolution(RichDisplay):
         Q = (tau + h) erf sqrt(B tau) + sqrt(tau/(pi B)) e^{-B tau}
             + (h - h_0) sqrt(A/(pi tau)) e^{-B tau},     h_0 = 1/sqrt(C) - 1/(2B).
         """
+        tau_ = sympy_value(tau_, "tau")
         A, B, C, _ = self._BCh()
         hh = sp.Symbol("h", real=True) if h is None else as_expr(h)
         e = sp.exp(-B * tau_)
@@ -568,11 +575,13 @@ class AlexandrovSolution(RichDisplay):
 
     def laplace_transform(self, p_: sp.Expr = p) -> sp.Expr:
         """``int_0^oo Q(h + tau) e^{-p tau} dtau = sqrt(A) (p + sqrt C)/(p^2 sqrt(p + B))``."""
+        p_ = sympy_value(p_, "p")
         A, B, C, _ = self._BCh()
         return sp.sqrt(A) * (p_ + sp.sqrt(C)) / (p_**2 * sp.sqrt(p_ + B))
 
     def dimensional(self, v_: sp.Expr = v) -> sp.Expr:
         """The physical boundary layer ``q**(s, v) = vartheta H_* b_1^*(s) A^{-1} Q(v)`` (3.24)."""
+        v_ = sympy_value(v_, "v")
         A = _to_sympy(self.params.A, self.params.dps)
         return S.vartheta * S.H_s * b1 / A * self.q(v_)
 
@@ -584,7 +593,7 @@ class AlexandrovSolution(RichDisplay):
         try:
             B, h = float(_to_mpf(self.params.B)), float(_to_mpf(self.h))
         except ValueError as exc:
-            raise ValueError("q_numeric needs a numeric nu; build the layer with e.g. nu=0.3") from exc
+            raise InputError("q_numeric needs a numeric nu; build the layer with e.g. nu=0.3") from exc
         vv = np.asarray(v_, dtype=float)
         x = np.maximum(vv - h, 0.0)
         out = vv * erf(np.sqrt(B * x)) + np.sqrt(x / (np.pi * B)) * np.exp(-B * x)
@@ -623,6 +632,7 @@ class AlexandrovSolution(RichDisplay):
         ]
 
 
+@boundary
 def alexandrov_solution(layer: Any) -> AlexandrovSolution:
     """Boundary layer with Alexandrov's kernel (3.22)-(3.25), by Wiener--Hopf (module docstring).
 

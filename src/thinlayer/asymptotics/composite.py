@@ -38,8 +38,9 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import positive
+from .._checks import InputError, NotDerivedError, parse_nu, positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..normal import normal_latex
 from ..punch import Punch
@@ -62,6 +63,7 @@ def _norm(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.sqrt(out, out=out)
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class CompositePressure(RichDisplay):
     r"""Uniformly valid pressure ``p_c(x1, x2)`` (module docstring); call it like a numpy function.
@@ -233,14 +235,14 @@ class CompositePressure(RichDisplay):
         stay arguments (``delta0``, ``nu`` and the punch are fixed numbers).
         """
         if self.boundary_layer != "alexandrov":
-            raise NotImplementedError(
+            raise NotDerivedError(
                 "the exact boundary layer is a numerical (tabulated) function; generated code needs the closed "
                 "form: build the composite with boundary_layer='alexandrov'")
         Phi = self.punch.expr
         rho = sp.Symbol("rho", positive=True)
         radial = Phi.subs({S.x1: rho, S.x2: 0})
         if sp.expand(Phi - radial.subs(rho, sp.sqrt(S.x1**2 + S.x2**2))) != 0:
-            raise NotImplementedError(
+            raise NotDerivedError(
                 f"the punch {Phi} is not radial: the distance to Gamma_0 has no closed form; "
                 "generated code is available for radial punches")
         from scipy.optimize import brentq
@@ -289,6 +291,7 @@ class CompositePressure(RichDisplay):
         ]
 
 
+@boundary
 def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float, mu: float = 1.0,
                        terms: int = 2, boundary_layer: str = "exact", nu: Any = None) -> CompositePressure:
     """Uniformly valid contact pressure for a numeric layer and punch (module docstring).
@@ -312,14 +315,14 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
     from .wiener_hopf import boundary_layer_exact
 
     if boundary_layer not in BOUNDARY_LAYERS:
-        raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
+        raise InputError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
     delta0, H, mu = (positive(v, name) for v, name in ((delta0, "delta0"), (H, "H"), (mu, "mu")))
     inner = inner_pressure(layer, punch, order=terms)
     vals = {S.delta0: delta0, S.H: H, S.mu: mu}
     if nu is not None:
-        vals[S.nu] = nu
-    p_expr = inner.pressure.subs(vals)
-    th = float(layer.vartheta.subs(vals))
+        vals[S.nu] = parse_nu(nu, floats="float", upper_closed=True, symbols=False)
+    p_expr = inner.pressure.xreplace(vals)
+    th = float(layer.vartheta.xreplace(vals))
     p_lam = sp.lambdify((S.x1, S.x2), p_expr, modules="numpy", cse=True)
 
     def p_in(a, b):

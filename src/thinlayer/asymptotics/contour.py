@@ -107,9 +107,11 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import ComputationError, InputError, InputTypeError
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..normal import normal_latex
-from ..parse import as_expr
+from ..parse import as_expr, sympy_value
 from ._contour_elongated import FramedCurve
 from ._contour_region import (
     ASPECT_DIRECT,
@@ -133,24 +135,24 @@ __all__ = ["ContactContour", "ContourAccuracy", "EllipseContour", "contact_conto
 # ---------------------------------------------------------------------------------------------
 def _as_delta0(delta0) -> float:
     if isinstance(delta0, bool):
-        raise TypeError(f"delta0 must be a positive real number, got the bool {delta0!r}")
+        raise InputTypeError(f"delta0 must be a positive real number, got the bool {delta0!r}")
     if isinstance(delta0, sp.Basic):
         if delta0.free_symbols:
             names = ", ".join(sorted(str(q) for q in delta0.free_symbols))
-            raise ValueError(
+            raise InputError(
                 f"delta0 = {delta0} has free symbol(s) {names}; the contour needs a numeric delta0 > 0 "
                 "(substitute values first)"
             )
         val = complex(sp.N(delta0))
         if val.imag != 0:
-            raise ValueError(f"delta0 must be a positive real number, got {delta0}")
+            raise InputError(f"delta0 must be a positive real number, got {delta0}")
         val = val.real
     elif isinstance(delta0, (numbers.Real, Fraction, np.floating, np.integer)):
         val = float(delta0)
     else:
-        raise TypeError(f"delta0 must be a positive real number, got {delta0!r} ({type(delta0).__name__})")
+        raise InputTypeError(f"delta0 must be a positive real number, got {delta0!r} ({type(delta0).__name__})")
     if not math.isfinite(val) or val <= 0:
-        raise ValueError(f"delta0 (the indentation depth) must be a finite number > 0, got {delta0}")
+        raise InputError(f"delta0 (the indentation depth) must be a finite number > 0, got {delta0}")
     return val
 
 
@@ -207,6 +209,7 @@ class ContourAccuracy:
     turning_number: float
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class ContactContour(RichDisplay):
     r"""The leading contact area omega_0 = {delta0 - Phi > 0} and its contour Gamma_0 (3.3)-(3.14).
@@ -267,7 +270,7 @@ class ContactContour(RichDisplay):
     def derivative(self, s, order: int = 1) -> np.ndarray:
         """``d^order f / ds^order`` (spectral)."""
         if not isinstance(order, (int, np.integer)) or order < 0:
-            raise ValueError(f"order must be an integer >= 0, got {order!r}")
+            raise InputError(f"order must be an integer >= 0, got {order!r}")
         return self._pair(self._z(s, int(order)))
 
     def tangent(self, s) -> np.ndarray:
@@ -330,7 +333,7 @@ class ContactContour(RichDisplay):
         """
         for nm, v in (("epsilon", epsilon), ("H_s", H_s)):
             if isinstance(v, bool) or not isinstance(v, numbers.Real) or not v > 0:
-                raise ValueError(f"{nm} must be a number > 0, got {v!r}")
+                raise InputError(f"{nm} must be a number > 0, got {v!r}")
         return self.b1(s) / (epsilon * H_s), self.b2(s) / epsilon
 
     # ---- the region --------------------------------------------------------------------
@@ -362,13 +365,13 @@ class ContactContour(RichDisplay):
         ``(f - c) x x'(sigma) = det W (w - w_c) x w'(sigma)``; ``n_angular`` then counts sigma nodes.
         """
         if not callable(F):
-            raise TypeError(f"F must be a vectorised function F(x1, x2), got {F!r}")
+            raise InputTypeError(f"F must be a vectorised function F(x1, x2), got {F!r}")
         if not isinstance(n_radial, (int, np.integer)) or n_radial < 2:
-            raise ValueError(f"n_radial must be an integer >= 2, got {n_radial!r}")
+            raise InputError(f"n_radial must be an integer >= 2, got {n_radial!r}")
         N = len(self.nodes)
         M = int(n_angular) if n_angular is not None else max(2 * N, 128)
         if M < 8:
-            raise ValueError(f"n_angular must be >= 8, got {n_angular!r}")
+            raise InputError(f"n_angular must be >= 8, got {n_angular!r}")
         if self._framed is None:
             s = self.perimeter * np.arange(M) / M
             z, dz, step = self._z(s), self._z(s, 1), self.perimeter / M
@@ -408,12 +411,12 @@ class ContactContour(RichDisplay):
         speed ``|x'(sigma)|`` near the tips (``n``: at least that many nodes).
         """
         if not callable(g):
-            raise TypeError(f"g must be a vectorised function, got {g!r}")
+            raise InputTypeError(f"g must be a vectorised function, got {g!r}")
         if of not in ("x", "s"):
-            raise ValueError(f"of must be 'x' (g(x1, x2)) or 's' (g(s)), got {of!r}")
+            raise InputError(f"of must be 'x' (g(x1, x2)) or 's' (g(s)), got {of!r}")
         M = int(n) if n is not None else max(2 * len(self.nodes), 128)
         if M < 8:
-            raise ValueError(f"n must be >= 8, got {n!r}")
+            raise InputError(f"n must be >= 8, got {n!r}")
         if self._framed is not None:
             sig, wts, sq = self._framed.arc.quadrature(M if n is not None else 0)
             jac = self._framed.speed(sig) * wts
@@ -453,6 +456,7 @@ class ContactContour(RichDisplay):
 # ---------------------------------------------------------------------------------------------
 # the stage function
 # ---------------------------------------------------------------------------------------------
+@boundary
 def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> ContactContour:
     r"""The leading contact area ``omega_0 = {delta0 - Phi > 0}`` and its contour Gamma_0 (3.1)-(3.14).
 
@@ -499,12 +503,12 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
     d0 = _as_delta0(delta0)
     expr, terms = _polynomial(Phi)
     if n is not None and (not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 16 or n % 2):
-        raise ValueError(f"n (number of contour nodes) must be an even integer >= 16, got {n!r}")
+        raise InputError(f"n (number of contour nodes) must be an even integer >= 16, got {n!r}")
     if not (isinstance(tol, (int, float)) and 0 < tol < 1):
-        raise ValueError(f"tol must be a number in (0, 1), got {tol!r}")
+        raise InputError(f"tol must be a number in (0, 1), got {tol!r}")
     P = Poly2(terms)
     if P.deg < 2 and P.deg >= 1:
-        raise ValueError(f"the contact area {{delta0 - Phi > 0}} is unbounded: Phi = {expr} is linear "
+        raise InputError(f"the contact area {{delta0 - Phi > 0}} is unbounded: Phi = {expr} is linear "
                          "(a half-plane); the punch must rise in every direction")
     poly, _, best, aspect, fr, curve_u = region(P, d0, expr)
     if not aspect <= ASPECT_MAX:
@@ -528,7 +532,7 @@ def contact_contour(Phi, delta0, n: int | None = None, tol: float = 1e-12) -> Co
             if acc is None or acc_alt.speed_error < acc.speed_error:
                 res, acc = alt, acc_alt
     if acc is None or (not _acceptable(acc, 1e-6) if n is None else abs(acc.turning_number - 1) > 1e-3):
-        raise RuntimeError(
+        raise ComputationError(
             f"the spectral contour of Phi = {expr} at delta0 = {short(d0)} is inaccurate ({acc}): the contour "
             f"has features too small for {NMAX} arc-length nodes; try a larger n"
         )
@@ -624,6 +628,7 @@ def _framed_contour(expr, d0, P, Pw, W, det, Zw, Lw, best, acc) -> ContactContou
 # ---------------------------------------------------------------------------------------------
 # the elliptic paraboloid in closed form (3.1)
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class EllipseContour(RichDisplay):
     r"""Closed form of Gamma_0 for the elliptic paraboloid (1.1), (3.1).
@@ -647,6 +652,7 @@ class EllipseContour(RichDisplay):
 
     def curvature_radius(self, x1, x2) -> sp.Expr:
         """Curvature radius at a point of the ellipse: ``a^2 b^2 (x1^2/a^4 + x2^2/b^4)^(3/2)``."""
+        x1, x2 = sympy_value(x1, "x1"), sympy_value(x2, "x2")
         return self.a**2 * self.b**2 * (x1**2 / self.a**4 + x2**2 / self.b**4) ** sp.Rational(3, 2)
 
     def scaled_semi_axes(self) -> tuple[sp.Expr, sp.Expr]:
@@ -658,7 +664,7 @@ class EllipseContour(RichDisplay):
         """
         for nm, v in (("R1", self.R1), ("R2", self.R2), ("delta0", self.delta0)):
             if not isinstance(v, sp.Symbol):
-                raise TypeError(f"scaled_semi_axes needs a symbolic {nm} (a sympy Symbol), got {v}")
+                raise InputTypeError(f"scaled_semi_axes needs a symbolic {nm} (a sympy Symbol), got {v}")
         eps = S.epsilon
         rep = {self.delta0: eps * S.delta0_s, self.R1: S.starred(self.R1) / eps,
                self.R2: S.starred(self.R2) / eps}
@@ -686,6 +692,7 @@ class EllipseContour(RichDisplay):
         ]
 
 
+@boundary
 def ellipse_contour(R1=None, R2=None, delta0=None) -> EllipseContour:
     """Closed-form contour of the elliptic paraboloid (1.1): semi-axes and eccentricity (3.1).
 
@@ -710,7 +717,7 @@ def ellipse_contour(R1=None, R2=None, delta0=None) -> EllipseContour:
     d0 = S.delta0 if delta0 is None else as_expr(delta0)
     for nm, v in (("R1", r1), ("R2", r2), ("delta0", d0)):
         if v.is_number and not (v.is_real and v > 0):
-            raise ValueError(f"{nm} must be positive, got {v}")
+            raise InputError(f"{nm} must be positive, got {v}")
     a = sp.sqrt(2 * d0 * r1)
     b = sp.sqrt(2 * d0 * r2)
     if (r1 - r2).is_number and (r1 - r2) < 0:

@@ -117,7 +117,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import check_bounded, check_int
+from .._checks import InputError, InputTypeError, check_bounded, check_int
 from ..display import RichDisplay, fmt
 from ..layers.kernels import FrictionlessLayer, GenericLayer, IncompressibleLayer, LayerKernel
 from ..normal import join_signed, normal_latex
@@ -157,10 +157,10 @@ THICK_LIMIT = 0.8
 def _check_layer(layer: Any) -> LayerKernel:
     """A layer of finite thickness with a numeric kernel; the frictionless base (nu-free) as one cache key."""
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer LayerKernel (BondedLayer(0.3), FrictionlessLayer(), "
+        raise InputTypeError(f"layer must be a thinlayer LayerKernel (BondedLayer(0.3), FrictionlessLayer(), "
                         f"IncompressibleLayer()), got {layer!r} ({type(layer).__name__})")
     if not layer.has_thickness or layer.symbolic_coefficients or layer.parameter is not None:
-        raise ValueError(f"the flat-punch asymptotics need a layer of finite thickness with a numeric kernel: "
+        raise InputError(f"the flat-punch asymptotics need a layer of finite thickness with a numeric kernel: "
                          f"BondedLayer(0.3), FrictionlessLayer() or IncompressibleLayer(); got {layer!r}")
     if layer.base == "frictionless":
         return FrictionlessLayer()
@@ -330,7 +330,7 @@ class ThinFlatPunch(RichDisplay):
     def _x(self, a_over_H: Any) -> np.ndarray:
         x = np.asarray(a_over_H, dtype=float)
         if not np.all(np.isfinite(x)) or np.any(x <= 0):
-            raise ValueError("a_over_H must be finite and positive")
+            raise InputError("a_over_H must be finite and positive")
         return x
 
     def leading(self, a_over_H: Any) -> np.ndarray:
@@ -574,14 +574,14 @@ class ThickFlatPunch(RichDisplay):
         """``sum_k c_k lambda^k`` (F.18)."""
         x = np.asarray(a_over_H, dtype=float)
         if not np.all(np.isfinite(x)) or np.any(x <= 0):
-            raise ValueError("a_over_H must be finite and positive")
+            raise InputError("a_over_H must be finite and positive")
         return np.polynomial.polynomial.polyval(x, self.coefficients)
 
     def partial(self, a_over_H: Any, n: int) -> np.ndarray:
         """The series truncated after ``lambda^n`` (``n <= order``)."""
         n = check_int(n, "n", 0)
         if n > self.order:
-            raise ValueError(f"n = {n} exceeds the order {self.order} of this series")
+            raise InputError(f"n = {n} exceeds the order {self.order} of this series")
         return np.polynomial.polynomial.polyval(np.asarray(a_over_H, dtype=float), self.coefficients[: n + 1])
 
     def error_estimate(self, a_over_H: Any) -> np.ndarray:

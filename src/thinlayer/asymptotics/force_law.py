@@ -84,8 +84,10 @@ import mpmath
 import sympy as sp
 
 from .. import symbols as S
+from .._checks import InputError, InputTypeError, check_bounded, parse_nu
 from .._checks import positive as _positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..normal import join_signed, normal_latex
 from ..parse import parse_number
@@ -153,6 +155,22 @@ def _force_defect(layer: LayerKernel) -> sp.Expr:
 # ---------------------------------------------------------------------------------------------
 # the shape of the punch: closed-form classes
 # ---------------------------------------------------------------------------------------------
+#: the largest quadratic punch with a symbolic closed-form law: its eigenvalues and factorisations took 33 s with
+#: 20 parameters and 11 s with the 59 terms of x_1**2 (a + b)**58 (2 cores, load 12); 2.5 s at 12 parameters
+MAX_QUADRATIC_PARAMETERS = 12
+MAX_QUADRATIC_TERMS = 40
+
+
+def _check_quadratic_size(expr: sp.Expr) -> None:
+    """Refuse, before the symbolic work, a quadratic punch whose closed forms would take minutes."""
+    why = ("its closed-form force law (eigenvalues, factorisations) took 33 s with 20 parameters and 11 s with the 59 "
+           "terms of x_1**2 (a + b)**58; give numbers for some parameters (parameters=, Punch.subs)")
+    check_bounded(len(expr.free_symbols - {S.x1, S.x2}), "the number of parameters of a quadratic punch",
+                  MAX_QUADRATIC_PARAMETERS, why)
+    check_bounded(len(sp.Add.make_args(sp.expand(expr))), "the number of terms of a quadratic punch",
+                  MAX_QUADRATIC_TERMS, why)
+
+
 def _quadratic_data(expr: sp.Expr):
     """``(K, b, c)`` if Phi is quadratic with a constant Hessian K, else None."""
     poly = sp.Poly(expr, S.x1, S.x2)
@@ -206,6 +224,7 @@ def _positive_definite(K: sp.Matrix, name: str) -> None:
 # ---------------------------------------------------------------------------------------------
 # the result objects
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class ForceValues:
     """Numbers of the force law and the area law at one set of parameters.
@@ -292,6 +311,7 @@ def error_estimate(values: ForceValues, first_correction: float | None = None, o
     return {"force": force, "contact_area": area}
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class ForceLaw(RichDisplay):
     r"""``P(delta0)`` and ``|omega|(delta0)`` with their first corrections in H (1.8), (3.25).
@@ -355,7 +375,7 @@ class ForceLaw(RichDisplay):
     def lambdify(self, args=None, backend: str = "numpy"):
         """``(P, |omega|)`` as one numeric function of :attr:`arguments` (closed forms only)."""
         if self.P0 is None:
-            raise ValueError(
+            raise InputError(
                 f"the force law of {self.punch.name} ({self.punch.expr}) has no closed form; "
                 "use .evaluate(delta0, H, mu, ...) (numeric integrals over the contact contour)"
             )
@@ -373,7 +393,7 @@ class ForceLaw(RichDisplay):
         ``4 a E(k)``, ``k = sqrt(1 - b^2/a^2)`` (the modulus; scipy's ``ellipe`` takes ``m = k^2``) yourself.
         """
         if self.P0 is None:
-            raise ValueError(f"no closed-form force law for {self.punch.name}; code generation needs one")
+            raise InputError(f"no closed-form force law for {self.punch.name}; code generation needs one")
         outs = {"force": self.force, "contact_area_leading": self.area0}
         if not self.perimeter.has(sp.elliptic_e):
             outs["contact_area"] = self.contact_area
@@ -425,15 +445,21 @@ class ForceLaw(RichDisplay):
         return self._numeric_values(values)
 
     def _numeric_values(self, values: dict) -> dict:
-        """``{name or symbol: value}`` -> ``{punch parameter symbol: value}`` (matched by name)."""
+        """``{name or symbol: value}`` -> ``{punch parameter symbol: number}`` (matched by name).
+
+        Each value is a finite number: a string is read by the restricted grammar
+        (:func:`thinlayer.parse.parse_number`), never evaluated.
+        """
+        if not isinstance(values, dict):
+            raise InputTypeError(f"parameters must be a dict such as {{'R': 10}}, got {type(values).__name__}")
         by_name = {q.name: q for q in self.punch.parameters}
         out = {}
         for k, v in values.items():
             name = k if isinstance(k, str) else getattr(k, "name", None)
             if name not in by_name:
-                raise ValueError(f"{k!r} is not a parameter of the punch; its parameters are "
+                raise InputError(f"{k!r} is not a parameter of the punch; its parameters are "
                                  f"{', '.join(by_name) or 'none'}")
-            out[by_name[name]] = v
+            out[by_name[name]] = parse_number(v, f"the value of {name}")
         return out
 
     def evaluate(self, delta0: Any, H: Any, mu: Any = 1.0, edge_shift: Any = 0.0,
@@ -458,12 +484,12 @@ class ForceLaw(RichDisplay):
         vals = self._numeric_values(parameters or {})
         nu_free = {S.nu, S.kappa} & (_free(self.coefficient) | _free(self.p1_factor))
         if nu_free:
-            raise ValueError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
+            raise InputError("evaluate needs a layer with a numeric Poisson ratio, e.g. BondedLayer(0.3)")
         sub = {S.delta0: d0, S.H: HH, S.mu: mm, **vals}
         if nu is not None:
-            sub[S.nu] = parse_number(nu, "nu") if isinstance(nu, str) else nu
+            sub[S.nu] = parse_nu(nu, floats="float", upper_closed=True, symbols=False)
         if _free(self.layer.vartheta) - set(sub):
-            raise ValueError(f"vartheta = {self.layer.vartheta} needs the Poisson ratio: pass nu= "
+            raise InputError(f"vartheta = {self.layer.vartheta} needs the Poisson ratio: pass nu= "
                              f"(the {self.layer.name} kernel does not fix it)")
         th = _compiled_number(self.layer.vartheta, sub)
         A = float(self.layer.A)
@@ -473,10 +499,10 @@ class ForceLaw(RichDisplay):
         else:
             from .contour import contact_contour
 
-            Phi = self.punch.expr.subs(vals)
+            Phi = self.punch.expr.xreplace(vals)
             free = Phi.free_symbols - {S.x1, S.x2}
             if free:
-                raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+                raise InputError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
             c = contour if contour is not None else contact_contour(Phi, d0)
             area0, per = c.area, c.perimeter
             V = c.integrate(lambda a, b: d0 - c.phi(a, b))
@@ -493,7 +519,7 @@ class ForceLaw(RichDisplay):
         """
         free = (_free(self.P0) | _free(self.area0)) - set(sub)
         if free:
-            raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+            raise InputError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
         keys = tuple(sorted(sub, key=str))
         f = _compiled_closed_forms(self, keys)
         with mpmath.workdps(20):
@@ -513,14 +539,14 @@ class ForceLaw(RichDisplay):
             D0 = sp.Symbol("D_0", positive=True)
             sub = {S.H: HH, S.mu: mm, **vals}
             if nu is not None:
-                sub[S.nu] = nu
+                sub[S.nu] = parse_nu(nu, floats="float", upper_closed=True, symbols=False)
             target = self.force if order else self.P0
             law = sp.expand((target - Pt).subs(S.delta0, D0 + self.phi_min).subs(sub))
             a2, a1, a0 = (float(sp.N(law.coeff(D0, k))) for k in (2, 1, 0))
             disc = a1 * a1 - 4 * a2 * a0
             root = (-a1 + math.sqrt(disc)) / (2 * a2) if a1 < 0 else (-2 * a0) / (a1 + math.sqrt(disc))
             return float(sp.N(self.phi_min.subs(sub))) + root
-        Phi = self.punch.expr.subs(vals)
+        Phi = self.punch.expr.xreplace(vals)
         from .contour import contact_contour
 
         lo_c = contact_contour(Phi, 1.0)  # a first look for the minimum of Phi
@@ -536,7 +562,7 @@ class ForceLaw(RichDisplay):
             span *= 2
             hi = phimin + span
             if span > 1e12:
-                raise ValueError(f"no indentation gives the force {Pt}")
+                raise InputError(f"no indentation gives the force {Pt}")
         lo = phimin + span * 1e-9
         import scipy.optimize as opt
 
@@ -661,6 +687,7 @@ def _compiled_closed_forms(law: ForceLaw, keys: tuple) -> Any:
 FORCE_LAW_CACHE = 256
 
 
+@boundary
 def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
     r"""Force--indentation law with its first correction in H (1.8), and the contact-area law (3.25).
 
@@ -678,11 +705,11 @@ def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
     -2*H**2*nu*(4*nu - 1)/(3*R*delta_0*(nu - 1)*(2*nu - 1))
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer layer kernel (e.g. BondedLayer(0.3)), got {layer!r}")
+        raise InputTypeError(f"layer must be a thinlayer layer kernel (e.g. BondedLayer(0.3)), got {layer!r}")
     if not isinstance(punch, Punch):
         punch = Punch(punch)
     if not layer.has_thickness:
-        raise ValueError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
+        raise InputError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
     try:
         return _force_law_cached(layer, punch)
     except TypeError:  # an unhashable layer or punch: derive it afresh
@@ -708,6 +735,7 @@ def _force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
     expr = punch.expr
     quad = _quadratic_data(expr)
     if quad is not None:
+        _check_quadratic_size(expr)
         K, b, c = quad
         _positive_definite(K, str(expr))
         detK = sp.factor(K.det())

@@ -27,9 +27,10 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import check_bounded
+from .._checks import InputError, InputTypeError, check_bounded
 from .._checks import check_order as _check_order
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.coefficients import order_limit
 from ..layers.kernels import LayerKernel
 from ..normal import normal_latex
@@ -40,6 +41,7 @@ from ..results import checked_lambdify
 METHODS = ("closed", "recursion")
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class InnerPressure(RichDisplay):
     """The inner expansion of the contact pressure for one layer and punch.
@@ -180,6 +182,7 @@ def _gap_dicts(punch: Punch) -> tuple[dict[Mono, Any], dict[Mono, Any]]:
     return gap, gap_s
 
 
+@boundary
 def inner_pressure(layer: LayerKernel, punch: Punch, order: int | None = None,
                    method: str = "closed") -> InnerPressure:
     """The inner expansion (2.26) of the contact pressure, terms (2.27)-(2.28) or (4.1).
@@ -208,18 +211,18 @@ def inner_pressure(layer: LayerKernel, punch: Punch, order: int | None = None,
     -H*mu/2
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a LayerKernel (e.g. BondedLayer()), got {type(layer).__name__}")
+        raise InputTypeError(f"layer must be a LayerKernel (e.g. BondedLayer()), got {type(layer).__name__}")
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
+        raise InputTypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
     if method not in METHODS:
-        raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+        raise InputError(f"method must be one of {METHODS}, got {method!r}")
     if order is None:
         order = punch.degree // 2 + 1
     else:
         if isinstance(order, bool) or not isinstance(order, int):
-            raise TypeError(f"order must be a positive integer (number of terms), got {order!r}")
+            raise InputTypeError(f"order must be a positive integer (number of terms), got {order!r}")
         if order < 1:
-            raise ValueError(
+            raise InputError(
                 f"order must be a positive integer (the number of terms p_0..p_(order-1)), got {order}; "
                 f"order=1 keeps p_0 only, the default keeps all {punch.degree // 2 + 1} non-zero terms"
             )

@@ -29,14 +29,17 @@ import sympy as sp
 from .. import symbols as S
 from .._checks import check_order as _check_order
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.coefficients import check_coefficient_order
 from ..layers.kernels import LayerKernel
 from ..layers.moments import kernel_moment
 from ..normal import join_signed, normal_latex
+from ..parse import sympy_value
 from ..results import checked_lambdify
 from ..symbols import laplacian
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class MomentExpansion(RichDisplay):
     """The moment asymptotic expansion of ``k(Lambda xi)`` through ``Lambda^{-2 order - 2}`` (2.22).
@@ -57,6 +60,8 @@ class MomentExpansion(RichDisplay):
 
     def apply(self, f: sp.Expr, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2, Lam: sp.Expr = S.Lambda) -> sp.Expr:
         """The truncated operator series applied to a density f(v1, v2): the right side of (2.23)."""
+        f, v1, v2, Lam = (sympy_value(f, "f"), sympy_value(v1, "v1", symbol=True),
+                         sympy_value(v2, "v2", symbol=True), sympy_value(Lam, "Lam"))
         return sp.Add(*[w * Lam ** (-2 * n - 2) * laplacian(f, v1, v2, n) for n, w in enumerate(self.weights())])
 
     def pairing(self, phi: sp.Expr, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2, Lam: sp.Expr = S.Lambda) -> sp.Expr:
@@ -67,6 +72,8 @@ class MomentExpansion(RichDisplay):
         Built from the individual moments (2.21), not from the Laplacian form, so that
         comparing it with :meth:`apply` checks (2.21) against (2.22).
         """
+        phi, v1, v2, Lam = (sympy_value(phi, "phi"), sympy_value(v1, "v1", symbol=True),
+                         sympy_value(v2, "v2", symbol=True), sympy_value(Lam, "Lam"))
         terms = []
         for total in range(2 * self.order + 2):
             for a1 in range(total + 1):
@@ -108,6 +115,7 @@ class MomentExpansion(RichDisplay):
         return out
 
 
+@boundary
 @lru_cache(maxsize=64)
 def moment_expansion(layer: LayerKernel, order: int) -> MomentExpansion:
     """The moment asymptotic expansion (2.14)/(2.22) of ``k(Lambda xi)`` through n = ``order``.

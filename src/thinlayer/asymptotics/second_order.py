@@ -108,8 +108,9 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import parse_nu
+from .._checks import InputError, InputTypeError, parse_nu, positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..normal import join_signed, normal_latex
 from ..punch import Punch
@@ -269,6 +270,7 @@ def second_order_boundary_layer() -> SecondOrderBoundaryLayer:
 # ---------------------------------------------------------------------------------------------
 # the constants of a layer
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class EdgeConstants(RichDisplay):
     """``h^*`` (3.18), ``m_1`` (2.20) and ``r_3`` (SO.4) of one layer; ``r3_spread`` = largest difference of r_3
@@ -308,9 +310,10 @@ class EdgeConstants(RichDisplay):
 def _edge_constants(key: Any, dps: int) -> EdgeConstants:
     from .wiener_hopf import edge_cubic, edge_shift
 
-    rs = [edge_cubic(key, normaliser=n, dps=dps) for n in ("alexandrov", "sqrt", "tanh")]
-    lay = _layer_of(key)
-    return EdgeConstants(key, float(lay.A), float(lay.m(1)), float(edge_shift(key, dps=dps)), float(rs[0]),
+    nu = key if key == "frictionless" else sp.Rational(*key)
+    rs = [edge_cubic(nu, normaliser=n, dps=dps) for n in ("alexandrov", "sqrt", "tanh")]
+    lay = _layer_of(nu)
+    return EdgeConstants(str(nu), float(lay.A), float(lay.m(1)), float(edge_shift(nu, dps=dps)), float(rs[0]),
                          float(max(rs) - min(rs)))
 
 
@@ -320,6 +323,7 @@ def _layer_of(key: Any) -> LayerKernel:
     return FrictionlessLayer() if key == "frictionless" else BondedLayer(key)
 
 
+@boundary
 def edge_constants(layer: Any, dps: int = 20) -> EdgeConstants:
     """``h^*``, ``m_1``, ``r_3`` of a layer (``BondedLayer(nu)`` with a numeric nu, ``FrictionlessLayer()``, or nu).
 
@@ -336,12 +340,14 @@ def edge_constants(layer: Any, dps: int = 20) -> EdgeConstants:
         key = layer
     else:
         key = parse_nu(layer, floats="exact", symbols=False, example="0.3, '3/10' or BondedLayer(0.3)")
-    return _edge_constants(str(key), int(dps))
+    # cached by (numerator, denominator): a float's exact binary value has 17 digits, more than nu text may have
+    return _edge_constants(key if key == "frictionless" else (int(key.p), int(key.q)), int(dps))
 
 
 # ---------------------------------------------------------------------------------------------
 # (SO.9), (SO.10): the laws
 # ---------------------------------------------------------------------------------------------
+@boundary_methods
 @dataclass(frozen=True)
 class SecondOrderValues:
     """Numbers of the second-order laws at one point.  ``first`` the first-order :class:`ForceValues`
@@ -426,6 +432,7 @@ def _quadratic_edge_integrals(Phi: sp.Expr, phi_min: sp.Expr, perimeter: sp.Expr
     return E1, E2
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class SecondOrderLaw(RichDisplay):
     r"""``P(delta0)`` to ``O(P0 (H/a)^4)`` and ``|omega|(delta0)`` to ``O(|omega_0| (H/a)^3)`` (SO.9), (SO.10).
@@ -484,7 +491,7 @@ class SecondOrderLaw(RichDisplay):
     def lambdify(self, args=None, backend: str = "numpy"):
         """``(P, |omega|)`` as one numeric function of :attr:`arguments` with ``r_3``, ``h^*`` substituted."""
         if self.P2 is None:
-            raise ValueError(f"the second-order law of {self.punch.name} has no closed form; use .evaluate(...)")
+            raise InputError(f"the second-order law of {self.punch.name} has no closed form; use .evaluate(...)")
         sub = self._constants_sub()
         exprs = tuple(e.subs(sub) for e in (self.force, self.contact_area))
         args = tuple(a for a in self.arguments if a not in sub) if args is None else args
@@ -497,14 +504,14 @@ class SecondOrderLaw(RichDisplay):
         (:meth:`codegen_constants`; closed forms without elliptic integrals: a circle or a radial monomial).
         """
         if self.P2 is None:
-            raise ValueError(f"no closed-form second-order law for {self.punch.name}; code generation needs one")
+            raise InputError(f"no closed-form second-order law for {self.punch.name}; code generation needs one")
         sub = self.codegen_constants()  # r_3 and h^* stay named: the generated code defines them as constants
         outs = {"force": self.force}
         area = self.contact_area
         if not area.has(sp.elliptic_e, sp.elliptic_k):
             outs["contact_area"] = area
         if outs["force"].has(sp.elliptic_e, sp.elliptic_k):
-            raise ValueError("the elliptic paraboloid's second-order force has complete elliptic integrals K, E, "
+            raise InputError("the elliptic paraboloid's second-order force has complete elliptic integrals K, E, "
                              "which the target languages lack; use .lambdify() or .evaluate()")
         free = set().union(*(e.free_symbols for e in outs.values())) - set(sub)
         return tuple(a for a in self.arguments if a in free), outs
@@ -548,16 +555,16 @@ class SecondOrderLaw(RichDisplay):
         if self.E1 is None:
             from .contour import contact_contour
 
-            Phi = self.punch.expr.subs(vals)
+            Phi = self.punch.expr.xreplace(vals)
             free = Phi.free_symbols - {S.x1, S.x2}
             if free:
-                raise ValueError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
-            cont = contact_contour(Phi, float(delta0))
+                raise InputError(f"the punch parameters {sorted(map(str, free))} need values (parameters=...)")
+            cont = contact_contour(Phi, positive(delta0, "delta0"))
         first = self.first.evaluate(delta0, H, mu, edge_shift=c.h_star, parameters=parameters, nu=nu, contour=cont)
         HH = first.H
         sub = {S.delta0: first.delta0, S.H: HH, S.mu: float(mu), **vals}
         if nu is not None:
-            sub[S.nu] = float(nu)
+            sub[S.nu] = parse_nu(nu, floats="float", upper_closed=True, symbols=False)
         if cont is None:
             E1, E2, pin = _numbers(self)(sub)
         else:
@@ -578,7 +585,7 @@ def _numbers(law: SecondOrderLaw):
         def num(sub):
             missing = [q for q in syms if q not in sub]
             if missing:
-                raise ValueError(f"the second-order law needs values of {sorted(map(str, missing))}")
+                raise InputError(f"the second-order law needs values of {sorted(map(str, missing))}")
             with mpmath.workdps(20):
                 out = f(*(mpmath.mpf(float(sub[q])) for q in syms))
                 return tuple(float(mpmath.re(v)) for v in out)
@@ -604,7 +611,7 @@ def _contour_integrals(law: SecondOrderLaw, sub: dict, c: Any) -> tuple[float, f
     lap, lap_syms, p2, p2_syms = _contour_functions(law)
     missing = [q for q in p2_syms if q not in sub]
     if missing:
-        raise ValueError(f"the inner term p_2 needs values of {sorted(map(str, missing))}")
+        raise InputError(f"the inner term p_2 needs values of {sorted(map(str, missing))}")
     lap_args = [float(sub[q]) for q in lap_syms]
     p2_args = [float(sub[q]) for q in p2_syms]
 
@@ -638,6 +645,7 @@ def _second_order_law(layer: LayerKernel, punch: Punch) -> SecondOrderLaw:
     return SecondOrderLaw(first, E1, E2, P2, area2, p2, P_in)
 
 
+@boundary
 def second_order_law(layer: LayerKernel, punch: Punch) -> SecondOrderLaw:
     """The force law (SO.9) and area law (SO.10) of a polynomial punch on a thin layer.
 
@@ -652,9 +660,9 @@ def second_order_law(layer: LayerKernel, punch: Punch) -> SecondOrderLaw:
     7.9513e-05 7.9513e-05
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a layer kernel such as BondedLayer(0.3), got {type(layer).__name__}")
+        raise InputTypeError(f"layer must be a layer kernel such as BondedLayer(0.3), got {type(layer).__name__}")
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a Punch, got {type(punch).__name__}")
+        raise InputTypeError(f"punch must be a Punch, got {type(punch).__name__}")
     try:
         return _second_order_law(layer, punch)
     except TypeError:

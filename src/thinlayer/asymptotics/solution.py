@@ -40,9 +40,10 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import parse_nu
+from .._checks import InputError, InputTypeError, NotDerivedError, check_array_size, check_bounded, parse_nu
 from .._checks import positive as _positive
 from ..display import RichDisplay
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..normal import float_latex, normal_latex
 from ..punch import Punch, PunchError
@@ -54,9 +55,12 @@ __all__ = ["ContactSolution", "ForceArrays", "ValidityError", "compressible_solu
 
 #: default tolerance of :func:`compressible_solution` on the relative error estimates
 DEFAULT_TOL = 0.05
+#: most values :func:`force_arrays` computes in one call (refused before any allocation)
+MAX_ARRAY_VALUES = 5_000_000
+_ARRAY_REASON = "5e6 values take 1.4 s and 0.42 GB (about 85 bytes each); split the arrays"
 
 
-class ValidityError(ValueError):
+class ValidityError(InputError):
     """An asymptotic result outside the model's validity (or unphysical); the message is one line.
 
     Attributes
@@ -93,14 +97,14 @@ def _edge_shifts(nu: sp.Rational | str) -> tuple[float, float]:
 def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     """The layer and its numeric Poisson ratio (given by the layer, or by ``nu`` for a nu-free kernel)."""
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3); got {layer!r}")
+        raise InputTypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3); got {layer!r}")
     if layer.base is None or not layer.has_compressible_expansion or layer.symbolic_coefficients:
-        raise NotImplementedError(
+        raise NotDerivedError(
             f"solve() supports BondedLayer and FrictionlessLayer, got {type(layer).__name__}; "
             "the boundary layer and edge shift are derived for those kernels"
         )
     if layer.parameter is not None:
-        raise ValueError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
+        raise InputError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
                          "not the symbolic BondedLayer()")
     given = layer.poisson_ratio(nu)  # the layer's own nu, or nu for a kernel that fixes none (frictionless base)
     if layer.numeric_nu is None:
@@ -108,6 +112,7 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     return layer, given
 
 
+@boundary
 def numeric_punch(punch: Any, parameters: dict | None = None) -> Punch:
     """The punch as a :class:`~thinlayer.Punch` with every parameter given a number (one clear error if not)."""
     if not isinstance(punch, Punch):
@@ -123,6 +128,7 @@ def numeric_punch(punch: Any, parameters: dict | None = None) -> Punch:
     return punch
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class ContactSolution(RichDisplay):
     r"""Contact solution for numeric parameters; made by :func:`compressible_solution`.
@@ -360,6 +366,7 @@ class ContactSolution(RichDisplay):
         return display_math(self.latex())
 
 
+@boundary
 def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = 1.0, *,
           force: Any = None, parameters: dict | None = None, order: int = 1, terms: int = 2,
           boundary_layer: str = "exact", nu: Any = None, tol: Any = DEFAULT_TOL) -> ContactSolution:
@@ -428,27 +435,27 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     """
     layer, nu_value = _check_layer(layer, nu)
     if boundary_layer not in BOUNDARY_LAYERS:
-        raise ValueError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
+        raise InputError(f"boundary_layer must be one of {BOUNDARY_LAYERS}, got {boundary_layer!r}")
     if isinstance(order, bool) or not isinstance(order, int) or order < 0:
-        raise ValueError(f"order must be 0, 1 or 2 (corrections in the force law), got {order!r}")
+        raise InputError(f"order must be 0, 1 or 2 (corrections in the force law), got {order!r}")
     if order > MAX_FORCE_ORDER:
-        raise NotImplementedError(
+        raise NotDerivedError(
             f"order={order}: the force and contact-area laws are derived to their second correction in H "
             f"(order <= {MAX_FORCE_ORDER}, (SO.9)-(SO.10)); the next terms need the third-order boundary layer"
         )
     if order == 2 and boundary_layer != "exact":
-        raise ValueError("order=2 uses the exact boundary layer (SO.7); boundary_layer='alexandrov' is first order")
+        raise InputError("order=2 uses the exact boundary layer (SO.7); boundary_layer='alexandrov' is first order")
     if isinstance(terms, bool) or not isinstance(terms, int) or terms < 1:
-        raise ValueError(f"terms must be an integer >= 1 (inner terms p_0 .. p_(terms-1)), got {terms!r}")
+        raise InputError(f"terms must be an integer >= 1 (inner terms p_0 .. p_(terms-1)), got {terms!r}")
     if H is None:
-        raise TypeError("solve() needs the layer thickness H")
+        raise InputTypeError("solve() needs the layer thickness H")
     HH = _positive(H, "H")
     mm = _positive(mu, "mu")
     tol_v = _check_tol(tol)
     pn = numeric_punch(punch, parameters)
     law = force_law(layer, pn)
     if (delta0 is None) == (force is None):
-        raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
+        raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     if force is not None:
         Pt = _positive(force, "force")
         per_mu = Pt / mm  # the law is linear in mu: solve it per unit mu
@@ -491,7 +498,7 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
                                 f"delta0 = {d0:.3g}, H = {HH:.3g} ({exc}); express the lengths in other units",
                                 "force") from None
         vals = dataclasses.replace(vals, P2=v2.P2, area2=v2.area2)
-    _check_overflow(vals, mm)
+    _check_overflow(vals, mm, est["force"])
     vals = _scaled(vals, mm, min(order, 1))
     _check_validity(layer, pn, nu_value, vals, est, tol_v, mm)
     return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour,
@@ -521,6 +528,7 @@ def _second_order_indentation(layer, punch, per_mu, H, nu, guess):
                         f"depth {guess:.6g}; use order=1 or model='direct'", "force")
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class ForceArrays:
     """The compressible model's force (1.8) and contact area (3.25) over arrays of depths (:func:`force_arrays`).
@@ -555,6 +563,7 @@ def _array_law(law: Any, keys: tuple) -> Any:
     return sp.lambdify(keys, [law.P0, law.P1, law.area0, per], modules="numpy")
 
 
+@boundary
 def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 1.0, *, nu: Any = None,
                  parameters: dict | None = None, tol: Any = DEFAULT_TOL) -> ForceArrays:
     r"""The force law (1.8) with its first correction and the area law (3.25) over numpy arrays of ``delta0``.
@@ -573,18 +582,23 @@ def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 
     >>> out.valid.tolist(), bool(np.isnan(out.force[0]))        # 1e-4: contact too small for H = 0.02
     ([False, True, True], True)
     """
+    for name, v in (("delta0", delta0), ("H", H)):  # before any other work
+        check_array_size(v, name, MAX_ARRAY_VALUES, _ARRAY_REASON)
     layer, nu_value = _check_layer(layer, nu)
     tol_v = _check_tol(tol)
     mm = _positive(mu, "mu")
     pn = numeric_punch(punch, parameters)
     law = force_law(layer, pn)
     if law.kind == "contour":
-        raise ValueError("force_arrays needs a punch with a closed-form law (quadratic or (x1^2 + x2^2)^k); "
+        raise InputError("force_arrays needs a punch with a closed-form law (quadratic or (x1^2 + x2^2)^k); "
                          "this one needs its contour at every depth: use compressible_solution per depth")
-    d0 = np.asarray(delta0, dtype=float)
-    HH = np.asarray(H, dtype=float)
-    if d0.size * max(HH.size, 1) > 50_000_000:
-        raise ValueError(f"force_arrays: {d0.size} depths x {HH.size} thicknesses is more than 5e7 values")
+    try:
+        d0 = np.asarray(delta0, dtype=float)
+        HH = np.asarray(H, dtype=float)
+    except (TypeError, ValueError):
+        raise InputTypeError("force_arrays: delta0 and H must be numbers or arrays of numbers") from None
+    check_bounded(d0.size * max(HH.size, 1), "the number of depth x thickness values", MAX_ARRAY_VALUES,
+                  _ARRAY_REASON)
     keys = [S.delta0, S.H, S.mu] + ([S.nu] if S.nu in (law.P0.free_symbols | law.P1.free_symbols) else [])
     args = [d0, HH, mm] + ([nu_value] if len(keys) == 4 else [])
     with np.errstate(all="ignore"):
@@ -610,7 +624,7 @@ def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 
 
 def _check_tol(tol: Any) -> float:
     if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not float(tol) > 0:
-        raise ValueError(f"tol must be a positive number (the largest accepted relative error estimate, "
+        raise InputError(f"tol must be a positive number (the largest accepted relative error estimate, "
                          f"e.g. 0.05; math.inf accepts any), got {tol!r}")
     return float(tol)
 
@@ -653,18 +667,22 @@ def _validity_model(layer: LayerKernel, punch: Punch, vals: ForceValues) -> str:
     return model
 
 
-def _check_overflow(unit: ForceValues, mu: float) -> None:
-    """The force per unit mu is finite and positive, but times mu beyond the double range."""
+def _check_overflow(unit: ForceValues, mu: float, estimate: float = math.nan) -> None:
+    """The force per unit mu is finite and positive, but times mu beyond the double range.
+
+    ``estimate`` (the force's relative error estimate) goes with the error: :func:`thinlayer.solve` takes "other
+    units" for the true reason only where the model holds (the estimate within its tolerance).
+    """
     P = unit.force
     if math.isfinite(P) and P > 0 and 0 < P * mu < sys.float_info.min:
         raise ValidityError(f"compressible: the force P = {P * mu:.3g} underflows double precision (below "
                             f"{sys.float_info.min:.3g}) at mu = {mu:.3g}; express mu (and P) in a smaller unit "
-                            "of stress", "force", math.nan, math.nan, "other units")
+                            "of stress", "force", estimate, math.nan, "other units")
     if math.isfinite(unit.P0) and unit.P0 > 0 and P > 0 and not math.isfinite(unit.P0 * mu):
         mag = math.log10(P) + math.log10(mu)
         raise ValidityError(f"compressible: the force P = 1e{mag:.2f} overflows double precision (max 1.8e308) at "
                             f"mu = {mu:.3g}; express mu (and P) in a larger unit of stress", "force",
-                            math.nan, math.nan, "other units")
+                            estimate, math.nan, "other units")
 
 
 def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValues, est: dict, tol: float,
@@ -673,6 +691,10 @@ def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValu
     x = vals.H_over_a
     where = f"nu = {nu:.4g}, H/a = {x:.3g}"
     for name, q in (("force", vals.force), ("contact_area", vals.area), ("perimeter", vals.perimeter)):
+        if not math.isfinite(q) and math.isfinite(x) and x < 0.1:  # the expansion holds: a number beyond range
+            raise ValidityError(f"compressible: the {name.replace('_', ' ')} is beyond the double range (about "
+                                f"1.8e308) at {where}, where the thin-layer expansion holds; express the lengths and "
+                                "the moduli in other units", name, x * x, tol, "other units")
         if not math.isfinite(q):
             raise ValidityError(f"compressible: the {name.replace('_', ' ')} is not finite ({q}) at {where}; "
                                 f"use {_reference_model(punch)} or other units",
@@ -709,5 +731,5 @@ def _check_contact(law: ForceLaw, d0: float) -> None:
     """For a closed-form punch: delta0 must exceed the lowest point of Phi."""
     phimin = float(law.phi_min)
     if d0 <= phimin:
-        raise ValueError(f"no contact: delta0 = {d0:g} does not exceed the lowest point of the punch, "
+        raise InputError(f"no contact: delta0 = {d0:g} does not exceed the lowest point of the punch, "
                          f"min Phi = {phimin:g}; take delta0 > {phimin:g}")

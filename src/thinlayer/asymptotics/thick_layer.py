@@ -85,7 +85,7 @@ from sympy.polys.domains import QQ
 from sympy.polys.rings import ring
 
 from .. import symbols as S
-from .._checks import check_bounded, check_order, positive
+from .._checks import InputError, InputTypeError, check_bounded, check_order, positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import FrictionlessLayer, LayerKernel
 from ..normal import join_signed, normal_latex
@@ -147,10 +147,10 @@ def moment_symbols(order: int) -> tuple[sp.Symbol, ...]:
 # =============================================================================================
 def _check_layer(layer: Any) -> LayerKernel:
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3), FrictionlessLayer() or "
+        raise InputTypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3), FrictionlessLayer() or "
                         f"IncompressibleLayer(); got {layer!r}")
     if not layer.has_thickness or layer.symbolic_coefficients or layer.parameter is not None:
-        raise ValueError(f"the thick-layer moments (T.2) need a layer of finite thickness with a numeric kernel: "
+        raise InputError(f"the thick-layer moments (T.2) need a layer of finite thickness with a numeric kernel: "
                          f"BondedLayer(0.3), FrictionlessLayer() or IncompressibleLayer(); got {layer!r}")
     if layer.base == "frictionless":  # the kernel does not depend on nu: one cache entry
         return FrictionlessLayer()
@@ -220,7 +220,7 @@ def thick_moments(layer: LayerKernel, order: int, dps: int = 30) -> tuple[mpmath
     n = check_order(order, "order")
     check_bounded(n, "order", MAX_THICK_ORDER, "the moments beyond k = 40 are never needed by (T.5) at order <= 40")
     if isinstance(dps, bool) or not isinstance(dps, int) or not 5 <= dps <= 200:
-        raise ValueError(f"dps must be an integer in [5, 200], got {dps!r}")
+        raise InputError(f"dps must be an integer in [5, 200], got {dps!r}")
     return _moments_cached(layer, n, dps)[: n + 1]
 
 
@@ -333,13 +333,13 @@ def _radial_coefficients(punch: Punch) -> dict[int, sp.Expr]:
     """``{n: phi_n}`` of ``Phi = sum_n phi_n r^{2n}`` (checked axisymmetric, ``Phi(0) = 0``)."""
     e = sp.expand(punch.expr)
     if sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) != 0:
-        raise ValueError(f"the thick-layer expansion (T.5) is for axisymmetric punches; Phi = {punch.expr} is not "
+        raise InputError(f"the thick-layer expansion (T.5) is for axisymmetric punches; Phi = {punch.expr} is not "
                          "(x1 dPhi/dx2 - x2 dPhi/dx1 != 0)")
     prof = sp.Poly(sp.expand(e.xreplace({S.x2: 0})), S.x1)
     out: dict[int, sp.Expr] = {}
     for (deg,), coef in prof.terms():
         if deg == 0:
-            raise ValueError(f"the punch Phi = {punch.expr} has Phi(0) = {coef}; normalise it with Phi(0) = 0")
+            raise InputError(f"the punch Phi = {punch.expr} has Phi(0) = {coef}; normalise it with Phi(0) = 0")
         out[deg // 2] = coef
     return out
 
@@ -420,7 +420,7 @@ class ThickLayerExpansion(RichDisplay):
         pts = [as_expr(t).xreplace(subs) for t in self.force_terms]
         free = set().union(*(e.free_symbols for e in dts + pts)) - {c_sym, S.mu, S.nu}
         if free:
-            raise ValueError(f"the punch's parameters {sorted(map(str, free))} need values: parameters={{...}}")
+            raise InputError(f"the punch's parameters {sorted(map(str, free))} need values: parameters={{...}}")
         fd = checked_lambdify((c_sym, S.mu, S.nu), dts, "numpy")
         fp = checked_lambdify((c_sym, S.mu, S.nu), pts, "numpy")
 
@@ -452,7 +452,7 @@ class ThickLayerExpansion(RichDisplay):
         vals = np.array([f(cc, HH, mm, nv)[0] for cc in cs])
         above = np.flatnonzero(vals >= d0)
         if not above.size or above[0] == 0:
-            raise ValueError(f"the thick-layer expansion needs a contact radius c < {EPS_LIMIT} H; delta0 = {d0:.4g} "
+            raise InputError(f"the thick-layer expansion needs a contact radius c < {EPS_LIMIT} H; delta0 = {d0:.4g} "
                              f"needs more (H = {HH:.4g}): use the any-thickness law or the direct solver")
         lo, hi = cs[above[0] - 1], cs[above[0]]
         c = optimize.brentq(lambda cc: f(cc, HH, mm, nv)[0] - d0, lo, hi, xtol=1e-15 * hi, rtol=1e-14)
@@ -555,7 +555,7 @@ def thick_layer_expansion(punch: Any, order: int = 8) -> ThickLayerExpansion:
     if isinstance(punch, str):
         punch = Punch(punch)
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a thinlayer Punch (or a polynomial string in x_1, x_2), got {punch!r}")
+        raise InputTypeError(f"punch must be a thinlayer Punch (or a polynomial string in x_1, x_2), got {punch!r}")
     return _expansion(punch, _check_thick_order(order))
 
 
@@ -705,7 +705,7 @@ def thick_sphere_series(order: int = 12) -> ThickSeries:
     """
     n = _check_thick_order(order)
     if n < 2:
-        raise ValueError(f"order must be at least 2 (the estimate (T.8) needs two terms), got {order}")
+        raise InputError(f"order must be at least 2 (the estimate (T.8) needs two terms), got {order}")
     return _sphere_series(n)
 
 
@@ -728,5 +728,5 @@ def thick_flat_punch_series(order: int = 12) -> ThickSeries:
     """
     n = _check_thick_order(order)
     if n < 2:
-        raise ValueError(f"order must be at least 2 (the estimate (T.8) needs two terms), got {order}")
+        raise InputError(f"order must be at least 2 (the estimate (T.8) needs two terms), got {order}")
     return _flat_series(n)

@@ -90,8 +90,9 @@ import numpy as np
 import sympy as sp
 from scipy import optimize, special
 
-from .._checks import parse_nu
+from .._checks import InputError, InputTypeError, parse_nu
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..normal import normal_latex
 
@@ -135,14 +136,14 @@ def _rational_nu(nu: Any) -> sp.Rational | str:
     if isinstance(nu, str) and nu == FRICTIONLESS:
         return FRICTIONLESS
     if isinstance(nu, bool) or not isinstance(nu, (numbers.Real, str, mpmath.mpf, sp.Basic, Fraction)):
-        raise TypeError(f"nu must be a real number in (-1, 1/2) or a BondedLayer, got {type(nu).__name__}")
+        raise InputTypeError(f"nu must be a real number in (-1, 1/2) or a BondedLayer, got {type(nu).__name__}")
     return parse_nu(nu, floats="exact", symbols=False, example="'3/10' or 0.3",
                     range_hint="A = (1-2nu)/(2(1-nu)^2) must be positive")
 
 
 def _check_choice(value: str, allowed: tuple[str, ...], name: str) -> str:
     if value not in allowed:
-        raise ValueError(f"{name} must be one of {allowed}, got {value!r}")
+        raise InputError(f"{name} must be one of {allowed}, got {value!r}")
     return value
 
 
@@ -335,7 +336,7 @@ def _edge_shift(lay: _Layer, kernel: str, normaliser: str, dps: int, error: bool
 
 def _check_dps(dps: Any) -> int:
     if isinstance(dps, bool) or not isinstance(dps, numbers.Integral) or dps < 10:
-        raise ValueError(f"dps must be an integer >= 10, got {dps!r}")
+        raise InputError(f"dps must be an integer >= 10, got {dps!r}")
     return int(dps)
 
 
@@ -424,6 +425,7 @@ def edge_cubic(nu: Any, kernel: str = "exact", normaliser: str = "alexandrov", d
     return _edge_cubic(_layer(_rational_nu(nu)), kernel, normaliser, _check_dps(dps))
 
 
+@boundary
 def edge_shift_exact(nu: Any, dps: int = 20, normaliser: str = "alexandrov") -> mpmath.mpf:
     """Exact edge shift ``h*`` (3.18) with the kernel (2.3): :func:`edge_shift` with ``kernel="exact"``.
 
@@ -440,6 +442,7 @@ def edge_shift_exact(nu: Any, dps: int = 20, normaliser: str = "alexandrov") -> 
     return edge_shift(nu, "exact", normaliser, dps)
 
 
+@boundary
 def edge_shift_alexandrov(nu: Any) -> mpmath.mpf:
     """Alexandrov's edge shift (3.25) ``h~ = 1/sqrt(C) - 1/(2B) = sqrt(A/B) - 1/(2B)``.
 
@@ -592,6 +595,7 @@ def _qhat_dehoog(laplace, tau: float, dps: int) -> mpmath.mpf:
         return mpmath.invertlaplace(laplace, tau, method="dehoog")
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class WienerHopfSolution(RichDisplay):
     r"""Boundary layer ``qhat(tau)`` of (3.22), normalised so that ``qhat ~ tau + h`` (``c = pi^2 A``).
@@ -634,7 +638,7 @@ class WienerHopfSolution(RichDisplay):
         with mpmath.workdps(dps):
             p = mpmath.mpmathify(p)
             if mpmath.re(p) <= 0:
-                raise ValueError(f"the Laplace variable needs Re p > 0, got p = {p}")
+                raise InputError(f"the Laplace variable needs Re p > 0, got p = {p}")
             return 1 / (p * p * mpmath.exp(self._transform.log_phi_mp(p, dps)))
 
     def q(self, tau: Any, dps: int = 15, method: str = "panel") -> mpmath.mpf:
@@ -657,7 +661,7 @@ class WienerHopfSolution(RichDisplay):
         with mpmath.workdps(dps):
             tau = mpmath.mpf(tau)
             if tau < 0:
-                raise ValueError(f"tau must be >= 0 (distance from the edge), got {tau}")
+                raise InputError(f"tau must be >= 0 (distance from the edge), got {tau}")
             if tau == 0:
                 return mpmath.mpf(0)
             tr = self._transform
@@ -678,7 +682,7 @@ class WienerHopfSolution(RichDisplay):
         """``qhat(tau)`` vectorised (Chebyshev series in ``sqrt(tau)``, ``tau + h`` beyond ``tau_max``)."""
         tau = np.asarray(tau, dtype=float)
         if np.any(tau < 0) or not np.all(np.isfinite(tau)):
-            raise ValueError("tau must be finite and >= 0 (distance from the edge)")
+            raise InputError("tau must be finite and >= 0 (distance from the edge)")
         z = np.sqrt(np.minimum(tau, self.tau_max))
         zmax = math.sqrt(self.tau_max)
         g = np.polynomial.chebyshev.chebval(2 * z / zmax - 1, np.asarray(self.cheb))
@@ -795,10 +799,11 @@ def wiener_hopf_solution(nu: Any, kernel: str = "exact", normaliser: str = "alex
     _check_choice(kernel, KERNELS, "kernel")
     _check_choice(normaliser, NORMALISERS, "normaliser")
     if n is not None and (isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 8):
-        raise ValueError(f"n must be None or an integer >= 8, got {n!r}")
+        raise InputError(f"n must be None or an integer >= 8, got {n!r}")
     return _solution(_rational_nu(nu), kernel, normaliser, _check_dps(dps), None if n is None else int(n))
 
 
+@boundary
 def boundary_layer_exact(nu: Any, dps: int = 20, n: int | None = None) -> WienerHopfSolution:
     """Exact boundary layer (3.15)-(3.18) of the bonded layer (2.3): see :func:`wiener_hopf_solution`."""
     return wiener_hopf_solution(nu, "exact", "alexandrov", dps, n)
@@ -815,7 +820,7 @@ def boundary_kernel_N(nu: Any, t: Any) -> np.ndarray:
     """
     t = np.abs(np.asarray(t, dtype=float))
     if not np.all(np.isfinite(t)):
-        raise ValueError("t must be finite")
+        raise InputError("t must be finite")
     tmax = 2.0 ** math.ceil(math.log2(max(float(np.max(t, initial=1.0)), 1.0)))
     A, s, wD = _N_rule(_rational_nu(nu), tmax)
     with np.errstate(divide="ignore"):

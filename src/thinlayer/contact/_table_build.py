@@ -27,6 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._checks import InputError
 from ..layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer, LayerKernel
 from ..numerics import solve_axisymmetric
 from ..punch import Punch
@@ -91,7 +92,7 @@ def build_table(size: tuple[int, int, int] = FULL, out: Path | None = None, prog
     """
     n_chi, n_low, n_high = size
     if min(size) < 2:
-        raise ValueError(f"size needs at least 2 nodes in each direction, got {size}")
+        raise InputError(f"size needs at least 2 nodes in each direction, got {size}")
     chi = np.geomspace(chi_range[0], chi_range[1], n_chi)
     low_nu = low_nu_nodes(n_low)
     uf = 0.5 * (1.0 - np.cos(np.pi * np.arange(n_high) / (n_high - 1)))  # Chebyshev-Lobatto on [0, 1]

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import sys
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cached_property, lru_cache
@@ -37,7 +38,8 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import check_choice, positive
+from .._checks import InputError, InputTypeError, check_array_size, check_choice, positive
+from ..errors import boundary, boundary_methods
 
 __all__ = ["AnyThicknessLaw", "AnyThicknessValues", "CHI_HI", "CHI_LO", "NotTabulatedError", "TABLE_PATH",
            "anchor", "any_thickness_fields", "any_thickness_law", "any_thickness_source", "build_law",
@@ -55,6 +57,8 @@ SERIES_ORDER = 16
 CHI_MIN, CHI_MAX = 1e-3, 1e8
 #: points of the uniform fine grid in log chi evaluated by linear interpolation
 FINE = 8192
+#: most depths :func:`force_any_thickness` takes in one call (checked before any allocation)
+MAX_VALUES = 10_000_000
 BASES = ("bonded", "frictionless")
 
 
@@ -140,6 +144,34 @@ def anchor(chi: np.ndarray, nu: float, base: str, two_term: bool | None = None) 
     _, ch = psi_chi(k * c)
     P = math.pi * c**6 * ch / c1
     return P / (8.0 / 3.0 * chi**3), np.sqrt(t)
+
+
+def log_anchor(chi: np.ndarray, nu: float, base: str) -> tuple[np.ndarray, np.ndarray]:
+    r"""``(log w, g)`` of :func:`anchor` in logarithms, finite for every finite ``chi`` (``c^6`` overflows at 1e51):
+    ``P/P_Hertz = (3 pi/(8 c_1)) t^3 chi^3 X(k c)``, ``c^2 = t chi^2``, is ``(3 pi/(8 c_0)) t^2 chi x^2 X(x)`` with
+    ``x^2 X(x) = 1/4 - psi(x)`` (the series below x = 2), ``x = k c``, ``c_1 k^2 = c_0`` (at c_0 = 0 the first form).
+    """
+    chi = np.asarray(chi, dtype=float)
+    c0, c1 = _taylor(nu, base)
+    if not (base == "bonded" and nu >= NU_SPLIT):
+        return math.log(3 * math.pi / 8 / c0) + np.log(chi), np.full_like(chi, math.sqrt(2.0))
+    k = math.sqrt(c0 / c1)
+    lo, hi = np.full_like(chi, 2.0), np.full_like(chi, 4.0)
+    with np.errstate(over="ignore"):  # k chi sqrt(t) = inf near the top of the double range: psi = 0 there
+        for _ in range(56):
+            mid = 0.5 * (lo + hi)
+            psi, _ = psi_chi(k * chi * np.sqrt(mid))
+            big = mid * (1 - 2 * psi) / 2 > 1.0
+            hi = np.where(big, mid, hi)
+            lo = np.where(big, lo, mid)
+        t = 0.5 * (lo + hi)
+        if c0 == 0:
+            _, ch = psi_chi(np.zeros_like(chi))
+            return math.log(3 * math.pi / 8 / c1) + 3 * np.log(t) + 3 * np.log(chi) + np.log(ch), np.sqrt(t)
+        x = k * chi * np.sqrt(t)
+        psi, ch = psi_chi(x)
+    x2ch = np.where(x < 2.0, np.where(x < 2.0, x, 0.0) ** 2 * ch, 0.25 - psi)
+    return math.log(3 * math.pi / 8 / c0) + 2 * np.log(t) + np.log(chi) + np.log(x2ch), np.sqrt(t)
 
 
 def high_u_max(chi: float) -> float:
@@ -245,6 +277,7 @@ def _band_estimate(data: dict, which: str, chi: np.ndarray, col: int) -> np.ndar
     return np.maximum(10.0 * e, 2e-6)
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class AnyThicknessLaw:
     r"""``P/P_Hertz`` and ``c/sqrt(R delta0)`` of the sphere as functions of ``chi = sqrt(R delta0)/H``, for one
@@ -310,13 +343,14 @@ class AnyThicknessLaw:
                     out[k][lo] = 1e-12
         hi = x > self.x0 + (FINE - 1) * self.h
         if hi.any():
-            c = np.exp(x[hi])
-            w, g = anchor(c, self.nu, self.base)
+            with np.errstate(over="ignore"):  # chi = inf beyond x = 709.8: log_anchor gives inf, as it should
+                c = np.exp(x[hi])
+            lw, g = log_anchor(c, self.nu, self.base)
             for k, idx in enumerate(which):
                 if idx == 0:
-                    out[k][hi] = np.log1p(w)
+                    out[k][hi] = np.logaddexp(0.0, lw)  # log(1 + w), w beyond the double range too
                 elif idx == 1:
-                    out[k][hi] = np.log((1 + w * g) / (1 + w))
+                    out[k][hi] = np.logaddexp(0.0, lw + np.log(g)) - np.logaddexp(0.0, lw)
                 elif idx == 2:
                     out[k][hi] = self.dlog_force[-1]
                 else:
@@ -420,10 +454,10 @@ def build_law(data: dict, nu: float, base: str) -> AnyThicknessLaw:
 def _check_nu_base(nu: Any, base: Any) -> tuple[float, str]:
     check_choice(base, BASES, "base")
     if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not math.isfinite(nu):
-        raise TypeError(f"nu must be a real number (-1 < nu <= 1/2), got {nu!r}")
+        raise InputTypeError(f"nu must be a real number (-1 < nu <= 1/2), got {nu!r}")
     nu = float(nu)
     if not -1 < nu <= 0.5:
-        raise ValueError(f"nu must lie in (-1, 1/2] for the any-thickness law, got {nu}")
+        raise InputError(f"nu must lie in (-1, 1/2] for the any-thickness law, got {nu}")
     return nu, base
 
 
@@ -432,6 +466,7 @@ def _law_cached(nu: float, base: str) -> AnyThicknessLaw:
     return build_law(_packaged_table(), nu if base == "bonded" else 0.3, base)
 
 
+@boundary
 def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
     """The sphere's any-thickness law for one Poisson ratio and base (cached; about 20 ms the first time).
 
@@ -451,11 +486,12 @@ def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
 # =============================================================================================
 def _shear_modulus(mu: Any, E: Any, nu: float) -> float:
     if (mu is None) == (E is None):
-        raise TypeError("give exactly one of mu= (shear modulus) or E= (Young's modulus)"
+        raise InputTypeError("give exactly one of mu= (shear modulus) or E= (Young's modulus)"
                         + ("; both were given" if mu is not None else ""))
     return positive(mu, "mu") if mu is not None else positive(E, "E") / (2.0 * (1.0 + nu))
 
 
+@boundary
 def force_any_thickness(delta0: Any, R: float, H: float, mu: float | None = None, nu: float = 0.5,
                         base: str = "bonded", *, E: float | None = None) -> np.ndarray:
     r"""Force of a sphere (paraboloid) of radius ``R`` pressed ``delta0`` into a layer of any thickness ``H``.
@@ -491,14 +527,18 @@ def force_any_thickness(delta0: Any, R: float, H: float, mu: float | None = None
     >>> round(float(P[0]) / (16 / 3 * 1e-12), 4), round(float(P[1]) / (2 * math.pi * 1e18), 4)
     (1.0001, 1.0)
     """
+    check_array_size(delta0, "delta0", MAX_VALUES, "1e6 depths take 30 ms but about 80 bytes each; split the array")
     nu, base = _check_nu_base(nu, base)
     RR, HH = positive(R, "R"), positive(H, "H")
     mm = _shear_modulus(mu, E, nu)
     law = any_thickness_law(nu, base)
-    d0 = np.asarray(delta0, dtype=float)
+    try:
+        d0 = np.asarray(delta0, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise InputTypeError("delta0 must be a number or an array of numbers") from None
     d = d0.ravel()
     if not np.all(np.isfinite(d)):
-        raise ValueError("delta0 must be finite (no nan or inf)")
+        raise InputError("delta0 must be finite (no nan or inf)")
     with np.errstate(divide="ignore", invalid="ignore"):
         ld = np.log(d)
     x = 0.5 * ld + (0.5 * math.log(RR) - math.log(HH))
@@ -517,7 +557,7 @@ def force_any_thickness(delta0: Any, R: float, H: float, mu: float | None = None
     return P.reshape(d0.shape)
 
 
-class NotTabulatedError(ValueError):
+class NotTabulatedError(InputError):
     """The any-thickness law does not cover this punch here (the message says why and what would)."""
 
 
@@ -593,7 +633,7 @@ def _layer_nu(layer: Any, nu: Any) -> tuple[Any, float, str]:
 
     if not isinstance(layer, LayerKernel) or layer.base not in BASES or not layer.has_thickness \
             or layer.symbolic_coefficients or layer.parameter is not None:
-        raise TypeError(f"the any-thickness law needs BondedLayer(nu) (-1 < nu <= 1/2, numeric) or "
+        raise InputTypeError(f"the any-thickness law needs BondedLayer(nu) (-1 < nu <= 1/2, numeric) or "
                         f"FrictionlessLayer(nu); got {layer!r}")
     nv = float(layer.poisson_ratio(nu))
     nv, base = _check_nu_base(nv, layer.base)
@@ -626,41 +666,56 @@ def any_thickness_fields(layer: Any, punch: Any, delta0: Any = None, force: Any 
     layer, nv, base = _layer_nu(layer, nu)
     mm = _shear_modulus(mu, E, nv)
     if H is None:
-        raise TypeError("the any-thickness law needs the layer thickness H")
+        raise InputTypeError("the any-thickness law needs the layer thickness H")
     HH = positive(H, "H")
     if (delta0 is None) == (force is None):
-        raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
+        raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     pn = numeric_punch(punch, parameters)
     R = sphere_radius(pn)
     vt = mm / (1.0 - nv)
     if R is None:
         return _thick_fields(layer, pn, delta0, force, HH, mm, nv, tol)
     law = any_thickness_law(nv, base)
-    K = 8.0 / 3.0 * vt * math.sqrt(R)
+    # in logarithms throughout: at delta0 = 1e-300 Hertz's force (H/a ~ 1e148: the half-space) is 1e-449
+    log_K = math.log(8.0 / 3.0) + math.log(vt) + 0.5 * math.log(R)
+
+    def log_force(ld: float) -> float:
+        lp, _ = law.log_force_ratio(np.array([0.5 * (ld + math.log(R)) - math.log(HH)]))
+        return log_K + 1.5 * ld + float(lp[0])
+
     if delta0 is not None:
         d0 = positive(delta0, "delta0")
     else:
         from scipy import optimize
 
-        Pt = positive(force, "force")
-        dH = (Pt / K) ** (2.0 / 3.0)  # Hertz's depth: the layer is stiffer, so delta0 <= dH
-
-        def g(ld: float) -> float:
-            return math.log(float(force_any_thickness(math.exp(ld), R, HH, mm, nv, base))) - math.log(Pt)
-
-        lo = math.log(dH)
-        while g(lo) > 0:
+        log_Pt = math.log(positive(force, "force"))
+        hi = (log_Pt - log_K) / 1.5  # Hertz's depth: the layer is stiffer, so delta0 <= it
+        lo = hi
+        while log_force(lo) > log_Pt:
             lo -= 2.0
-        d0 = math.exp(optimize.brentq(g, lo, math.log(dH) + 1e-12, xtol=1e-15, rtol=1e-14))
-    chi = math.sqrt(R * d0) / HH
-    Pr, cr = (float(v[0]) for v in law.ratios(np.array([chi])))
-    eP, ec = (float(v[0]) for v in law.error_estimate(np.array([chi])))
-    P, c = K * d0**1.5 * Pr, math.sqrt(R * d0) * cr
+        d0 = math.exp(optimize.brentq(lambda ld: log_force(ld) - log_Pt, lo, hi + 1e-12, xtol=1e-15, rtol=1e-14))
+    log_c0 = 0.5 * (math.log(R) + math.log(d0))
+    log_chi = log_c0 - math.log(HH)
+    chi = math.exp(min(log_chi, 709.0))  # (only shown beyond 1e308: the ratios are taken in log chi)
+    log_Pr, log_cr = (float(v[0]) for v in law._eval(np.array([log_chi]), ("force", "radius"), (0, 1)))
+    eP, ec = (float(v[0]) for v in law._eval(np.array([log_chi]), ("est_force", "est_radius"), (3, 3)))
     est = {"force": eP, "contact_area": 2 * ec, "contact_radius": ec}
     if max(est.values()) > tol:
-        raise ValueError(f"the any-thickness law's estimate {max(est.values()):.3g} exceeds tol = {tol:.3g} at "
+        raise InputError(f"the any-thickness law's estimate {max(est.values()):.3g} exceeds tol = {tol:.3g} at "
                          f"chi = {chi:.4g}")
     regime = law.regime(chi)
+    log_P = log_K + 1.5 * math.log(d0) + log_Pr
+    log_A = math.log(math.pi) + 2 * (log_c0 + log_cr)
+    for what, lv in (("force", log_P), ("contact area", log_A)):
+        if not math.log(sys.float_info.min) <= lv <= math.log(sys.float_info.max):
+            from ..asymptotics.solution import ValidityError
+            side = "below" if lv < 0 else "beyond"
+            raise ValidityError(
+                f"any-thickness: the {what} is 1e{lv / math.log(10):.1f}, {side} the double range, at chi = "
+                f"sqrt(R delta0)/H = {chi:.3g} ({regime}{'; the half-space: Hertz' if chi < 1e-3 else ''}); "
+                "express the lengths (delta0, R, H) and the moduli in other units", "force", eP, tol, "other units")
+    P, c, Pr, cr = math.exp(log_P), math.exp(log_c0 + log_cr), math.exp(log_Pr), math.exp(log_cr)
+    P = P if force is None else positive(force, "force")  # the given force: exp(log P) rounds its last digits
     why = (f"any-thickness law for the sphere at chi = sqrt(R delta0)/H = {chi:.4g} ({regime}; "
            f"estimates force {eP:.2g}, radius {ec:.2g})")
     detail = AnyThicknessValues(chi, regime, Pr, cr, eP, ec)

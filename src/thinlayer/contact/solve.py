@@ -46,7 +46,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import check_choice, parse_nu, positive
+from .._checks import InputError, InputTypeError, ThinlayerError, check_choice, parse_nu, positive
 from ..asymptotics.incompressible import (
     incompressible_axisymmetric,
     incompressible_ellipse,
@@ -55,6 +55,7 @@ from ..asymptotics.incompressible import (
 )
 from ..asymptotics.solution import DEFAULT_TOL, ValidityError, compressible_solution, numeric_punch
 from ..display import RichDisplay
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import IncompressibleLayer, LayerKernel
 from ..punch import FlatPunch, Punch
 
@@ -103,6 +104,7 @@ def _shape(punch: Punch) -> _Shape:
 # =============================================================================================
 # the result
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class Indentation(RichDisplay):
     r"""The answer of :func:`solve`: force, contact size and pressure, with the model and its error estimate.
@@ -285,6 +287,7 @@ def _tex_num(x: float) -> str:
     return f"{x:.8g}" if -3 <= e <= 5 else rf"{float(m):.8g} \times 10^{{{e}}}"
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class DirectComparison(RichDisplay):
     """An :class:`Indentation` beside the direct solution of the same problem (:meth:`Indentation.compare_direct`).
@@ -333,13 +336,13 @@ class DirectComparison(RichDisplay):
 # =============================================================================================
 def _check_model_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3) or FrictionlessLayer(0.3); "
+        raise InputTypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3) or FrictionlessLayer(0.3); "
                         f"got {layer!r}")
     if layer.base not in ("bonded", "frictionless") or not layer.has_thickness or layer.symbolic_coefficients:
-        raise TypeError(f"solve() answers for a layer on a rigid base: BondedLayer(nu) (-1 < nu <= 1/2) or "
+        raise InputTypeError(f"solve() answers for a layer on a rigid base: BondedLayer(nu) (-1 < nu <= 1/2) or "
                         f"FrictionlessLayer(nu); got {layer!r}")
     if layer.parameter is not None:
-        raise ValueError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
+        raise InputError("solve() needs a numeric Poisson ratio: BondedLayer(0.3) or BondedLayer('3/10'), "
                          "not the symbolic BondedLayer()")
     given = layer.poisson_ratio(nu)
     nv = parse_nu(given, floats="float", upper_closed=True, symbols=False, example="0.3, '3/10' or 0.5")
@@ -348,12 +351,12 @@ def _check_model_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
 
 def _elastic(mu: Any, E: Any, nu: float) -> float:
     if (mu is None) == (E is None):
-        raise TypeError(f"solve(): {ELASTIC_HINT}" + ("" if mu is None else "; both were given"))
+        raise InputTypeError(f"solve(): {ELASTIC_HINT}" + ("" if mu is None else "; both were given"))
     if mu is not None:
         return positive(mu, "mu")
     mm = positive(E, "E") / (2.0 * (1.0 + nu))
     if not (math.isfinite(mm) and mm > 0):
-        raise ValueError(f"E = {E!r} gives the shear modulus mu = E/(2(1 + nu)) = {mm!r}: out of the double range")
+        raise InputError(f"E = {E!r} gives the shear modulus mu = E/(2(1 + nu)) = {mm!r}: out of the double range")
     return mm
 
 
@@ -562,7 +565,11 @@ def _depth_for_force(force_of: Callable[[float], float], target: float, guess: f
     from scipy import optimize
 
     def g(logd):
-        return math.log(force_of(math.exp(logd))) - math.log(target)
+        P = force_of(math.exp(logd))
+        if not (0 < P < math.inf):  # the depth or the force left the double range on the way
+            raise ValidityError(f"solve(): no depth found for the force {target:.4g}: at depth {math.exp(logd):.3g} "
+                                f"the model's force is {P!r}, outside the double range", "force")
+        return math.log(P) - math.log(target)
 
     x0 = math.log(max(guess, 1e-300))
     g0 = g(x0)
@@ -671,6 +678,7 @@ def _direct(layer, punch, delta0, H, mu, nu, refine=False, previous=None, force=
 # =============================================================================================
 # the front door
 # =============================================================================================
+@boundary
 def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = None, *, E: Any = None,
           force: Any = None, nu: Any = None, model: str = "auto", tol: Any = DEFAULT_TOL,
           parameters: dict | None = None, n: int | None = None, **options: Any) -> Indentation:
@@ -744,16 +752,16 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     mm = _elastic(mu, E, nu_v)
     choice = check_choice(model, MODELS, "model")
     if H is None:
-        raise TypeError("solve() needs the layer thickness H")
+        raise InputTypeError("solve() needs the layer thickness H")
     HH = positive(H, "H")
     tol_v = _tol(tol)
     if (delta0 is None) == (force is None):
-        raise TypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
+        raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     d0 = positive(delta0, "delta0") if delta0 is not None else None
     Pt = positive(force, "force") if force is not None else None
     if isinstance(punch, FlatPunch):  # not a polynomial: the flat-punch models (F.1)-(F.19)
         if options or parameters:
-            raise TypeError("the flat punch takes no parameters or options, got "
+            raise InputTypeError("the flat punch takes no parameters or options, got "
                             f"{sorted({**(parameters or {}), **options})}")
         return _flat(layer, punch, d0, Pt, HH, mm, nu_v, choice, tol_v, n)
     pn = numeric_punch(punch, parameters)
@@ -766,7 +774,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         return _direct(layer, pn, d0, HH, mm, nu_v, force=Pt, tol=tol_v, n=n)
     if choice == "any-thickness":
         if options:
-            raise TypeError(f"the options {sorted(options)} belong to the compressible model, not any-thickness")
+            raise InputTypeError(f"the options {sorted(options)} belong to the compressible model, not any-thickness")
         return _any_thickness(layer, pn, d0, Pt, HH, mm, nu_v, tol_v)
     tried: list[str] = []
     guess = None
@@ -780,11 +788,22 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
             tried.append(f"{name}: {exc}")
             continue
         except ValidityError as exc:
-            if exc.model == "other units":  # beyond the double range: no other model would do better
+            # beyond the double range where the model holds: no other model would do better (where it does not
+            # hold, e.g. delta0 = 1e-300 with H/a = 1e148, the next model answers or gives the true reason)
+            if exc.model == "other units" and exc.estimate <= tol_v:
                 raise
             tried.append(f"{name}: " + str(exc).replace("solve(): ", "").removeprefix(f"{name}: "))
             if choice not in ("auto", "asymptotic"):
                 raise
+            continue
+        except (ArithmeticError, ValueError) as exc:
+            if isinstance(exc, ThinlayerError):
+                raise
+            # the model's own numbers left the double range (e.g. R = 1e-199: R delta0 underflows): the next model
+            tried.append(f"{name}: no answer at these numbers ({type(exc).__name__}: {exc})")
+            if choice not in ("auto", "asymptotic"):
+                raise ValidityError(f"solve(): the {name} model has no answer at these numbers ({type(exc).__name__}: "
+                                    f"{exc}); use model='auto' or other units", "force") from None
             continue
         if _estimate_ok(ans.error_estimate, tol_v):
             why = "; ".join(tried + [f"{name}: estimates {_fmt_est(ans.error_estimate)} within tol "
@@ -810,6 +829,8 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
             ans = _any_thickness(layer, pn, d0, Pt, HH, mm, nu_v, tol_v)
             return _with_reason(ans, "; ".join(tried + [f"any-thickness: {ans.reason}"]), tol_v)
         except (NotTabulatedError, ValidityError) as exc:
+            if getattr(exc, "model", "") == "other units":  # the law holds here: no other model does better
+                raise
             tried.append("any-thickness: " + str(exc).replace("solve(): ", ""))
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # the solver checks finiteness
         ans = _direct(layer, pn, d0 if d0 is not None else guess, HH, mm, nu_v, force=Pt, tol=tol_v, n=n)
@@ -820,7 +841,7 @@ def _asymptotic(name, layer, punch, shape, d0, Pt, H, mu, nu, tol, options) -> I
     if name == "compressible":
         return _compressible(layer, punch, shape, d0, Pt, H, mu, nu, math.inf, options)
     if options:
-        raise TypeError(f"the options {sorted(options)} belong to the compressible model, not {name}")
+        raise InputTypeError(f"the options {sorted(options)} belong to the compressible model, not {name}")
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # refused below if not finite
         ans = _two_term(layer, punch, shape, d0, Pt, H, mu, nu, tol, incompressible=(name == "incompressible"))
     if not (math.isfinite(ans.force) and ans.force > 0):
@@ -854,6 +875,10 @@ def _any_thickness(layer, punch, d0, Pt, H, mu, nu, tol) -> Indentation:
         return Indentation(**any_thickness_fields(layer, punch, delta0=d0, force=Pt, H=H, mu=mu, nu=nu, tol=tol))
     except NotTabulatedError:
         raise
+    except ValidityError as exc:
+        if exc.model == "other units":  # the law holds, its numbers leave the double range: the true reason
+            raise ValidityError(f"solve(): {exc}", exc.quantity, exc.estimate, exc.tol, exc.model) from None
+        raise
     except ValueError as exc:  # the estimate exceeds tol
         raise ValidityError(f"solve(): {exc}", "force", math.inf, tol, "direct") from None
 
@@ -866,6 +891,6 @@ def _with_reason(ans: Indentation, why: str, tol: float) -> Indentation:
 
 def _tol(tol: Any) -> float:
     if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not float(tol) > 0:
-        raise ValueError(f"tol must be a positive number (the largest accepted relative error estimate, "
+        raise InputError(f"tol must be a positive number (the largest accepted relative error estimate, "
                          f"e.g. 0.05; math.inf accepts any), got {tol!r}")
     return float(tol)

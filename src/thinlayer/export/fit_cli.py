@@ -21,6 +21,8 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import InputError
+
 __all__ = ["add_fit_parser", "cmd_fit", "read_curve"]
 
 #: the largest CSV accepted (bytes), checked before reading
@@ -44,9 +46,9 @@ def _number(cell: str, row: int, col: int, path: str) -> float:
     try:
         val = float(s)
     except ValueError:
-        raise ValueError(f"{path}: row {row}, column {col}: {s[:40]!r} is not a number") from None
+        raise InputError(f"{path}: row {row}, column {col}: {s[:40]!r} is not a number") from None
     if not math.isfinite(val):
-        raise ValueError(f"{path}: row {row}, column {col}: {s[:40]!r} is not a finite number")
+        raise InputError(f"{path}: row {row}, column {col}: {s[:40]!r} is not a finite number")
     return val
 
 
@@ -66,18 +68,24 @@ def read_curve(path: str | Path, columns: str = "0,1") -> tuple[np.ndarray, np.n
     """
     p = Path(path)
     if not p.is_file():
-        raise ValueError(f"{path}: no such file")
+        raise InputError(f"{path}: no such file")
     size = p.stat().st_size
     if size > MAX_BYTES:
-        raise ValueError(f"{path}: {size} bytes exceed the limit of {MAX_BYTES} bytes; subsample the curve")
+        raise InputError(f"{path}: {size} bytes exceed the limit of {MAX_BYTES} bytes; subsample the curve")
     sel = [c.strip() for c in columns.split(",")]
     if len(sel) != 2 or not all(sel):
-        raise ValueError(f"--columns must name two columns, depth and force (indices or header names), got {columns!r}")
+        raise InputError(f"--columns must name two columns, depth and force (indices or header names), got {columns!r}")
+    from ..contact.fit import MAX_POINTS
+
     text = p.read_text(encoding="utf-8", errors="strict")
+    lines = text.count("\n")
+    if lines > MAX_POINTS + 1000:  # before splitting 10 million rows into fields (gigabytes of Python lists)
+        raise InputError(f"{path}: {lines} lines, more than the {MAX_POINTS} points a fit accepts; subsample the "
+                         "curve")
     rows = [(i + 1, _fields(line)) for i, line in enumerate(io.StringIO(text))
             if line.strip() and not line.lstrip().startswith("#")]
     if not rows:
-        raise ValueError(f"{path}: no data rows")
+        raise InputError(f"{path}: no data rows")
     first = rows[0][1]
     header = None
     try:
@@ -92,14 +100,14 @@ def read_curve(path: str | Path, columns: str = "0,1") -> tuple[np.ndarray, np.n
         elif header is not None and c in header:
             idx.append(header.index(c))
         else:
-            raise ValueError(f"{path}: no column {c!r}" + (f" (header: {', '.join(header)})" if header else
+            raise InputError(f"{path}: no column {c!r}" + (f" (header: {', '.join(header)})" if header else
                                                              " (the file has no header: give indices)"))
     d, f = [], []
     for line_no, cells in rows:
         try:
             dv, fv = (_number(cells[j], line_no, j, str(path)) for j in idx)
         except IndexError:
-            raise ValueError(f"{path}: row {line_no} has {len(cells)} field(s), column {max(idx)} needed") from None
+            raise InputError(f"{path}: row {line_no} has {len(cells)} field(s), column {max(idx)} needed") from None
         d.append(dv)
         f.append(fv)
     return np.array(d), np.array(f)
@@ -146,7 +154,7 @@ def cmd_fit(args: argparse.Namespace) -> int:
     out = {"file": str(args.csv), **res.as_dict()}
     bad = [k for k, v in out.items() if isinstance(v, float) and not math.isfinite(v)]
     if bad:
-        raise ValueError(f"the fit's {bad[0]} is not a finite number: the data cannot determine the parameters")
+        raise InputError(f"the fit's {bad[0]} is not a finite number: the data cannot determine the parameters")
     text = json.dumps(out, indent=2, allow_nan=False) if args.json else str(res)
     print(text)
     if args.out is not None:

@@ -12,6 +12,8 @@ import json
 import math
 from typing import Any
 
+from ..errors import InputError
+
 __all__ = ["add_flat_parser", "cmd_flat"]
 
 #: most values of a/H on one command line
@@ -62,12 +64,12 @@ def cmd_flat(args: argparse.Namespace) -> int:
     from ..layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer
 
     if len(args.a_over_H) > MAX_VALUES:
-        raise ValueError(f"--a-over-H: {len(args.a_over_H)} values, at most {MAX_VALUES} on one command line")
+        raise InputError(f"--a-over-H: {len(args.a_over_H)} values, at most {MAX_VALUES} on one command line")
     nu = float(parse_nu(args.nu, floats="float", upper_closed=True, symbols=False, example="0.3, '3/10' or 0.5"))
     layer = FrictionlessLayer(nu) if args.layer == "frictionless" else (
         IncompressibleLayer() if nu == 0.5 else BondedLayer(nu))
     if args.max_error > 1:
-        raise ValueError(f"--max-error {args.max_error:g}: a relative error in (0, 1]")
+        raise InputError(f"--max-error {args.max_error:g}: a relative error in (0, 1]")
     kappa, est, used = stiffness_table(layer, args.a_over_H, args.model, max_error=args.max_error)
     rows = [{"a_over_H": float(a), "kappa": float(k), "model": m, "error_estimate": float(e)}
             for a, k, e, m in zip(args.a_over_H, kappa, est, used)]

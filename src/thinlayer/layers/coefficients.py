@@ -41,7 +41,7 @@ from sympy import QQ
 from sympy.polys.rings import ring
 
 from .. import symbols as S
-from .._checks import check_bounded
+from .._checks import InputError, check_bounded
 from .._checks import check_order as _check_order
 from .._series import (
     bonded_series_parts,
@@ -50,6 +50,7 @@ from .._series import (
     reciprocal_recurrence,
 )
 from ..display import RichDisplay, fmt
+from ..errors import boundary
 from ..normal import join_signed, normal_latex
 from ..parse import as_expr
 from ..results import checked_lambdify
@@ -246,7 +247,7 @@ class KernelCoefficients(RichDisplay):
         """
         p = self.layer.parameter
         if p is None:
-            raise ValueError("the coefficients of a numeric layer are numbers already")
+            raise InputError("the coefficients of a numeric layer are numbers already")
         exprs = [self.A_expr] + [self.m_expr(n) for n in range(1, self.order + 1)]
         exprs += [self.M_expr(k) for k in range(1, self.order + 1)]
         return checked_lambdify([p], exprs, backend)
@@ -265,10 +266,10 @@ class KernelCoefficients(RichDisplay):
         """``A, m_1..m_N, M_1..M_N`` (2.20), (4.2) as functions of the layer's parameter (symbolic layers)."""
         p = self.layer.parameter
         if self.layer.symbolic_coefficients:
-            raise ValueError("the coefficients of a GenericLayer are the symbols A, m_n themselves; pass the "
+            raise InputError("the coefficients of a GenericLayer are the symbols A, m_n themselves; pass the "
                              "expressions you need (e.g. M_expr(k)) with args=[m_1, ...]")
         if p is None:
-            raise ValueError("these kernel coefficients have no symbolic parameter (a numeric or parameter-free "
+            raise InputError("these kernel coefficients have no symbolic parameter (a numeric or parameter-free "
                              "layer): they are numbers already; use e.g. kernel_coefficients(BondedLayer(), n)")
         outs = {"A": self.A_expr, **{f"m_{n}": self.m_expr(n) for n in range(1, self.order + 1)},
                 **{f"M_{k}": self.M_expr(k) for k in range(1, self.order + 1)}}
@@ -352,6 +353,7 @@ def check_coefficient_order(layer: LayerKernel, order: int, name: str = "order")
 BACKENDS = ("auto", "python", "flint")
 
 
+@boundary
 def kernel_coefficients(layer: LayerKernel, order: int, *, backend: str | None = None) -> KernelCoefficients:
     """A, m_n (2.20) and M_k (4.2), for n, k <= ``order``.
 
@@ -392,7 +394,7 @@ def kernel_coefficients(layer: LayerKernel, order: int, *, backend: str | None =
     order = check_coefficient_order(layer, _check_order(order, "order"))
     if backend is not None:
         if backend not in BACKENDS:
-            raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")
+            raise InputError(f"backend must be one of {BACKENDS}, got {backend!r}")
         eng = _engine(layer, backend)
         eng.extend(order)
         return eng.view(order)
@@ -731,7 +733,7 @@ class _PolyEngine(_Engine):
     def _setup(self, num, den) -> None:
         N0, D0 = num[0], den[0]
         if not N0:
-            raise ValueError(f"A = 0 for {self.layer!r}: the expansion (2.20) does not exist")
+            raise InputError(f"A = 0 for {self.layer!r}: the expansion (2.20) does not exist")
         self._N0, self._D0 = _factored(N0), _factored(D0)
         self._nd = _ScaledQuotient(D0, self.backend)
         self._dn = _ScaledQuotient(N0, self.backend)

@@ -26,11 +26,13 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import check_bounded, parse_nu
+from .._checks import InputError, check_bounded, parse_nu
 from .._checks import check_order as _check_order
 from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
 from ..display import RichDisplay, fmt, latex_escape
+from ..errors import boundary_methods
 from ..normal import normal_latex
+from ..parse import sympy_value
 from . import numeric as kernel_numeric
 from .coefficients import incompressible_coefficients, kernel_coefficients
 from .moments import kernel_moment
@@ -40,7 +42,7 @@ HALF = sp.Rational(1, 2)
 MAX_DPS = 1000
 
 
-class IncompressibleLayerError(ValueError):
+class IncompressibleLayerError(InputError):
     """nu = 1/2 makes the compressible bonded layer degenerate (A = 0)."""
 
 
@@ -72,6 +74,7 @@ def _is_half(nu: Any) -> bool:
         return False
 
 
+@boundary_methods
 class LayerKernel(RichDisplay, ABC):
     """Interface of a layer model: symbolic L(u), Maclaurin data of L(s)/s, numerics."""
 
@@ -130,11 +133,11 @@ class LayerKernel(RichDisplay, ABC):
         fixed = self.numeric_nu
         if fixed is None:
             if nu is None:
-                raise ValueError(f"{self!r} does not fix Poisson's ratio: pass nu= (-1 < nu < 1/2) "
+                raise InputError(f"{self!r} does not fix Poisson's ratio: pass nu= (-1 < nu < 1/2) "
                                  "to define vartheta = mu/(1 - nu)")
             return nu
         if nu is not None and abs(float(nu) - fixed) > 1e-12:
-            raise ValueError(f"nu={nu!r} disagrees with the layer's Poisson ratio {fixed}")
+            raise InputError(f"nu={nu!r} disagrees with the layer's Poisson ratio {fixed}")
         return fixed
 
     @property
@@ -145,7 +148,7 @@ class LayerKernel(RichDisplay, ABC):
     @property
     def edge_shift_key(self) -> Any:
         """What the edge shift h* (3.18), (3.25) of this layer depends on: its exact nu, or the base name."""
-        raise ValueError(f"the edge shift needs a numeric layer with a finite thickness, got {self!r}")
+        raise InputError(f"the edge shift needs a numeric layer with a finite thickness, got {self!r}")
 
     def taylor_coefficients(self, order: int) -> tuple:
         """``c_n`` of ``L(s)/s = sum_n c_n s^{2n}`` (n <= order): ``c_n = A m_n`` (2.20), or (I.1) at nu = 1/2.
@@ -191,10 +194,12 @@ class LayerKernel(RichDisplay, ABC):
 
     def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
         """Maclaurin polynomial of L(u) through u^(2*order+1): ``A u (1 + m_1 u^2 + ...)`` (2.4), (2.20)."""
+        u = sympy_value(u, "u")
         c = self.coefficients(order)
         return sp.Add(*[c.A_expr * c.m_expr(k) * u ** (2 * k + 1) for k in range(order + 1)])
 
 
+@boundary_methods
 @dataclass(frozen=True, eq=True)
 class BondedLayer(LayerKernel):
     """Elastic layer bonded to a rigid base (the paper's layer), kernel (2.3)::
@@ -242,14 +247,14 @@ class BondedLayer(LayerKernel):
 
     def __init__(self, nu: Any = None, parameter: str = "nu", dps: int = 30):
         if parameter not in ("nu", "kappa"):
-            raise ValueError(f"parameter must be 'nu' or 'kappa', got {parameter!r}")
+            raise InputError(f"parameter must be 'nu' or 'kappa', got {parameter!r}")
         if isinstance(dps, bool) or not isinstance(dps, int) or dps < 5:
-            raise ValueError(f"dps must be an integer >= 5, got {dps!r}")
+            raise InputError(f"dps must be an integer >= 5, got {dps!r}")
         check_bounded(dps, "dps", MAX_DPS, "the float coefficients are computed at dps + 10 digits; at dps = 1000 "
                                            "order 200 costs 0.5 s, and the cost grows like dps^1.6")
         val = _as_nu(nu)
         if parameter == "kappa" and not isinstance(val, sp.Symbol):
-            raise ValueError("parameter='kappa' needs a symbolic layer (nu=None)")
+            raise InputError("parameter='kappa' needs a symbolic layer (nu=None)")
         object.__setattr__(self, "nu", val)
         object.__setattr__(self, "parameter_name", parameter)
         object.__setattr__(self, "dps", dps)
@@ -297,7 +302,7 @@ class BondedLayer(LayerKernel):
     def edge_shift_key(self) -> sp.Rational:
         """The exact rational nu (a float nu is taken as its exact binary value)."""
         if self.parameter is not None:
-            raise ValueError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
+            raise InputError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
                              "(give BondedLayer(0.3), BondedLayer('3/10') or a number)")
         return parse_nu(self.nu, floats="exact")
 
@@ -306,6 +311,7 @@ class BondedLayer(LayerKernel):
         return sp.Float(k, self.dps) if isinstance(k, mpmath.mpf) else k
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         k = self._kappa_expr()
         return (2 * k * sp.sinh(2 * u) - 4 * u) / (2 * k * sp.cosh(2 * u) + 1 + k**2 + 4 * u**2)
 
@@ -315,6 +321,7 @@ class BondedLayer(LayerKernel):
         Derivation: ``L - 1 = -(2 kappa e^{-2u} + 1 + kappa^2 + 4u + 4u^2)/(kappa e^{2u} + ...)``,
         so the remainder is ``O(u^2 e^{-2u})`` as printed in (2.4).
         """
+        u = sympy_value(u, "u")
         k = self._kappa_expr()
         return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
 
@@ -324,14 +331,14 @@ class BondedLayer(LayerKernel):
     def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
         """Stable L(u) (or L(u)/u): see :mod:`thinlayer.layers.numeric`.  Needs a numeric nu."""
         if self.parameter is not None:
-            raise ValueError("numeric evaluation needs a numeric nu; build BondedLayer(nu=0.3) or similar")
+            raise InputError("numeric evaluation needs a numeric nu; build BondedLayer(nu=0.3) or similar")
         if backend == "numpy":
             return kernel_numeric.bonded_numpy(u, float(self.kappa), over_u)
         if backend == "mpmath":
             k = self.kappa
             k = mpmath.mpf(k.p) / k.q if isinstance(k, sp.Rational) else k
             return kernel_numeric.bonded_mpmath(u, k, over_u)
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def __repr__(self) -> str:
         return f"BondedLayer(nu={self.nu})"
@@ -343,6 +350,7 @@ class BondedLayer(LayerKernel):
         return [f"BondedLayer(nu={fmt(self.nu, 15)})"]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class FrictionlessLayer(LayerKernel):
     """Layer lying on a rigid base without friction: ``L(u) = (cosh 2u - 1)/(sinh 2u + 2u)``.
@@ -372,6 +380,7 @@ class FrictionlessLayer(LayerKernel):
         return "frictionless"
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         return (sp.cosh(2 * u) - 1) / (sp.sinh(2 * u) + 2 * u)
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
@@ -386,13 +395,14 @@ class FrictionlessLayer(LayerKernel):
             return kernel_numeric.frictionless_numpy(u, over_u)
         if backend == "mpmath":
             return kernel_numeric.frictionless_mpmath(u, over_u)
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         return [f"{type(self).__name__}({'' if self.nu is None else 'nu=' + fmt(self.nu, 15)})"]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class HalfSpace(LayerKernel):
     """The elastic half-space, ``L = 1``: the limit of every layer as H -> oo.
@@ -406,10 +416,11 @@ class HalfSpace(LayerKernel):
     has_compressible_expansion: ClassVar[bool] = False
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         return sp.Integer(1)
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
-        raise ValueError(
+        raise InputError(
             "the half-space kernel L = 1 has no expansion L(s)/s = A(1 + m_1 s^2 + ...) (2.20): "
             "the thin-layer analysis needs a layer of finite thickness (BondedLayer, FrictionlessLayer)"
         )
@@ -427,13 +438,14 @@ class HalfSpace(LayerKernel):
             if not over_u:
                 return mpmath.mpf(1)
             return mpmath.inf if u == 0 else 1 / u
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         return [f"{type(self).__name__}()"]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class GenericLayer(LayerKernel):
     """A layer known only through its coefficients: ``A`` and ``m_n`` stay plain symbols.
@@ -458,13 +470,14 @@ class GenericLayer(LayerKernel):
         return sp.Symbol(f"m_{n}")
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        raise ValueError("a GenericLayer has no closed-form L(u); use BondedLayer or FrictionlessLayer")
+        u = sympy_value(u, "u")
+        raise InputError("a GenericLayer has no closed-form L(u); use BondedLayer or FrictionlessLayer")
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
-        raise ValueError("a GenericLayer has no Taylor data; its coefficients are symbols")
+        raise InputError("a GenericLayer has no Taylor data; its coefficients are symbols")
 
     def L_numeric(self, u: Any, backend: str = "numpy", over_u: bool = False) -> Any:
-        raise ValueError("a GenericLayer cannot be evaluated numerically")
+        raise InputError("a GenericLayer cannot be evaluated numerically")
 
     @property
     def parameter(self) -> sp.Symbol | None:
@@ -480,6 +493,7 @@ def _kernel_23(kappa: sp.Expr, u: sp.Expr) -> sp.Expr:
     return (2 * kappa * sp.sinh(2 * u) - 4 * u) / (2 * kappa * sp.cosh(2 * u) + 1 + kappa**2 + 4 * u**2)
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class IncompressibleLayer(LayerKernel):
     """The incompressible layer bonded to a rigid base: kernel (2.3) at ``nu = 1/2``, ``kappa = 1``::
@@ -542,10 +556,12 @@ class IncompressibleLayer(LayerKernel):
 
     # ---- symbolic --------------------------------------------------------------------------
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
+        u = sympy_value(u, "u")
         return _kernel_23(self.kappa, u)
 
     def large_u(self, u: sp.Expr = S.u) -> sp.Expr:
         """Leading behaviour of ``L(u) - 1`` as u -> oo: ``-(4u^2 + 4u + 2) e^{-2u}`` (kappa = 1 in (2.4))."""
+        u = sympy_value(u, "u")
         k = self.kappa
         return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
 
@@ -555,6 +571,7 @@ class IncompressibleLayer(LayerKernel):
 
     def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
         """Maclaurin polynomial of L(u) through ``u^(2 order + 1)``: ``c_1 u^3 + c_2 u^5 + ...`` (I.1)."""
+        u = sympy_value(u, "u")
         c = incompressible_coefficients(_check_order(order, "order")).c
         return sp.Add(*[c[k] * u ** (2 * k + 1) for k in range(order + 1)])
 
@@ -588,7 +605,7 @@ class IncompressibleLayer(LayerKernel):
             return kernel_numeric.bonded_numpy(u, 1.0, over_u)
         if backend == "mpmath":
             return kernel_numeric.bonded_mpmath(u, mpmath.mpf(1), over_u)
-        raise ValueError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
+        raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def __repr__(self) -> str:
         return "IncompressibleLayer()"

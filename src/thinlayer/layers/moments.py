@@ -14,12 +14,14 @@ from typing import TYPE_CHECKING
 import sympy as sp
 
 from .._checks import check_order as _check_order_public
+from ..errors import boundary
 from .coefficients import check_coefficient_order
 
 if TYPE_CHECKING:
     from .kernels import LayerKernel
 
 
+@boundary
 def kernel_moment(layer: LayerKernel, a1: int, a2: int):
     """The moment mu_{a1 a2} = iint k(xi) xi1^a1 xi2^a2 dxi of the kernel (2.12), (2.15).
 

@@ -27,6 +27,8 @@ import math
 import mpmath
 import numpy as np
 
+from .._checks import InputError
+
 # Taylor coefficients of S(x)/x^3 = sum_k x^(2k) / (2k+3)!, enough for x <= 2 to 1e-19.
 _S_TERMS = 14
 _S_COEFFS = np.array([1.0 / math.factorial(2 * k + 3) for k in range(_S_TERMS)][::-1])
@@ -45,7 +47,7 @@ def check_u(u):
     u = np.asarray(u, dtype=float)
     bad = np.isnan(u) | (u < 0)
     if np.any(bad):
-        raise ValueError(_u_message(u[bad].flat[0]))
+        raise InputError(_u_message(u[bad].flat[0]))
     return u
 
 
@@ -53,11 +55,11 @@ def check_u_mpmath(u) -> mpmath.mpf:
     """``u`` as an mpmath number (mpmath backend): >= 0 (inf allowed); nan or u < 0 is a ValueError."""
     if isinstance(u, np.ndarray):
         if u.ndim != 0:
-            raise ValueError(f"the mpmath backend takes one number u, got an array of shape {u.shape}")
+            raise InputError(f"the mpmath backend takes one number u, got an array of shape {u.shape}")
         u = u.item()
     u = mpmath.mpf(u)
     if mpmath.isnan(u) or u < 0:
-        raise ValueError(_u_message(u))
+        raise InputError(_u_message(u))
     return u
 
 

@@ -16,7 +16,8 @@ import numpy as np
 import scipy.fft as sfft
 from scipy import interpolate, special
 
-from .._checks import check_bounded, positive
+from .._checks import InputError, InputTypeError, check_bounded, positive
+from ..errors import boundary
 from ..layers.kernels import LayerKernel
 from ._layer import U_MAX, gauss_panels, numeric_layer_nu, panel_count
 
@@ -61,6 +62,7 @@ def _t_quadrature(rho_max: float) -> tuple[np.ndarray, np.ndarray]:
     return gauss_panels(U_MAX, panel_count(U_MAX, min(0.5, 2.0 * math.pi / max(rho_max, 1e-300))), 16)
 
 
+@boundary
 def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
     """``g_c(r) = (1/(2 pi H)) int_0^oo (L(t) - 1) J0(t r/H) dt``: the layer's correction to Boussinesq.
 
@@ -118,6 +120,7 @@ def _uniform_spline(spline: interpolate.CubicSpline) -> Callable[[np.ndarray], n
     return ev
 
 
+@boundary
 def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, n: int, *,
                            nu: float | None = None, mu: float = 1.0) -> np.ndarray:
     """Influence coefficients ``C[k, l]``: u3 at offset ``(k Delta, l Delta)`` from a cell under unit pressure.
@@ -196,9 +199,9 @@ def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, 
 
 def check_n(n: Any) -> int:
     if isinstance(n, bool) or not isinstance(n, (numbers.Integral, np.integer)):
-        raise TypeError(f"n (cells per side) must be an integer, got {n!r}")
+        raise InputTypeError(f"n (cells per side) must be an integer, got {n!r}")
     if not 2 <= n <= _MAX_N:
-        raise ValueError(f"n (cells per side) must lie in [2, {_MAX_N}], got {n}")
+        raise InputError(f"n (cells per side) must lie in [2, {_MAX_N}], got {n}")
     need = memory_estimate(int(n))
     check_bounded(need / 1024**3, f"the memory estimate for n = {n} cells per side (GiB)", MAX_BYTES / 1024**3,
                   "the FFT convolution needs its spectrum and a padded (2n x n) complex buffer besides about 13 "

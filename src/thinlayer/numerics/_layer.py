@@ -14,6 +14,7 @@ import numpy as np
 import sympy as sp
 from scipy import special
 
+from .._checks import InputError, InputTypeError
 from ..layers.kernels import LayerKernel
 
 __all__ = ["GAUSS", "U_MAX", "gauss_panels", "numeric_layer_nu", "panel_count"]
@@ -56,27 +57,27 @@ def numeric_layer_nu(layer: Any, nu: Any) -> float:
     (0.3, 0.25)
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(
+        raise InputTypeError(
             f"layer must be a thinlayer LayerKernel (BondedLayer(nu), FrictionlessLayer(), HalfSpace()), "
             f"got {layer!r} ({type(layer).__name__})")
     layer_nu = layer.numeric_nu
     if layer_nu is None and layer.parameter is not None and not layer.symbolic_coefficients:
-        raise ValueError("the direct solver needs a numeric Poisson ratio: build e.g. BondedLayer(0.3), "
+        raise InputError("the direct solver needs a numeric Poisson ratio: build e.g. BondedLayer(0.3), "
                          f"not {layer!r}")
     nu_val = layer.poisson_ratio(nu)
     if layer_nu is None and (isinstance(nu_val, bool) or not isinstance(nu_val, (numbers.Real, sp.Number))):
-        raise TypeError(f"nu must be a real number with -1 < nu < 1/2, got {nu!r}")
+        raise InputTypeError(f"nu must be a real number with -1 < nu < 1/2, got {nu!r}")
     nu_val = float(nu_val)
     # nu = 1/2 is admissible only when the layer itself fixes it (the incompressible bonded layer, kappa = 1)
     if not (-1 < nu_val < 0.5 or (nu_val == 0.5 and layer_nu == 0.5)):
-        raise ValueError(f"Poisson ratio nu={nu_val} outside the admissible range -1 < nu < 1/2 "
+        raise InputError(f"Poisson ratio nu={nu_val} outside the admissible range -1 < nu < 1/2 "
                          "(nu = 1/2 only with the incompressible layer, IncompressibleLayer())")
     try:
         far = float(np.asarray(layer.L_numeric(np.array([2 * U_MAX]), "numpy"))[0])
     except Exception as exc:  # GenericLayer and friends
-        raise ValueError(f"layer {layer!r} cannot be evaluated numerically: {exc}") from exc
+        raise InputError(f"layer {layer!r} cannot be evaluated numerically: {exc}") from exc
     if abs(far - 1.0) > 1e-12:
-        raise ValueError(f"layer kernel must tend to the half-space value L = 1 at large u (2.4); "
+        raise InputError(f"layer kernel must tend to the half-space value L = 1 at large u (2.4); "
                          f"L({2 * U_MAX}) = {far}")
     return nu_val
 

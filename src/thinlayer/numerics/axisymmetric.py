@@ -66,8 +66,9 @@ import sympy as sp
 from scipy import integrate, optimize, special
 
 from .. import symbols as S
-from .._checks import check_bounded, positive
+from .._checks import InputError, InputTypeError, check_bounded, positive
 from ..display import RichDisplay, fmt
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
 from ._layer import GAUSS, U_MAX, numeric_layer_nu, panel_count
@@ -82,7 +83,14 @@ _MAX_MODES = 600
 r = sp.Symbol("r", nonnegative=True)
 
 
+#: the largest H/c the solver takes: the layer correction is below double precision long before (it solves
+#: H/c = 1e100 to rounding; its Bessel recurrences overflow from H/c ~ 1e150)
+MAX_H_OVER_C = 1e100
+
+
 # --------------------------------------------------------------------------- result
+
+@boundary_methods
 @dataclass(frozen=True)
 class AxisymmetricContact(RichDisplay):
     """Direct numerical solution of the axisymmetric unilateral contact problem (1.5)-(1.8).
@@ -177,11 +185,12 @@ def _as_punch(punch: Any) -> Punch:
     if isinstance(punch, (str, sp.Basic)):
         punch = Punch(punch)
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
+        raise InputTypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
                         f"got {punch!r} ({type(punch).__name__})")
     return punch
 
 
+@boundary
 def radial_profile(punch: Any) -> sp.Expr:
     """The profile ``Phi(r)`` of an axisymmetric punch, as a sympy expression in :data:`r`.
 
@@ -209,12 +218,12 @@ def radial_profile(punch: Any) -> sp.Expr:
     punch = _as_punch(punch)
     if punch.parameters:
         names = ", ".join(str(q) for q in punch.parameters)
-        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
+        raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
                          f"substitute numbers first, e.g. punch.subs({{'{punch.parameters[0]}': 1.0}})")
     phi = punch.expr
     angular = sp.expand(S.x1 * sp.diff(phi, S.x2) - S.x2 * sp.diff(phi, S.x1))
     if angular != 0:
-        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} is not axisymmetric "
+        raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} is not axisymmetric "
                          f"(x1 dPhi/dx2 - x2 dPhi/dx1 = {angular} is not zero): use "
                          "thinlayer.numerics.solve_2d for a general punch")
     return sp.expand(phi.xreplace({S.x1: r, S.x2: sp.Integer(0)}))
@@ -232,21 +241,23 @@ def _vectorised(Phi_r: Any) -> Callable[[np.ndarray], np.ndarray]:
     if isinstance(Phi_r, sp.Basic):
         free = sorted(Phi_r.free_symbols, key=str)
         if len(free) > 1:
-            raise ValueError(f"Phi_r must depend on the radius only; it has free symbols {free}: "
+            raise InputError(f"Phi_r must depend on the radius only; it has free symbols {free}: "
                              "substitute numbers for R, etc.")
         f = sp.lambdify(free[0] if free else r, Phi_r, "numpy")
     elif callable(Phi_r):
         f = Phi_r
     else:
-        raise TypeError(f"the punch must be a thinlayer Punch (or a polynomial in x1, x2) or a radial profile "
+        raise InputTypeError(f"the punch must be a thinlayer Punch (or a polynomial in x1, x2) or a radial profile "
                         f"Phi_r: a numpy-vectorised callable Phi(r) or a sympy expression in r; "
                         f"got {Phi_r!r} ({type(Phi_r).__name__})")
 
     def phi(rr: np.ndarray) -> np.ndarray:
         rr = np.asarray(rr, dtype=float)
-        out = np.broadcast_to(np.asarray(f(rr), dtype=float), rr.shape)
+        with np.errstate(over="ignore", invalid="ignore"):  # refused below, in one line
+            out = np.broadcast_to(np.asarray(f(rr), dtype=float), rr.shape)
         if not np.all(np.isfinite(out)):
-            raise ValueError("Phi_r returned non-finite values on [0, c]")
+            raise InputError(f"Phi_r returned non-finite values on [0, {float(np.max(rr)):.3g}] (beyond the double "
+                             "range): express the lengths in other units")
         return out
 
     return phi
@@ -265,9 +276,9 @@ def _check_modes(n: Any) -> int | None:
     if n is None:
         return None
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
-        raise TypeError(f"n (number of modes) must be an integer, got {n!r}")
+        raise InputTypeError(f"n (number of modes) must be an integer, got {n!r}")
     if not 4 <= n <= _MAX_MODES:
-        raise ValueError(f"n (number of modes) must lie in [4, {_MAX_MODES}], got {n}")
+        raise InputError(f"n (number of modes) must lie in [4, {_MAX_MODES}], got {n}")
     return int(n)
 
 
@@ -307,7 +318,7 @@ def _material(layer: Any, H: Any, mu: Any, nu: Any) -> tuple[float, float, float
     nu_val = numeric_layer_nu(layer, nu)
     if H is None:
         if layer.has_thickness:
-            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
+            raise InputError(f"{type(layer).__name__} needs the layer thickness H > 0")
         H = 1.0  # ignored by the half-space kernel
     return positive(H, "H"), positive(mu, "mu"), nu_val
 
@@ -332,6 +343,7 @@ def _result(layer, punch, nu, mu, H, delta0, c, disc, x1, xP, d0c, errs) -> Axis
 
 
 # --------------------------------------------------------------------------- prescribed radius
+@boundary
 def contact_for_radius(layer: LayerKernel, punch: Any, radius: float, H: float | None = None, mu: float = 1.0,
                        n: int | None = None, *, nu: float | None = None,
                        error_estimate: bool = True) -> AxisymmetricContact:
@@ -374,7 +386,7 @@ def contact_for_radius(layer: LayerKernel, punch: Any, radius: float, H: float |
         runs.append((disc, *disc.solve(c, phi)))
     disc, d0, x1, xP = runs[0]
     if not d0 > 0:
-        raise ValueError(f"no indentation delta0 > 0 gives contact radius {c}: is Phi increasing with Phi(0) = 0?")
+        raise InputError(f"no indentation delta0 > 0 gives contact radius {c}: is Phi increasing with Phi(0) = 0?")
     vt = mu / (1.0 - nu_val)
     errs = (0.0, 0.0, 0.0)
     if error_estimate:
@@ -388,15 +400,15 @@ def contact_for_radius(layer: LayerKernel, punch: Any, radius: float, H: float |
 def _intersection_radius(phi: Callable, delta0: float, scale_hint: float) -> float:
     """Radius where Phi(r) = delta0 (the rigid-body overlap), bracketed outward from scale_hint."""
     if phi(np.array([0.0]))[0] >= delta0:
-        raise ValueError(f"Phi(0) = {phi(np.array([0.0]))[0]} >= delta0 = {delta0}: the punch does not "
+        raise InputError(f"Phi(0) = {phi(np.array([0.0]))[0]} >= delta0 = {delta0}: the punch does not "
                          "touch the layer; Phi must be normalised with Phi(0) = 0 and increase with r")
-    hi = scale_hint
-    for _ in range(200):
+    hi = min(scale_hint, 1.0)  # (from H = 1e300 the first Phi(hi) would overflow)
+    for _ in range(2200):
         if phi(np.array([hi]))[0] > delta0:
             break
         hi *= 2.0
     else:
-        raise ValueError("Phi_r never reaches delta0: an unbounded, increasing profile (paraboloid, r^4, ...) "
+        raise InputError("Phi_r never reaches delta0: an unbounded, increasing profile (paraboloid, r^4, ...) "
                          "is needed for a finite contact disc")
     return optimize.brentq(lambda rr: phi(np.array([rr]))[0] - delta0, 0.0, hi, xtol=1e-14 * hi)
 
@@ -415,13 +427,14 @@ def _radius_for_depth(layer, phi, delta0, H, N, c_int):
         if f_hi <= 0:
             hi = hi * 1.5 + 2.0 * H
     else:
-        raise ValueError("could not bracket the contact radius: is Phi convex and increasing (one contact disc)?")
+        raise InputError("could not bracket the contact radius: is Phi convex and increasing (one contact disc)?")
     c = optimize.brentq(lambda cc: disc.solve(cc, phi)[0] - delta0, lo, hi, xtol=1e-15 * hi, rtol=1e-15,
                         maxiter=200)
     d0c, x1, xP = disc.solve(c, phi)
     return c, disc, d0c, x1, xP
 
 
+@boundary
 def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0,
                        n: int | None = None, *, nu: float | None = None,
                        error_estimate: bool = True) -> AxisymmetricContact:
@@ -484,6 +497,9 @@ def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float |
     H, mu, nu_val = _material(layer, H, mu, nu)
     N_given = _check_modes(n)
     c_int = _intersection_radius(phi, delta0, H)
+    if H is not None and H > MAX_H_OVER_C * c_int:  # its Bessel recurrences overflow from H/c ~ 1e150
+        raise InputError(f"H/c = {H / c_int:.3g} exceeds {MAX_H_OVER_C:.0e}: the layer's correction to the half-space "
+                         "is far below double precision there; solve the half-space (thinlayer.HalfSpace(), with nu=)")
     N = N_given or _default_modes(c_int / H)
     _check_work(layer, H, 0.3 * c_int, c_int + 6.0 * min(H, c_int), N,
                 f"(estimated from the rigid overlap Phi(c) = delta0 = {delta0:.3g})")
@@ -501,6 +517,7 @@ def solve_axisymmetric(layer: LayerKernel, punch: Any, delta0: float, H: float |
 
 
 # --------------------------------------------------------------------------- displacement (check route)
+@boundary
 def surface_displacement(result: AxisymmetricContact, r: Any) -> np.ndarray:
     """Surface displacement u3(r) produced by the computed pressure, by a route independent of the solver.
 
@@ -523,10 +540,10 @@ def surface_displacement(result: AxisymmetricContact, r: Any) -> np.ndarray:
         u3 at ``r``.
     """
     if not isinstance(result, AxisymmetricContact):
-        raise TypeError(f"result must be an AxisymmetricContact, got {type(result).__name__}")
+        raise InputTypeError(f"result must be an AxisymmetricContact, got {type(result).__name__}")
     r = np.atleast_1d(np.asarray(r, dtype=float))
     if np.any(r < 0) or not np.all(np.isfinite(r)):
-        raise ValueError("r must be finite and >= 0")
+        raise InputError("r must be finite and >= 0")
     c, vt = result.radius, result.vartheta
     p = pressure_function(np.asarray(result.coefficients), c)
 

@@ -123,7 +123,8 @@ import sympy as sp
 from scipy import optimize
 
 from .. import symbols as S
-from .._checks import positive
+from .._checks import ComputationError, InputError, InputTypeError, positive
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch
 from ._influence import MAX_BYTES, Convolver, check_n, influence_coefficients, layer_correction_kernel, memory_estimate
@@ -146,7 +147,7 @@ _EDGE_CELLS = 2  # the contact must stay this many cells away from the domain bo
 _MIN_CELLS_ACROSS = 8  # fewer cells across the contact -> CoarseGridWarning
 
 
-class ContactConvergenceError(RuntimeError):
+class ContactConvergenceError(ComputationError, RuntimeError):
     """The Polonsky-Keer iteration did not reach the tolerance; ``.result`` holds the last iterate."""
 
     def __init__(self, message: str, result: Contact2D | None = None):
@@ -159,6 +160,7 @@ class CoarseGridWarning(UserWarning):
 
 
 # --------------------------------------------------------------------------- result
+@boundary_methods
 @dataclass(frozen=True, eq=False)
 class Contact2D:
     """Direct numerical solution of the two-dimensional contact problem (1.5)-(1.8).
@@ -247,15 +249,15 @@ def _numeric_punch(punch: Any) -> tuple[Punch, Callable[[np.ndarray, np.ndarray]
     if isinstance(punch, (str, sp.Basic)):
         punch = Punch(punch)
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
+        raise InputTypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
                         f"got {punch!r} ({type(punch).__name__})")
     if punch.parameters:
         names = ", ".join(str(q) for q in punch.parameters)
-        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
+        raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
                          f"substitute numbers first, e.g. punch.subs({{'{punch.parameters[0]}': 1.0}})")
     coeffs = sp.Poly(punch.expr, S.x1, S.x2).coeffs()
     if not all(c.is_real for c in coeffs):
-        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} has non-real coefficients")
+        raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has non-real coefficients")
     f = punch.lambdify()
 
     def phi(X: np.ndarray, Y: np.ndarray) -> np.ndarray:
@@ -272,7 +274,7 @@ def _overlap_box(punch: Punch, phi: Callable, delta0: float) -> tuple[float, flo
         o = res.x
         val = float(phi(np.array(o[0]), np.array(o[1])))
         if not val < delta0:
-            raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} does not touch the layer: "
+            raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} does not touch the layer: "
                              f"min Phi = {val:.6g} (at x = {o[0]:.6g}, {o[1]:.6g}, found by descent from the origin) "
                              f">= delta0 = {delta0:.6g}; increase delta0, or pass extent= if the contact lies "
                              "elsewhere")
@@ -288,7 +290,7 @@ def _overlap_box(punch: Punch, phi: Callable, delta0: float) -> tuple[float, flo
                 break
             hi *= 1.5
         else:
-            raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} stays below delta0 = {delta0:.6g} "
+            raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} stays below delta0 = {delta0:.6g} "
                              f"along the direction ({c:.3f}, {s:.3f}): the contact region is unbounded; "
                              "solve_2d needs a punch that rises above delta0 all around (or pass extent=)")
         r0 = optimize.brentq(along, 0.0, hi, xtol=1e-13 * hi)
@@ -297,7 +299,7 @@ def _overlap_box(punch: Punch, phi: Callable, delta0: float) -> tuple[float, flo
     radii = np.hypot(pts[:, 0] - o[0], pts[:, 1] - o[1])
     if radii.max() > 1e4 * radii.min():
         k = int(np.argmax(radii))
-        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} leaves an unbounded (or extremely "
+        raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} leaves an unbounded (or extremely "
                          f"elongated) overlap region Phi < delta0 = {delta0:.6g}: it reaches delta0 at distance "
                          f"{radii.min():.3g} in one direction but {radii.max():.3g} along "
                          f"({math.cos(th[k]):.3f}, {math.sin(th[k]):.3f}); pass extent= to solve on a chosen square")
@@ -309,7 +311,7 @@ def _domain(extent: Any, punch: Punch, phi: Callable, delta0: float | None, H: f
     """Return (x1 centre, x2 centre, half-width) of the computational square."""
     if extent is None:
         if delta0 is None:
-            raise ValueError("with a prescribed force the domain cannot be guessed: pass extent= "
+            raise InputError("with a prescribed force the domain cannot be guessed: pass extent= "
                              "(half-width of a square centred at the origin, or (x1min, x1max, x2min, x2max))")
         a0, a1, b0, b1 = _overlap_box(punch, phi, delta0)
         size = max(a1 - a0, b1 - b0)
@@ -320,13 +322,13 @@ def _domain(extent: Any, punch: Punch, phi: Callable, delta0: float | None, H: f
     try:
         a0, a1, b0, b1 = (float(v) for v in extent)
     except (TypeError, ValueError) as exc:
-        raise TypeError(f"extent must be None, a half-width, or (x1min, x1max, x2min, x2max); got {extent!r}"
+        raise InputTypeError(f"extent must be None, a half-width, or (x1min, x1max, x2min, x2max); got {extent!r}"
                         ) from exc
     w1, w2 = a1 - a0, b1 - b0
     if not (math.isfinite(w1) and math.isfinite(w2) and w1 > 0 and w2 > 0):
-        raise ValueError(f"extent {extent!r} is not a non-empty box (x1min, x1max, x2min, x2max)")
+        raise InputError(f"extent {extent!r} is not a non-empty box (x1min, x1max, x2min, x2max)")
     if abs(w1 - w2) > 1e-9 * max(w1, w2):
-        raise ValueError(f"extent must be a square (the grid is N x N with square cells): "
+        raise InputError(f"extent must be a square (the grid is N x N with square cells): "
                          f"widths {w1:.6g} (x1) and {w2:.6g} (x2) differ")
     return 0.5 * (a0 + a1), 0.5 * (b0 + b1), 0.5 * w1
 
@@ -399,16 +401,16 @@ class _Problem:
 def _check_controls(delta0: Any, force: Any, n: Any, tol: Any, maxiter: Any):
     """Checked ``(delta0, force, n, tol, maxiter)``: exactly one of delta0 and force."""
     if (delta0 is None) == (force is None):
-        raise ValueError("give exactly one of delta0 (indentation depth) and force (total load P)")
+        raise InputError("give exactly one of delta0 (indentation depth) and force (total load P)")
     if delta0 is not None:
         delta0 = positive(delta0, "delta0")
     else:
         force = positive(force, "force")
     n = check_n(n)
     if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not 0 < float(tol) < 1:
-        raise ValueError(f"tol must be a number in (0, 1), got {tol!r}")
+        raise InputError(f"tol must be a number in (0, 1), got {tol!r}")
     if isinstance(maxiter, bool) or not isinstance(maxiter, (numbers.Integral, np.integer)) or maxiter < 1:
-        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+        raise InputError(f"maxiter must be a positive integer, got {maxiter!r}")
     return delta0, force, n, float(tol), int(maxiter)
 
 
@@ -417,7 +419,7 @@ def _grid(punch: Punch, phi: Callable, extent: Any, delta0: float | None, H_eff:
     c1, c2, half_w = _domain(extent, punch, phi, delta0, H_eff)
     d = 2.0 * half_w / n
     if H_eff is not None and d > H_eff / _MIN_CELLS_PER_H:
-        raise ValueError(
+        raise InputError(
             f"grid too coarse to resolve the layer: cell size Delta = {d:.4g} > H/{_MIN_CELLS_PER_H:g} = "
             f"{H_eff / _MIN_CELLS_PER_H:.4g} (H = {H_eff:.4g}, domain width {2 * half_w:.4g}, n = {n}); "
             f"use n >= {math.ceil(2 * half_w * _MIN_CELLS_PER_H / H_eff)} or a smaller extent")
@@ -426,7 +428,7 @@ def _grid(punch: Punch, phi: Callable, extent: Any, delta0: float | None, H_eff:
     X1, X2 = np.meshgrid(x1, x2, indexing="ij")
     Phi = phi(X1, X2)
     if not np.all(np.isfinite(Phi)):
-        raise ValueError(f"the punch '{punch.name}' Phi = {punch.expr} is not finite on the grid")
+        raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} is not finite on the grid")
     return x1, x2, d, Phi
 
 
@@ -440,7 +442,7 @@ def _setup(layer: Any, punch: Any, delta0: Any, H: Any, mu: Any, n: Any, extent:
         H_eff = None
     else:
         if H is None:
-            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
+            raise InputError(f"{type(layer).__name__} needs the layer thickness H > 0")
         H = H_eff = positive(H, "H")
     delta0, force, n, tol, maxiter = _check_controls(delta0, force, n, tol, maxiter)
     workers = (os.cpu_count() or 1) if workers is None else int(workers)
@@ -470,7 +472,7 @@ def _iterate(prob: _Problem):
     if prob.force is None:
         w = prob.delta0 - Phi
         if not (w > 0).any():
-            raise ValueError(f"Phi >= delta0 = {prob.delta0:.6g} at every cell centre: no contact on the grid "
+            raise InputError(f"Phi >= delta0 = {prob.delta0:.6g} at every cell centre: no contact on the grid "
                              f"(min Phi = {Phi.min():.6g}); refine the grid or increase delta0")
         box = _overlap_slices(w)
         wb = np.ascontiguousarray(w[box])
@@ -505,7 +507,7 @@ def _check_inside(inside: np.ndarray, x1: np.ndarray, x2: np.ndarray, d: float) 
     ii, jj = np.nonzero(inside)
     near = min(ii.min(), jj.min(), n - 1 - ii.max(), n - 1 - jj.max())
     if near < _EDGE_CELLS:
-        raise ValueError(
+        raise InputError(
             f"the contact reaches the boundary of the computational domain: contact cells span "
             f"x1 in [{x1[ii.min()]:.6g}, {x1[ii.max()]:.6g}], x2 in [{x2[jj.min()]:.6g}, {x2[jj.max()]:.6g}], "
             f"the domain is [{x1[0] - d / 2:.6g}, {x1[-1] + d / 2:.6g}] x [{x2[0] - d / 2:.6g}, "
@@ -538,6 +540,7 @@ def _package(prob: _Problem, p: np.ndarray, g: np.ndarray, iters: int, res: floa
     return result
 
 
+@boundary
 def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: float | None = None,
              mu: float = 1.0, n: int = 256, extent: Any = None, tol: float = 1e-10, maxiter: int = 5000,
              *, force: float | None = None, nu: float | None = None, workers: int | None = None) -> Contact2D:

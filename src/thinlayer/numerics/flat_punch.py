@@ -97,7 +97,7 @@ from typing import Any
 import numpy as np
 from scipy import special
 
-from .._checks import check_bounded, check_choice, check_int, positive
+from .._checks import InputError, InputTypeError, check_bounded, check_choice, check_int, positive
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
 from ._layer import U_MAX, numeric_layer_nu
@@ -157,7 +157,7 @@ class FlatPunchStiffness(RichDisplay):
     def _check_x(self, x: Any) -> np.ndarray:
         x = np.asarray(x, dtype=float)
         if not np.all(np.isfinite(x)) or np.any((x < 0) | (x > 1)):
-            raise ValueError("x must lie in [0, 1] (x = r/a)")
+            raise InputError("x must lie in [0, 1] (x = r/a)")
         return x
 
     def f(self, x: Any) -> np.ndarray:
@@ -179,7 +179,7 @@ class FlatPunchStiffness(RichDisplay):
         """
         x = np.abs(np.atleast_1d(np.asarray(x, dtype=float)))
         if not np.all(np.isfinite(x)):
-            raise ValueError("x must be finite")
+            raise InputError("x must be finite")
         out = np.zeros_like(x)
         inside = x < 1.0
         xi = x[inside]
@@ -264,14 +264,14 @@ class FlatPunchContact(RichDisplay):
 def check_numeric_layer(layer: Any) -> LayerKernel:
     """``layer`` if its kernel ``L(u)`` can be evaluated numerically and tends to 1 (2.4); one-line error otherwise."""
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer LayerKernel (BondedLayer(nu), FrictionlessLayer(), "
+        raise InputTypeError(f"layer must be a thinlayer LayerKernel (BondedLayer(nu), FrictionlessLayer(), "
                         f"IncompressibleLayer(), HalfSpace()), got {layer!r} ({type(layer).__name__})")
     try:
         far = float(np.asarray(layer.L_numeric(np.array([2 * U_MAX]), "numpy"))[0])
     except ValueError as exc:
-        raise ValueError(f"the flat-punch stiffness needs a layer with a numeric kernel L(u): {exc}") from None
+        raise InputError(f"the flat-punch stiffness needs a layer with a numeric kernel L(u): {exc}") from None
     if abs(far - 1.0) > 1e-12:
-        raise ValueError(f"layer kernel must tend to the half-space value L = 1 at large u (2.4); L(44) = {far}")
+        raise InputError(f"layer kernel must tend to the half-space value L = 1 at large u (2.4); L(44) = {far}")
     return layer
 
 
@@ -543,12 +543,12 @@ def solve_flat_punch(layer: LayerKernel, radius: float, H: float | None = None, 
     mu_val = positive(mu, "mu")
     if H is None:
         if layer.has_thickness:
-            raise ValueError(f"{type(layer).__name__} needs the layer thickness H > 0")
+            raise InputError(f"{type(layer).__name__} needs the layer thickness H > 0")
         H_val = a  # ignored by the half-space kernel
     else:
         H_val = positive(H, "H")
     if (w0 is None) == (force is None):
-        raise ValueError("give exactly one of w0 (indentation depth) and force (total force)")
+        raise InputError("give exactly one of w0 (indentation depth) and force (total force)")
     st = flat_punch_kappa(layer, a / H_val, n)
     vt = mu_val / (1.0 - nu_val)
     if w0 is not None:

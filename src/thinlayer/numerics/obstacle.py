@@ -18,7 +18,8 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import check_bounded, parse_nu, positive
+from .._checks import ComputationError, InputError, InputTypeError, check_bounded, parse_nu, positive
+from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ..punch import Punch
 
@@ -35,6 +36,7 @@ RANGE_HINT = ("the incompressible/two-term models need m_1 > 0, so that -m_1 H^2
 # =============================================================================================
 # numerics on a grid: (I.3)-(I.4) and (I.10) for any punch
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class GridContact:
     """Grid solution of the obstacle problem (I.3)-(I.4) / (I.10).
@@ -117,20 +119,20 @@ def _numeric_phi(punch: Any, parameters: dict | None) -> Callable:
     if isinstance(punch, Punch):
         pn = punch.subs(parameters) if parameters else punch
         if pn.parameters:
-            raise ValueError(f"the punch parameters {[q.name for q in pn.parameters]} need values (parameters=...)")
+            raise InputError(f"the punch parameters {[q.name for q in pn.parameters]} need values (parameters=...)")
         f = sp.lambdify((S.x1, S.x2), pn.expr, "numpy")
         return lambda a, b: np.broadcast_to(np.asarray(f(a, b), dtype=float), np.broadcast(a, b).shape)
     if callable(punch):
         if parameters:
-            raise ValueError("parameters= only applies to a Punch")
+            raise InputError("parameters= only applies to a Punch")
         return lambda a, b: np.broadcast_to(np.asarray(punch(a, b), dtype=float), np.broadcast(a, b).shape)
-    raise TypeError(f"punch must be a thinlayer.Punch or a callable Phi(x1, x2), got {type(punch).__name__}")
+    raise InputTypeError(f"punch must be a thinlayer.Punch or a callable Phi(x1, x2), got {type(punch).__name__}")
 
 
 def _default_box(phi: Callable, delta0: float) -> tuple[float, float, float, float]:
     """Twice the bounding box of ``{Phi < delta0}`` (found along 256 rays from the origin)."""
     if not phi(np.array(0.0), np.array(0.0)) < delta0:
-        raise ValueError(f"Phi(0, 0) >= delta0 = {delta0}: the punch does not touch the layer at the origin; "
+        raise InputError(f"Phi(0, 0) >= delta0 = {delta0}: the punch does not touch the layer at the origin; "
                          "give box=(x1min, x1max, x2min, x2max)")
     th = np.linspace(0, 2 * np.pi, 256, endpoint=False)
     c, s = np.cos(th), np.sin(th)
@@ -141,7 +143,7 @@ def _default_box(phi: Callable, delta0: float) -> tuple[float, float, float, flo
             break
         hi = np.where(grow, hi * 2, hi)
     else:
-        raise ValueError("Phi does not reach delta0 along some rays: the contact region is unbounded")
+        raise InputError("Phi does not reach delta0 along some rays: the contact region is unbounded")
     lo = np.zeros_like(th)
     for _ in range(60):
         mid = 0.5 * (lo + hi)
@@ -168,7 +170,7 @@ def _pdas(A, b: np.ndarray, inactive: np.ndarray, maxit: int) -> tuple[np.ndarra
         if np.array_equal(new, inactive):
             return np.maximum(p, 0.0), it
         inactive = new
-    raise RuntimeError(f"the active-set iteration did not converge in {maxit} steps")
+    raise ComputationError(f"the active-set iteration did not converge in {maxit} steps")
 
 
 def _grid_solve(phi, d0, th, c0, c1, H, mu, box, n, maxit, coarsest=41):
@@ -214,14 +216,14 @@ def _layer_of_nu(nu: Any) -> tuple[LayerKernel, str]:
 def _model_floats(layer: Any) -> tuple[float, float, float, float]:
     """``(nu, c_0, c_1, vartheta/mu)`` of the model (I.3)/(I.10) for a numeric bonded layer, 1/4 < nu <= 1/2."""
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
+        raise InputTypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
                         f"got {layer!r}")
     if layer.base != "bonded" or layer.symbolic_coefficients or not layer.has_thickness:
-        raise ValueError(f"the grid model needs BondedLayer(nu) (1/4 < nu < 1/2) or IncompressibleLayer(), "
+        raise InputError(f"the grid model needs BondedLayer(nu) (1/4 < nu < 1/2) or IncompressibleLayer(), "
                          f"got {layer!r}")
     nv = layer.numeric_nu
     if nv is None:
-        raise TypeError(f"a numeric Poisson ratio in (1/4, 1/2] is needed here (e.g. BondedLayer(0.49)), "
+        raise InputTypeError(f"a numeric Poisson ratio in (1/4, 1/2] is needed here (e.g. BondedLayer(0.49)), "
                         f"got the symbolic {layer!r}")
     parse_nu(nv, floats="float", lower=QUARTER, upper_closed=True, range_hint=RANGE_HINT)
     c0, c1 = (float(c) for c in layer.taylor_coefficients(1))
@@ -232,10 +234,10 @@ def _old_call(layer: Any, punch: Any, delta0: Any, H: Any, mu: Any, nu: Any) -> 
     """``(layer, punch, delta0, H, mu)`` from the deprecated ``solve_obstacle_grid(punch, delta0, H, mu, nu=...)``."""
     if isinstance(layer, LayerKernel):
         if nu is not None:
-            raise TypeError("nu= belongs to the deprecated form solve_obstacle_grid(punch, delta0, H, nu=...); "
+            raise InputTypeError("nu= belongs to the deprecated form solve_obstacle_grid(punch, delta0, H, nu=...); "
                             "pass the layer only: solve_obstacle_grid(BondedLayer(nu), punch, delta0, H)")
         if delta0 is None or H is None:
-            raise TypeError("solve_obstacle_grid(layer, punch, delta0, H, mu=1.0): delta0 and H are required")
+            raise InputTypeError("solve_obstacle_grid(layer, punch, delta0, H, mu=1.0): delta0 and H are required")
         return layer, punch, delta0, H, mu
     # the punch came first: (punch, delta0, H[, mu]) shifted by one place
     new_layer, new = _layer_of_nu(sp.Rational(1, 2) if nu is None else nu)
@@ -251,12 +253,13 @@ def _check_box(box: Any, phi: Callable, d0: float) -> tuple[float, float, float,
     try:
         bx = tuple(float(v) for v in box)
     except (TypeError, ValueError) as exc:
-        raise ValueError(f"box must be (x1min, x1max, x2min, x2max), got {box!r}") from exc
+        raise InputError(f"box must be (x1min, x1max, x2min, x2max), got {box!r}") from exc
     if len(bx) != 4 or not (bx[0] < bx[1] and bx[2] < bx[3]) or not all(map(math.isfinite, bx)):
-        raise ValueError(f"box must be (x1min, x1max, x2min, x2max) with min < max, got {box!r}")
+        raise InputError(f"box must be (x1min, x1max, x2min, x2max) with min < max, got {box!r}")
     return bx
 
 
+@boundary
 def solve_obstacle_grid(layer: LayerKernel, punch: Any, delta0: float | None = None, H: float | None = None,
                         mu: float = 1.0, *, n: int = 161, box: Any = None, parameters: dict | None = None,
                         maxit: int = 500, nu: Any = None) -> GridContact:
@@ -304,19 +307,19 @@ def solve_obstacle_grid(layer: LayerKernel, punch: Any, delta0: float | None = N
     d0, HH, mm = (positive(v, nm) for v, nm in ((delta0, "delta0"), (H, "H"), (mu, "mu")))
     nv, c0, c1, th = _model_floats(layer)
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 21 or n % 2 == 0:
-        raise ValueError(f"n (nodes per side) must be an odd integer >= 21, got {n!r}")
+        raise InputError(f"n (nodes per side) must be an odd integer >= 21, got {n!r}")
     check_bounded(int(n), "n (nodes per side)", MAX_NODES, "each active-set step is a sparse LU solve of (n-2)^2 "
                   "unknowns: n = 161 takes 2.1 s, n = 321 10 s, and the cost grows like n^3")
     if isinstance(maxit, bool) or not isinstance(maxit, int) or maxit < 1:
-        raise ValueError(f"maxit must be a positive integer, got {maxit!r}")
+        raise InputError(f"maxit must be a positive integer, got {maxit!r}")
     phi = _numeric_phi(punch, parameters)
     bx = _check_box(box, phi, d0)
     P, x1, x2, f, its, k2 = _grid_solve(phi, d0, th, c0, c1, HH, mm, bx, int(n), maxit)
     contact = P > 0
     if contact[:3, :].any() or contact[-3:, :].any() or contact[:, :3].any() or contact[:, -3:].any():
-        raise ValueError(f"the contact region reaches the boundary of the box {bx}: pass a larger box=")
+        raise InputError(f"the contact region reaches the boundary of the box {bx}: pass a larger box=")
     if not contact.any():
-        raise ValueError("no contact: the pressure vanishes on the grid (is delta0 > min Phi?)")
+        raise InputError("no contact: the pressure vanishes on the grid (is delta0 > min Phi?)")
     h1, h2 = x1[1] - x1[0], x2[1] - x2[0]
     fin = f[contact[1:-1, 1:-1]]
     vol = float(fin.sum() / np.abs(fin).sum())

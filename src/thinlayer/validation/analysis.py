@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from .._checks import InputError
 from .cases import ORDER_TOLERANCE, ORDERS, ContourData, PressureProfile, ValidationRow, jsonable
 from .plots import figure_files, plot_study
 
@@ -173,7 +174,7 @@ class ValidationStudy:
         quantities = tuple(ORDERS) if quantities is None else tuple(quantities)
         for q in quantities:
             if q not in ORDERS:
-                raise ValueError(f"unknown quantity {q!r}; known: {', '.join(ORDERS)}")
+                raise InputError(f"unknown quantity {q!r}; known: {', '.join(ORDERS)}")
         fits = []
         for (shape, nu), rows in self.groups().items():
             for q in quantities:

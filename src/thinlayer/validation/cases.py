@@ -41,7 +41,7 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import check_list, parse_nu
+from .._checks import InputError, InputTypeError, check_list, parse_nu
 
 __all__ = [
     "CLAIMED_ORDERS",
@@ -259,7 +259,7 @@ class ValidationRow:
             return self.area_numeric_error
         if quantity == "pressure":
             return self.pressure_numeric_error
-        raise ValueError(f"unknown quantity {quantity!r}; known: {', '.join(self.errors())}")
+        raise InputError(f"unknown quantity {quantity!r}; known: {', '.join(self.errors())}")
 
     def resolved(self, quantity: str) -> bool:
         """True when the numerical error estimate is below ``|asymptotic error| / RESOLUTION``."""
@@ -338,7 +338,7 @@ def check_nu(nu: Any) -> float:
     0.3
     """
     if isinstance(nu, bool) or not isinstance(nu, numbers.Real):
-        raise TypeError(f"nu must be a real number in (-1, 1/2), got {nu!r} ({type(nu).__name__})")
+        raise InputTypeError(f"nu must be a real number in (-1, 1/2), got {nu!r} ({type(nu).__name__})")
     return float(parse_nu(nu, floats="float", symbols=False,
                           range_hint="the validation study covers the compressible layer"))
 
@@ -368,11 +368,11 @@ def check_ratio(eps: Any) -> float:
     0.1
     """
     if isinstance(eps, bool) or not isinstance(eps, numbers.Real):
-        raise TypeError(f"H/a must be a real number in [{H_OVER_A_RANGE[0]}, {H_OVER_A_RANGE[1]}], got {eps!r}")
+        raise InputTypeError(f"H/a must be a real number in [{H_OVER_A_RANGE[0]}, {H_OVER_A_RANGE[1]}], got {eps!r}")
     v = float(eps)
     lo, hi = H_OVER_A_RANGE
     if not (lo * (1 - 1e-9) <= v <= hi * (1 + 1e-9)):
-        raise ValueError(f"H/a = {eps!r} is outside the validated range [{lo}, {hi}]: above, the remainders "
+        raise InputError(f"H/a = {eps!r} is outside the validated range [{lo}, {hi}]: above, the remainders "
                          f"are no longer small; below, the direct numerics become too expensive")
     return v
 
@@ -401,7 +401,7 @@ def check_ratios(values: Any, name: str = "ratios") -> tuple[float, ...]:
 
 def _check_shape(shape: Any) -> str:
     if shape not in SHAPES:
-        raise ValueError(f"unknown shape {shape!r}: choose from {', '.join(SHAPES)}")
+        raise InputError(f"unknown shape {shape!r}: choose from {', '.join(SHAPES)}")
     return shape
 
 
@@ -429,7 +429,7 @@ def bonded_layer(nu: float):
     """The bonded layer of the study at ``nu`` (an exact rational close to the float)."""
     from ..layers.kernels import BondedLayer
 
-    return BondedLayer(str(Fraction(float(nu)).limit_denominator(10**6)))
+    return BondedLayer(Fraction(float(nu)).limit_denominator(10**6))  # exact, no text round trip
 
 
 def _second_order(layer: Any, punch: Any, H: float) -> Any:
@@ -555,7 +555,7 @@ def elliptic_grid(H_over_a: float, cells_per_H: float = 8.0) -> tuple[int, int, 
     """
     eps = check_ratio(H_over_a)
     if not (isinstance(cells_per_H, numbers.Real) and cells_per_H >= 6.0):
-        raise ValueError(f"cells_per_H must be a number >= 6 (the coarse grid of the error estimate has "
+        raise InputError(f"cells_per_H must be a number >= 6 (the coarse grid of the error estimate has "
                          f"{_COARSE_CELLS_PER_H:g}, the 2D solver's limit), got {cells_per_H!r}")
     a1, _, _, _, a = _ellipse_geometry()
     H = eps * a

@@ -11,6 +11,8 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
+from ..errors import InputError
+
 __all__ = ["EXIT_INTERRUPTED", "add_cli", "cli"]
 
 #: exit code after Ctrl-C (128 + SIGINT), partial results written
@@ -76,9 +78,9 @@ def _floats(text: str | None, name: str) -> tuple[float, ...] | None:
         try:
             out.append(float(Fraction(item)) if "/" in item else float(item))
         except (ValueError, ZeroDivisionError) as exc:
-            raise ValueError(f"--{name} {text!r}: {item!r} is not a number") from exc
+            raise InputError(f"--{name} {text!r}: {item!r} is not a number") from exc
     if not out:
-        raise ValueError(f"--{name} {text!r}: give comma-separated numbers")
+        raise InputError(f"--{name} {text!r}: give comma-separated numbers")
     return tuple(out)
 
 
@@ -96,7 +98,7 @@ def cli(args: Any) -> int:
         The exit code: 0 ok, 1 an observed order or the h^* check does not match, 130 interrupted.
     """
     if args.plots and not args.out:
-        raise ValueError("--plots needs --out DIR (the folder for the PNG and PDF files)")
+        raise InputError("--plots needs --out DIR (the folder for the PNG and PDF files)")
     if args.out:  # refuse before the study runs, not after minutes of work
         from .output import refuse_existing
         from .plots import figure_files

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .._checks import positive
+from .._checks import InputError, positive
 from ..asymptotics.force_law import force_law
 from ..asymptotics.incompressible import (
     IncompressibleLayer,
@@ -71,7 +71,7 @@ class SphereModels:
     def errors(self) -> dict[str, tuple[float, float]]:
         """Relative errors ``(P/P_direct - 1, c/c_direct - 1)`` of each model (needs ``direct``)."""
         if self.direct is None:
-            raise ValueError("no direct solution: call compare_sphere_models(..., direct=True)")
+            raise InputError("no direct solution: call compare_sphere_models(..., direct=True)")
         out = {}
         for name in ("compressible", "incompressible", "two_term"):
             v = getattr(self, name)

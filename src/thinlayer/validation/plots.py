@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._checks import InputError
 from .cases import CLAIMED_ORDERS, SHAPES
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -138,9 +139,9 @@ def plot_study(study: ValidationStudy, directory: Path, stem: str, formats: tupl
     """
     bad = [f for f in formats if f not in ("png", "pdf", "svg")]
     if bad or not formats:
-        raise ValueError(f"plot formats must be among png, pdf, svg; got {formats!r}")
+        raise InputError(f"plot formats must be among png, pdf, svg; got {formats!r}")
     if not study.rows:
-        raise ValueError("the study has no rows to plot")
+        raise InputError("the study has no rows to plot")
     _figure()  # raises the ImportError naming the extra before any file is touched
     from .output import refuse_existing
 

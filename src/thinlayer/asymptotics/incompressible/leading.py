@@ -18,7 +18,7 @@ import numpy as np
 import sympy as sp
 
 from ... import symbols as S
-from ..._checks import positive
+from ..._checks import InputError, InputTypeError, positive
 from ...display import RichDisplay, fmt
 from ...layers.kernels import IncompressibleLayer
 from ...normal import normal_latex
@@ -152,7 +152,7 @@ class IncompressibleEllipse(RichDisplay):
         for sym, val, nm in ((self.R1, R1, "R1"), (self.R2, R2, "R2")):
             if isinstance(sym, sp.Symbol):
                 if val is None:
-                    raise ValueError(f"{nm} is symbolic in this result: pass {nm}=<positive number>")
+                    raise InputError(f"{nm} is symbolic in this result: pass {nm}=<positive number>")
                 sub[sym] = positive(val, nm)
         keys = tuple(sorted(sub, key=str))
         t_of, rest = _ellipse_functions(self, keys)  # compiled once per result and set of symbols
@@ -369,13 +369,13 @@ class IncompressibleRadial(RichDisplay):
         for k, v in (parameters or {}).items():
             nm = k if isinstance(k, str) else getattr(k, "name", None)
             if nm not in by_name:
-                raise ValueError(f"{k!r} is not a parameter of the punch; its parameters are "
+                raise InputError(f"{k!r} is not a parameter of the punch; its parameters are "
                                  f"{', '.join(by_name) or 'none'}")
             sub[by_name[nm]] = v
         # G(c) = c^2 (delta0 - Phi(0))/2 + ...: divide out the double root c = 0
         G = sp.Poly(sp.quo(sp.expand(self.radius_equation.subs(sub)), c_sym**2, c_sym), c_sym)
         if G.free_symbols - {c_sym}:
-            raise ValueError(f"the punch parameters {sorted(map(str, G.free_symbols - {c_sym}))} need values "
+            raise InputError(f"the punch parameters {sorted(map(str, G.free_symbols - {c_sym}))} need values "
                              "(parameters={...})")
         roots = sorted(float(z.real) for z in np.roots([float(x) for x in G.all_coeffs()])
                        if abs(z.imag) < 1e-9 * max(1.0, abs(z)) and z.real > 0)
@@ -390,7 +390,7 @@ class IncompressibleRadial(RichDisplay):
                     return np.where(r < _c, _f(np.minimum(r, _c), _c) + 0 * r, 0.0)
 
                 return RadialValues(c, force, pressure)
-        raise ValueError("no contact radius with a non-negative pressure: is Phi increasing with Phi(0) < delta0?")
+        raise InputError("no contact radius with a non-negative pressure: is Phi increasing with Phi(0) < delta0?")
 
 
 def incompressible_axisymmetric(punch: Punch) -> IncompressibleRadial:
@@ -416,7 +416,7 @@ def incompressible_axisymmetric(punch: Punch) -> IncompressibleRadial:
     [2*sqrt(R)*sqrt(delta_0)]
     """
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
+        raise InputTypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
     ang = sp.expand(S.x1 * sp.diff(punch.expr, S.x2) - S.x2 * sp.diff(punch.expr, S.x1))
     if ang != 0:
         raise PunchError(f"the punch Phi = {punch.expr} is not axisymmetric (x1 dPhi/dx2 - x2 dPhi/dx1 = {ang}); "

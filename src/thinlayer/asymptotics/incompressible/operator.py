@@ -19,10 +19,12 @@ from typing import Any
 import sympy as sp
 
 from ... import symbols as S
-from ..._checks import check_order, parse_nu
+from ..._checks import InputError, InputTypeError, check_order, parse_nu
 from ...display import RichDisplay, fmt
+from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...normal import join_signed, normal_latex
+from ...parse import sympy_value
 from ...punch import Punch
 from ...results import checked_lambdify, latex_equation
 from ...symbols import laplacian
@@ -48,6 +50,7 @@ RANGE_HINT = ("the incompressible/two-term models need m_1 > 0, so that -m_1 H^2
 # =============================================================================================
 # (I.2) the operator series
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class ThinLayerOperator(RichDisplay):
     """The thin-layer operator (2.22)-(2.23) in dimensional form (I.2)::
@@ -84,6 +87,8 @@ class ThinLayerOperator(RichDisplay):
     def apply_scaled(self, f: sp.Expr, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2,
                      Lam: sp.Expr = S.Lambda) -> sp.Expr:
         """The operator series (2.23) on a density ``f(xi)``: ``sum_n w_n Lambda^{-2n-2} Delta^n f``."""
+        f, v1, v2, Lam = (sympy_value(f, "f"), sympy_value(v1, "v1", symbol=True),
+                         sympy_value(v2, "v2", symbol=True), sympy_value(Lam, "Lam"))
         return sp.Add(*[w * Lam ** (-2 * n - 2) * laplacian(f, v1, v2, n) for n, w in enumerate(self.weights())])
 
     def pairing(self, phi: sp.Expr, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2,
@@ -92,6 +97,8 @@ class ThinLayerOperator(RichDisplay):
 
         Comparing it with :meth:`apply_scaled` checks the moments against the Laplacian form (2.22).
         """
+        phi, v1, v2, Lam = (sympy_value(phi, "phi"), sympy_value(v1, "v1", symbol=True),
+                         sympy_value(v2, "v2", symbol=True), sympy_value(Lam, "Lam"))
         terms = []
         for total in range(2 * self.order + 2):
             for a1 in range(total + 1):
@@ -106,6 +113,7 @@ class ThinLayerOperator(RichDisplay):
 
     def apply(self, p: sp.Expr, v1: sp.Symbol = S.x1, v2: sp.Symbol = S.x2) -> sp.Expr:
         """``u_3`` of (I.2) for a pressure ``p(x1, x2)`` (dimensional)."""
+        p, v1, v2 = sympy_value(p, "p"), sympy_value(v1, "v1", symbol=True), sympy_value(v2, "v2", symbol=True)
         return self.vartheta ** -1 * sp.Add(*[(-1) ** n * cn * S.H ** (2 * n + 1) * laplacian(p, v1, v2, n)
                                              for n, cn in enumerate(self.c)])
 
@@ -115,7 +123,7 @@ class ThinLayerOperator(RichDisplay):
             if cn != 0:
                 pf = p_fun(S.x1, S.x2)
                 return sp.factor((-1) ** n * cn * S.H ** (2 * n + 1) / self.vartheta) * laplacian(pf, S.x1, S.x2, n)
-        raise ValueError(f"all coefficients c_0..c_{self.order} vanish; raise the order")
+        raise InputError(f"all coefficients c_0..c_{self.order} vanish; raise the order")
 
     def latex(self) -> str:
         """The operator (I.2) as a tagged LaTeX line."""
@@ -148,6 +156,7 @@ class ThinLayerOperator(RichDisplay):
         return checked_lambdify([prm] if prm is not None else [], list(self.c), backend)
 
 
+@boundary
 def thin_layer_operator(layer: LayerKernel, order: int = 1) -> ThinLayerOperator:
     """The operator series (I.2) through ``Delta^order``, from the moment expansion (2.22).
 
@@ -168,7 +177,7 @@ def thin_layer_operator(layer: LayerKernel, order: int = 1) -> ThinLayerOperator
     -H**3*(Derivative(p(x_1, x_2), (x_1, 2)) + Derivative(p(x_1, x_2), (x_2, 2)))/(3*mu)
     """
     if not isinstance(layer, LayerKernel):
-        raise TypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
+        raise InputTypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
                         f"got {layer!r}")
     order = check_order(order, "order")
     return ThinLayerOperator(layer, order, layer.taylor_coefficients(order))
@@ -243,15 +252,15 @@ def model_layer(layer: Any, call: str, numeric: bool = False) -> tuple[LayerKern
     elif not isinstance(layer, LayerKernel):
         layer = layer_from_nu(layer, call, stacklevel=4)
     if layer.base != "bonded" or layer.symbolic_coefficients or not layer.has_thickness:
-        raise ValueError(f"the incompressible/two-term models need a layer bonded to a rigid base, "
+        raise InputError(f"the incompressible/two-term models need a layer bonded to a rigid base, "
                          f"{call.format(layer='BondedLayer(nu)')} (1/4 < nu < 1/2) or "
                          f"{call.format(layer='IncompressibleLayer()')}; got {layer!r}")
     nu = model_nu(layer)
     if not isinstance(nu, sp.Symbol) and not nu.is_number:
-        raise ValueError(f"a symbolic layer of the models must have the parameter nu: BondedLayer(), got {layer!r}")
+        raise InputError(f"a symbolic layer of the models must have the parameter nu: BondedLayer(), got {layer!r}")
     if isinstance(nu, sp.Symbol):
         if numeric:
-            raise TypeError(f"a numeric Poisson ratio in (1/4, 1/2] is needed here "
+            raise InputTypeError(f"a numeric Poisson ratio in (1/4, 1/2] is needed here "
                             f"(e.g. {call.format(layer='BondedLayer(0.49)')}), got the symbolic {layer!r}")
     else:
         parse_nu(nu, floats="Float", lower=QUARTER, upper_closed=True, range_hint=RANGE_HINT)
@@ -271,6 +280,7 @@ def model_coefficients(layer: LayerKernel, nu: sp.Basic) -> tuple[sp.Expr, sp.Ex
 # =============================================================================================
 # (I.3), (I.4), (I.10): the free-boundary problem
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class ObstacleProblem(RichDisplay):
     """The thin-layer free-boundary problem for one punch, (I.3)-(I.4) at ``nu = 1/2``, (I.10) below::
@@ -317,12 +327,14 @@ class ObstacleProblem(RichDisplay):
 
     def residual(self, p: sp.Expr) -> sp.Expr:
         """``-Delta p + k^2 p - f`` for a candidate pressure ``p(x1, x2)`` (zero inside the contact)."""
+        p = sympy_value(p, "p")
         return -laplacian(p, S.x1, S.x2) + self.k2 * p - self.source
 
     def boundary_values(self, p: sp.Expr, x1: sp.Expr, x2: sp.Expr) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """``(p, dp/dx1, dp/dx2)`` at a point -- all three vanish on the contour (I.4)."""
-        at = {S.x1: x1, S.x2: x2}
-        return p.subs(at), sp.diff(p, S.x1).subs(at), sp.diff(p, S.x2).subs(at)
+        p = sympy_value(p, "p")
+        at = {S.x1: sympy_value(x1, "x1"), S.x2: sympy_value(x2, "x2")}
+        return p.xreplace(at), sp.diff(p, S.x1).xreplace(at), sp.diff(p, S.x2).xreplace(at)
 
     @property
     def arguments(self) -> tuple[sp.Symbol, ...]:
@@ -363,6 +375,7 @@ class ObstacleProblem(RichDisplay):
         return out
 
 
+@boundary
 def obstacle_problem(layer: LayerKernel, punch: Punch | None = None, nu: Any = None) -> ObstacleProblem:
     """The free-boundary problem (I.3)-(I.4) (``nu = 1/2``) or the two-term problem (I.10) (``1/4 < nu < 1/2``).
 
@@ -393,10 +406,10 @@ def obstacle_problem(layer: LayerKernel, punch: Punch | None = None, nu: Any = N
         old = punch if punch is not None else (HALF if nu is None else nu)
         layer, punch = layer_from_nu(old, "obstacle_problem({layer}, punch)"), layer
     elif nu is not None:
-        raise TypeError("nu= belongs to the deprecated form obstacle_problem(punch, nu); "
+        raise InputTypeError("nu= belongs to the deprecated form obstacle_problem(punch, nu); "
                         "pass the layer only: obstacle_problem(BondedLayer(nu), punch)")
     if not isinstance(punch, Punch):
-        raise TypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
+        raise InputTypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
     layer, nv = model_layer(layer, "obstacle_problem({layer}, punch)")
     c0, c1, th = model_coefficients(layer, nv)
     f = th * (S.delta0 - punch.expr) / (c1 * S.H**3)

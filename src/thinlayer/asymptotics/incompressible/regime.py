@@ -10,8 +10,9 @@ from typing import Any
 import sympy as sp
 
 from ... import symbols as S
-from ..._checks import parse_nu, positive
+from ..._checks import InputTypeError, parse_nu, positive
 from ...display import RichDisplay
+from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...results import checked_lambdify
 
@@ -21,6 +22,7 @@ __all__ = ["Regime", "regime"]
 # =============================================================================================
 # (I.13): which model where
 # =============================================================================================
+@boundary_methods
 @dataclass(frozen=True)
 class Regime(RichDisplay):
     """Where the compressible expansion and the incompressible model hold (I.13).
@@ -91,6 +93,7 @@ def _regime_layer(layer: Any) -> LayerKernel:
     return out
 
 
+@boundary
 def regime(layer: LayerKernel, H_over_a: float, tol: float = 0.05) -> Regime:
     """Which thin-layer model to use for a layer at ``H/a`` (I.13).
 
@@ -123,7 +126,7 @@ def regime(layer: LayerKernel, H_over_a: float, tol: float = 0.05) -> Regime:
     layer = _regime_layer(layer)
     nv = layer.numeric_nu
     if nv is None or layer.base != "bonded" or not layer.has_thickness:
-        raise TypeError(f"regime needs a numeric bonded layer, BondedLayer(nu) or IncompressibleLayer(), "
+        raise InputTypeError(f"regime needs a numeric bonded layer, BondedLayer(nu) or IncompressibleLayer(), "
                         f"got {layer!r}")
     c0, c1 = layer.taylor_coefficients(1)
     m1 = math.inf if c0 == 0 else float(c1 / c0)  # m_1 = c_1/c_0 (2.20); A = 0 at nu = 1/2

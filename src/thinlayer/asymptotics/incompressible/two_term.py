@@ -19,9 +19,10 @@ import numpy as np
 import sympy as sp
 
 from ... import symbols as S
-from ..._checks import positive
+from ..._checks import InputError, InputTypeError, positive
 from ..._series import quotient_field
 from ...display import RichDisplay, fmt
+from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...normal import normal_latex
 from ...punch import Punch
@@ -105,7 +106,7 @@ def two_term_edge_shift(layer: LayerKernel | None = None, dps: int = 20) -> mpma
     """
     layer, nv = model_layer(layer, "two_term_edge_shift({layer})", numeric=True)
     if isinstance(dps, bool) or not isinstance(dps, int) or dps < 10:
-        raise ValueError(f"dps must be an integer >= 10, got {dps!r}")
+        raise InputError(f"dps must be an integer >= 10, got {dps!r}")
     key = "1/2" if nv == HALF else (str(nv) if isinstance(nv, sp.Rational) else repr(float(nv)))
     with mpmath.workdps(dps):
         return +_edge_shift_cached(key, dps)
@@ -207,7 +208,7 @@ def _psi_chi(x: Any) -> tuple[np.ndarray, np.ndarray]:
 
     x = np.asarray(x, dtype=float)
     if np.any(x < 0) or not np.all(np.isfinite(x)):
-        raise ValueError("x = k c must be finite and >= 0")
+        raise InputError("x = k c must be finite and >= 0")
     q = _ratio_series()
     y = x * x
     small = x < _SERIES_CUT
@@ -226,7 +227,7 @@ def _psi_chi(x: Any) -> tuple[np.ndarray, np.ndarray]:
 def _psi_chi_scalar(x: float) -> tuple[float, float]:
     """:func:`_psi_chi` for one float, without array overhead (the same Horner sums, term by term)."""
     if not (x >= 0 and math.isfinite(x)):
-        raise ValueError("x = k c must be finite and >= 0")
+        raise InputError("x = k c must be finite and >= 0")
     if x < _SERIES_CUT:
         q = _ratio_series_list()
         y = x * x
@@ -249,6 +250,7 @@ def _ratio_series_list() -> list:
     return [float(v) for v in _ratio_series()]
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class SphereValues:
     """Numbers of a sphere model: contact radius (model edge and corrected by (I.12)) and force."""
@@ -273,6 +275,7 @@ class SphereValues:
 k_sym = sp.Symbol("k", positive=True)
 
 
+@boundary_methods
 @dataclass(frozen=True)
 class TwoTermSphere(RichDisplay):
     """The two-term model (I.10) for the sphere ``Phi = r^2/(2R)``, in parametric form in the radius c (I.11).
@@ -358,7 +361,7 @@ class TwoTermSphere(RichDisplay):
         from scipy import optimize
 
         if isinstance(self.nu, sp.Symbol):
-            raise TypeError(f"evaluate needs a numeric nu, not the symbol {self.nu}: "
+            raise InputTypeError(f"evaluate needs a numeric nu, not the symbol {self.nu}: "
                             "build two_term_sphere(BondedLayer(0.49))")
         d0, RR, HH, mm = (positive(v, n) for v, n in ((delta0, "delta0"), (R, "R"), (H, "H"), (mu, "mu")))
         c0, c1, th = float(self.c0), float(self.c1), float(self.vartheta / S.mu)
@@ -436,6 +439,7 @@ def _two_term_sphere(layer: LayerKernel) -> TwoTermSphere:
                          force.subs(F, Fv))
 
 
+@boundary
 def two_term_sphere(layer: LayerKernel | None = None) -> TwoTermSphere:
     """The sphere in the two-term model (I.10)/(I.11): ``delta0(c)``, ``P(c)``, ``p(r)`` in closed form.
 

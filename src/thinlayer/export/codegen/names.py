@@ -14,6 +14,8 @@ from typing import Any
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.rust import RustCodePrinter
 
+from ..._checks import InputError
+
 #: The languages :func:`~thinlayer.export.codegen.generate` knows, in the order ``generate_all`` uses.
 LANGUAGES = ("c", "fortran", "rust", "julia", "octave", "python")
 
@@ -24,7 +26,7 @@ _CASE_INSENSITIVE = frozenset({"fortran"})
 _MAX_LENGTH = {"fortran": 63}  # Fortran 2003 limit, accepted by every current compiler
 
 
-class NameCollisionError(ValueError):
+class NameCollisionError(InputError):
     """Two different names of the generated code map to the same identifier of the language."""
 
 
@@ -159,7 +161,7 @@ def check_language(language: Any) -> str:
     if lang in ("matlab", "m"):
         lang = "octave"
     if lang not in LANGUAGES:
-        raise ValueError(f"unknown language {language!r}; valid languages are {', '.join(LANGUAGES)} "
+        raise InputError(f"unknown language {language!r}; valid languages are {', '.join(LANGUAGES)} "
                          f"('matlab' is an alias of 'octave')")
     return lang
 
@@ -180,14 +182,14 @@ def check_function_name(name: Any, language: str) -> str:
         ``name``.
     """
     if not isinstance(name, str) or not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name):
-        raise ValueError(f"function name {name!r} is not a valid identifier: use ASCII letters, digits "
+        raise InputError(f"function name {name!r} is not a valid identifier: use ASCII letters, digits "
                          f"and '_', starting with a letter (it also names the generated files)")
     if _key(name, language) in _RESERVED[language]:
-        raise ValueError(f"function name {name!r} is reserved in {LANGUAGE_LABEL[language]} (a keyword or a "
+        raise InputError(f"function name {name!r} is reserved in {LANGUAGE_LABEL[language]} (a keyword or a "
                          f"name the generated code uses); choose another name")
     limit = _MAX_LENGTH.get(language)
     if limit and len(name) > limit:
-        raise ValueError(f"function name {name!r} has {len(name)} characters; {LANGUAGE_LABEL[language]} "
+        raise InputError(f"function name {name!r} has {len(name)} characters; {LANGUAGE_LABEL[language]} "
                          f"allows at most {limit}")
     return name
 
@@ -216,5 +218,5 @@ def check_collisions(entries: list[tuple[str, str]], language: str) -> None:
     if limit:
         long = [ident for ident, _ in entries if len(ident) > limit]
         if long:
-            raise ValueError(f"identifier(s) {long} longer than {limit} characters, the "
+            raise InputError(f"identifier(s) {long} longer than {limit} characters, the "
                              f"{LANGUAGE_LABEL[language]} limit")

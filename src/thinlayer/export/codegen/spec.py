@@ -13,6 +13,7 @@ from typing import Any, Protocol, runtime_checkable
 
 import sympy as sp
 
+from ..._checks import InputError
 from ...parse import as_expr
 from ...results import MissingArgumentError
 
@@ -59,16 +60,16 @@ def _snake(name: str) -> str:
 # Bad input of any kind raises ValueError (issue 5 asks for it), also for a wrong type: hence noqa TRY004.
 def _as_expr(x: Any, what: str) -> sp.Expr:
     if isinstance(x, (bool, str)):
-        raise ValueError(f"{what} is {x!r} ({type(x).__name__}); pass a sympy expression "  # noqa: TRY004
+        raise InputError(f"{what} is {x!r} ({type(x).__name__}); pass a sympy expression "  # noqa: TRY004
                          f"(strings are not parsed: use thinlayer.parse.parse_expression)")
     if isinstance(x, (int, float)):
         return as_expr(x)
     if not isinstance(x, sp.Expr):
-        raise ValueError(f"{what} is a {type(x).__name__}, not a sympy expression")  # noqa: TRY004
+        raise InputError(f"{what} is a {type(x).__name__}, not a sympy expression")  # noqa: TRY004
     if x.has(sp.I) or any(a.is_real is False for a in x.atoms(sp.Symbol)):
-        raise ValueError(f"{what} is complex ({x}); generated code works with real doubles")
+        raise InputError(f"{what} is complex ({x}); generated code works with real doubles")
     if x.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
-        raise ValueError(f"{what} contains an infinity or NaN: {x}")
+        raise InputError(f"{what} contains an infinity or NaN: {x}")
     return x
 
 
@@ -77,32 +78,32 @@ def _as_args(args: Any) -> tuple[sp.Symbol, ...]:
         args = (args,)
     if isinstance(args, (str, bytes)) or not isinstance(args, Sequence):
         msg = f"args must be a sequence of sympy Symbols in call order, got {args!r}"
-        raise ValueError(msg)  # noqa: TRY004
+        raise InputError(msg)  # noqa: TRY004
     args = tuple(args)
     for a in args:
         if not isinstance(a, sp.Symbol):
             msg = f"every argument must be a sympy Symbol, got {a!r} ({type(a).__name__})"
-            raise ValueError(msg)  # noqa: TRY004
+            raise InputError(msg)  # noqa: TRY004
         if a.is_real is False:
-            raise ValueError(f"argument {a} is declared non-real; generated code takes real doubles")
+            raise InputError(f"argument {a} is declared non-real; generated code takes real doubles")
     if len(set(args)) != len(args):
-        raise ValueError(f"args repeat a symbol: {', '.join(a.name for a in args)}")
+        raise InputError(f"args repeat a symbol: {', '.join(a.name for a in args)}")
     return args
 
 
 def _outputs_from(obj: Any, what: str) -> tuple[tuple[str, sp.Expr], ...]:
     if isinstance(obj, Mapping):
         if not obj:
-            raise ValueError(f"{what}: no outputs given")
+            raise InputError(f"{what}: no outputs given")
         outs = []
         for k, v in obj.items():
             if not isinstance(k, str):
-                raise ValueError(f"{what}: output names must be strings, got {k!r}")  # noqa: TRY004
+                raise InputError(f"{what}: output names must be strings, got {k!r}")  # noqa: TRY004
             outs.append((k, _as_expr(v, f"output {k!r}")))
         return tuple(outs)
     if isinstance(obj, (list, tuple)):
         if not obj:
-            raise ValueError(f"{what}: no expressions given")
+            raise InputError(f"{what}: no expressions given")
         return tuple((f"value_{i}", _as_expr(v, f"expression {i}")) for i, v in enumerate(obj))
     return (("value", _as_expr(obj, what)),)
 
@@ -116,7 +117,7 @@ def _protocol_spec(result: Any, hook: Any, args: Any) -> Spec:
     """The spec of a :class:`CodegenResult`: its ``codegen_expressions()``."""
     got = hook()
     if not (isinstance(got, tuple) and len(got) == 2 and isinstance(got[1], Mapping)):
-        raise ValueError(f"{type(result).__name__}.codegen_expressions() must return "
+        raise InputError(f"{type(result).__name__}.codegen_expressions() must return "
                          f"(args, {{name: expr}}), got {type(got).__name__}")
     r_args, outs = got
     name = getattr(result, "codegen_name", None) or _snake(type(result).__name__)
@@ -126,7 +127,7 @@ def _protocol_spec(result: Any, hook: Any, args: Any) -> Spec:
     for sym, (value, note) in (consts() if callable(consts) else {}).items():
         value = _as_expr(value, f"constant {sym}")
         if not isinstance(sym, sp.Symbol) or value.free_symbols:
-            raise ValueError(f"{type(result).__name__}.codegen_constants(): {sym!r} must be a Symbol with a number, "
+            raise InputError(f"{type(result).__name__}.codegen_constants(): {sym!r} must be a Symbol with a number, "
                              f"got {value}")
         constants.append((sym, value, str(note)))
     punch = getattr(result, "punch", None)
@@ -155,15 +156,15 @@ def read_spec(result: Any, args: Any) -> Spec:
     if isinstance(result, (str, bytes)):
         msg = (f"cannot generate code from the string {result!r}: strings are not parsed; pass a sympy "
                f"expression (thinlayer.parse.parse_expression reads a formula)")
-        raise ValueError(msg)  # noqa: TRY004
+        raise InputError(msg)  # noqa: TRY004
     hook = getattr(result, "codegen_expressions", None)
     if callable(hook):
         return _protocol_spec(result, hook, args)
     if isinstance(result, (sp.Basic, int, float, Mapping, list, tuple)) and not isinstance(result, bool):
         if args is None:
-            raise ValueError("args is required for a plain expression: the argument symbols in call order")
+            raise InputError("args is required for a plain expression: the argument symbols in call order")
         return Spec(_as_args(args), _outputs_from(result, "expression"), "f", "sympy expression(s)")
-    raise ValueError(
+    raise InputError(
         f"cannot generate code from a {type(result).__name__}; pass an InnerPressure, a KernelCoefficients, "
         f"an object with codegen_expressions(), a sympy expression, a list of them or a {{name: expr}} "
         f"mapping (the last three with args=[symbols])")

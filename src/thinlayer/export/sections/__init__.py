@@ -35,6 +35,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
+from ...errors import InputError, InputTypeError
 from .base import DerivationFileError, ParseContext, RenderContext
 
 __all__ = ["CORE_TABLES", "SECTIONS", "SectionContractError", "DerivationFileError", "ParseContext", "RenderContext",
@@ -50,7 +51,7 @@ _TABLE_NAME = re.compile(r"[a-z][a-z0-9_]{0,39}")
 SECTIONS: list[Any] = []
 
 
-class SectionContractError(TypeError):
+class SectionContractError(InputTypeError):
     """A report section that does not declare what :func:`register_section` requires; the message says what."""
 
 
@@ -123,9 +124,9 @@ def register_section(section: Any) -> Any:
 
 
 def unregister_section(section: Any) -> None:
-    """Remove a section :func:`register_section` added (a plug-in's or a test's); a ValueError if it is not there."""
+    """Remove a section :func:`register_section` added (a plug-in's or a test's); an InputError if it is not there."""
     if not any(s is section for s in SECTIONS):
-        raise ValueError(f"section {_name(section)} is not registered")
+        raise InputError(f"section {_name(section)} is not registered")
     SECTIONS[:] = [s for s in SECTIONS if s is not section]
 
 

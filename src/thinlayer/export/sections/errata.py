@@ -12,6 +12,7 @@ import re
 from collections.abc import Iterable
 from typing import Any
 
+from ..._checks import InputError
 from ...display import latex_escape
 from .base import axisymmetric
 
@@ -38,7 +39,7 @@ def prose(text: str) -> str:
     """
     parts = text.split("$")
     if len(parts) % 2 == 0:
-        raise ValueError(f"unbalanced $ in {text!r}")
+        raise InputError(f"unbalanced $ in {text!r}")
     # a long file or module name may break after an underscore rather than run into the margin
     return "".join(f"${q}$" if k % 2 else latex_escape(q).replace(r"\_", r"\_\allowbreak{}")
                    for k, q in enumerate(parts))
