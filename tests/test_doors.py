@@ -489,6 +489,8 @@ NO_USER_VALUES: dict[str, str] = {
     "thinlayer.errors.boundary": "a decorator for thinlayer's own functions (its argument is code, not a value)",
     "thinlayer.errors.boundary_methods": "a class decorator for thinlayer's own classes",
     "thinlayer.errors.translate": "turns an exception into thinlayer's; never evaluates its text",
+    "thinlayer.asymptotics.solution.ContactSolution.report_rows": "prints the result's numbers; its argument is the "
+                                                                  "report's LaTeX of [units], set after them as text",
 }
 #: result classes: thinlayer builds them; their constructors store what they are given and evaluate nothing
 RESULT_CLASSES = (
