@@ -486,6 +486,10 @@ class HalfSpace(LayerKernel):
     has_compressible_expansion: ClassVar[bool] = False
     kernel_depends_on_nu: ClassVar[bool] = False
 
+    def with_nu(self, nu: Any) -> LayerKernel:
+        """Itself: the half-space kernel carries no nu (nu enters only through vartheta = mu/(1 - nu) (2.1))."""
+        return self
+
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
         u = sympy_value(u, "u")
         return sp.Integer(1)

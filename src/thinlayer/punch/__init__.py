@@ -11,11 +11,11 @@ A new tip kind is one module here (a :class:`Tip` subclass and a ``register_tip(
 below.
 """
 from ..symbols import laplacian
-from .base import SMOOTHNESS, TIPS, LevelSet, PunchError, Tip, TipKind, TipParameter, register_tip
+from .base import SMOOTHNESS, TIPS, LevelSet, PunchError, Tip, TipKind, TipParameter, is_polynomial_tip, register_tip
 from .flat import FlatPunch
 from .polynomial import MAX_DEGREE, MAX_TERMS, MAX_TOTAL_DEGREE, Punch, PunchTooLargeError
 from .spec import TipSpecError, tip_from_spec, valid_forms
 
 __all__ = ["MAX_DEGREE", "MAX_TERMS", "MAX_TOTAL_DEGREE", "SMOOTHNESS", "TIPS", "FlatPunch", "LevelSet", "Punch",
-           "PunchError", "PunchTooLargeError", "Tip", "TipKind", "TipParameter", "TipSpecError", "laplacian",
-           "register_tip", "tip_from_spec", "valid_forms"]
+           "PunchError", "PunchTooLargeError", "Tip", "TipKind", "TipParameter", "TipSpecError", "is_polynomial_tip",
+           "laplacian", "register_tip", "tip_from_spec", "valid_forms"]

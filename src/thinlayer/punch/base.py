@@ -174,6 +174,13 @@ class Tip(RichDisplay, ABC):
         """The defining equation of the tip as a tagged LaTeX line."""
 
 
+def is_polynomial_tip(obj: Any) -> bool:
+    """Whether ``obj`` is a tip whose Phi is a polynomial (:attr:`Tip.polynomial`): what the symbolic stages
+    (2.26)-(3.25) and the polynomial solvers take.  Callers ask this instead of checking a tip's class.
+    """
+    return isinstance(obj, Tip) and obj.polynomial is not None
+
+
 def points(x: Any, what: str) -> np.ndarray:
     """Coordinates as a float array, or a :class:`PunchError` naming them (a string is never evaluated)."""
     if isinstance(x, (str, bytes)):
