@@ -357,10 +357,8 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
     the disc (its area and radius are exact); the pressure comes from the exact solution on first use.
     """
     nv = float(nu)
-    if layer.base == "frictionless" and layer.numeric_nu is None:
-        from ..layers.kernels import FrictionlessLayer
-
-        layer = FrictionlessLayer(nv)
+    if layer.numeric_nu is None and not layer.kernel_depends_on_nu:  # a frictionless base: nu from the caller
+        layer = layer.with_nu(nv)
     if choice in ("compressible", "two-term", "incompressible"):
         raise InputError(f"model={choice!r} is a model of smooth punches; for the flat punch the thin-layer law "
                          "(F.10)-(F.16) covers every nu: use model='auto', 'asymptotic', 'any-thickness' or 'direct'")
