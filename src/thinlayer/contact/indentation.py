@@ -147,7 +147,7 @@ class Indentation(RichDisplay):
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
         est = self.error_estimate
-        base = "" if self.layer.base == "bonded" else ", frictionless base"
+        base = f", {self.layer.base_note}" if self.layer.base_note else ""
         lines = [
             f"Indentation ({self.model} model): "
             + getattr(self.punch, "description", f"{self.punch.name} Phi = {getattr(self.punch, 'expr', '')}"),

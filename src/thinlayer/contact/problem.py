@@ -13,7 +13,6 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import Any, ClassVar
 
 from .._checks import InputError, InputTypeError, positive
@@ -119,10 +118,3 @@ class Problem:
     def force(self) -> float | None:
         """The given force, or None for a given depth."""
         return self.loading.force if isinstance(self.loading, Force) else None
-
-    @cached_property
-    def shape(self) -> Any:
-        """What the models ask of the tip: ``axisymmetric``, ``quadric``, ``sphere_radius``, ``fixed_contact``."""
-        from .models.common import tip_shape
-
-        return tip_shape(self.tip)

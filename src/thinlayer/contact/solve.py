@@ -43,8 +43,8 @@ import sympy as sp
 from .._checks import InputError, InputTypeError, check_choice, parse_nu, positive
 from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import boundary
-from ..layers.kernels import IncompressibleLayer, LayerKernel
-from ..punch import FlatPunch
+from ..layers.kernels import LayerKernel
+from ..punch import Tip, is_polynomial_tip
 from .indentation import DirectComparison, Indentation
 from .indentation import tex_num as _tex_num  # noqa: F401 - the name tests and older callers import from here
 from .models import model_names, walk
@@ -140,17 +140,15 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     if (delta0 is None) == (force is None):
         raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     loading = Depth(positive(delta0, "delta0")) if delta0 is not None else Force(positive(force, "force"))
-    if isinstance(punch, FlatPunch):  # not a polynomial: no parameters to substitute, no model options
+    if isinstance(punch, Tip) and not is_polynomial_tip(punch):  # the flat punch: nothing to substitute, no options
         if options or parameters:
             raise InputTypeError("the flat punch takes no parameters or options, got "
                                  f"{sorted({**(parameters or {}), **options})}")
         tip = punch
     else:
         tip = numeric_punch(punch, parameters)
-    if layer.numeric_nu is None and layer.base == "frictionless":
-        layer = type(layer)(nu_v)
-    if nu_v == 0.5 and layer.base == "bonded" and layer.has_compressible_expansion:
-        layer = IncompressibleLayer()
+    if layer.numeric_nu is None or layer.incompressible_at(nu_v):  # a frictionless base's nu; bonded at nu = 1/2
+        layer = layer.with_nu(nu_v)
     problem = Problem(layer, tip, material, Frictionless(), loading, HH, tol_v, n, dict(options))
     return walk(problem, choice)
 
@@ -159,7 +157,7 @@ def _check_model_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     if not isinstance(layer, LayerKernel):
         raise InputTypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3) or FrictionlessLayer(0.3); "
                         f"got {layer!r}")
-    if layer.base not in ("bonded", "frictionless") or not layer.has_thickness or layer.symbolic_coefficients:
+    if not layer.on_rigid_base or not layer.has_thickness or layer.symbolic_coefficients:
         raise InputTypeError(f"solve() answers for a layer on a rigid base: BondedLayer(nu) (-1 < nu <= 1/2) or "
                         f"FrictionlessLayer(nu); got {layer!r}")
     if layer.parameter is not None:

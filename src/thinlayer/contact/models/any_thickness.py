@@ -68,13 +68,13 @@ class AnyThicknessModel(Model):
     declines = (NotTabulatedError, ValidityError)
 
     def refuses(self, problem: Problem) -> str | None:
-        if problem.shape.fixed_contact:
+        if problem.tip.fixed_contact:
             return "the any-thickness law covers the sphere and axisymmetric smooth punches"
         return None
 
     def skips(self, problem: Problem) -> bool:
         """``model="auto"`` tries the law for axisymmetric smooth punches only."""
-        return self.refuses(problem) is not None or not problem.shape.axisymmetric
+        return self.refuses(problem) is not None or not problem.tip.axisymmetric
 
     def applies(self, problem: Problem) -> str | None:
         return None
@@ -96,10 +96,10 @@ class AnyThicknessModel(Model):
 
     def force_curve(self, problem: Problem) -> ForceCurve | None:
         """The law (T.7) for the sphere; None for other punches (the thick series is evaluated per depth)."""
-        R = None if problem.shape.fixed_contact else sphere_radius(problem.tip)
+        R = sphere_radius(problem.tip)
         if R is None:
             return None
-        return sphere_curve(self.name, R, problem.H, problem.nu, problem.layer.base, problem.tol)
+        return sphere_curve(self.name, R, problem.H, problem.nu, problem.layer.base_label, problem.tol)
 
 
 register_model(AnyThicknessModel)

@@ -1,58 +1,16 @@
-"""What several models share: the tip's shape, the depth for a given force, the extent of the overlap."""
+"""What several models share: the depth for a given force, the extent of the overlap, FFT sizes."""
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
-from functools import cached_property, lru_cache
+from functools import cached_property
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
-from ... import symbols as S
 from ...asymptotics.solution import ValidityError
-from ...punch import FlatPunch
 
-__all__ = ["LazyExtent", "TipShape", "depth_for_force", "extent_of", "fast_size", "phi_numpy", "tip_shape"]
-
-
-@dataclass(frozen=True)
-class TipShape:
-    """What the models need to know of a numeric tip."""
-
-    axisymmetric: bool
-    quadric: tuple[float, float, float] | None  # (1/R1, 1/R2, angle) for Phi = x.Hx/2 (principal curvatures)
-    fixed_contact: bool = False
-
-    @property
-    def sphere(self) -> bool:
-        return self.quadric is not None and math.isclose(self.quadric[0], self.quadric[1], rel_tol=1e-12)
-
-
-@lru_cache(maxsize=256)
-def tip_shape(punch: Any) -> TipShape:
-    """The shape of a numeric tip (cached per tip)."""
-    if isinstance(punch, FlatPunch):
-        return TipShape(True, None, True)
-    e = sp.expand(punch.expr)
-    axi = sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0
-    poly = sp.Poly(e, S.x1, S.x2)
-    quad = None
-    if poly.total_degree() == 2 and all(sum(m) == 2 for m in poly.monoms()):
-        a11 = float(poly.coeff_monomial(S.x1**2)) * 2
-        a22 = float(poly.coeff_monomial(S.x2**2)) * 2
-        a12 = float(poly.coeff_monomial(S.x1 * S.x2))
-        lam, vec = np.linalg.eigh(np.array([[a11, a12], [a12, a22]]))
-        if lam.min() > 0:
-            quad = (float(lam[0]), float(lam[1]), float(math.atan2(vec[1, 0], vec[0, 0])))
-    return TipShape(bool(axi), quad)
-
-
-@lru_cache(maxsize=256)
-def phi_numpy(punch: Any) -> Callable:
-    """``Phi(x1, x2)`` compiled for numpy (cached per tip)."""
-    return sp.lambdify((S.x1, S.x2), punch.expr, "numpy")
+__all__ = ["LazyExtent", "depth_for_force", "extent_of", "fast_size"]
 
 
 class LazyExtent:
@@ -68,7 +26,7 @@ class LazyExtent:
 
 def extent_of(punch: Any, delta0: float) -> float:
     """A half-width of a square that holds {Phi < delta0}: bisection along 16 rays (all at once)."""
-    f = phi_numpy(punch)
+    f = punch.profile  # the tip's own vectorised Phi
     t = np.linspace(0, 2 * np.pi, 16, endpoint=False)
     c, s = np.cos(t), np.sin(t)
     hi = np.ones(16)

@@ -35,7 +35,7 @@ class CompressibleModel(Model):
     takes_options = True
 
     def refuses(self, problem: Problem) -> str | None:
-        return SMOOTH_ONLY.format(name=self.name) if problem.shape.fixed_contact else None
+        return SMOOTH_ONLY.format(name=self.name) if problem.tip.fixed_contact else None
 
     def applies(self, problem: Problem) -> str | None:
         if not problem.layer.has_compressible_expansion:
@@ -43,17 +43,17 @@ class CompressibleModel(Model):
         return None
 
     def run(self, problem: Problem) -> Indentation:
-        layer, punch, H, shape = problem.layer, problem.tip, problem.H, problem.shape
+        layer, punch, H = problem.layer, problem.tip, problem.H
         sol = compressible_solution(layer, punch, delta0=problem.delta0, H=H, mu=problem.mu, force=problem.force,
                                     nu=problem.nu, tol=math.inf, **problem.options)
         est = dict(sol.error_estimate)
         radius = None
-        if shape.axisymmetric:
+        if punch.axisymmetric:
             radius = math.sqrt(sol.contact_area / math.pi)
             est["contact_radius"] = est["contact_area"] / 2
         axes = None
-        if shape.quadric is not None and not shape.axisymmetric:
-            semi = [math.sqrt(2 * sol.delta0 / k) for k in shape.quadric[:2]]
+        if punch.quadric is not None and not punch.axisymmetric:
+            semi = [math.sqrt(2 * sol.delta0 / k) for k in punch.quadric[:2]]
             if sol.order == 2:  # (SO.5): h = h* + m1 H (kappa/2 + Phi_nn/(2g)); at the end of axis i kappa = a_i/a_j^2
                 m1 = float(layer.m(1))
                 axes = tuple(a - H * (sol.edge_shift + m1 * H * (a / b**2 + 1 / a) / 2)
@@ -67,8 +67,10 @@ class CompressibleModel(Model):
 
     def force_curve(self, problem: Problem) -> ForceCurve | None:
         """``force_arrays`` at ``mu = 1``: the punches with a closed-form law (quadric, radial monomial)."""
-        if problem.shape.fixed_contact or not problem.layer.has_compressible_expansion \
-                or force_law(problem.layer, problem.tip).kind == "contour":
+        if problem.tip.fixed_contact or not problem.layer.has_compressible_expansion:
+            return None
+        closed_form = force_law(problem.layer, problem.tip)
+        if closed_form.kind == "contour":  # the law needs its contour at every depth
             return None
         layer, punch, H, nu, tol = problem.layer, problem.tip, problem.H, problem.nu, problem.tol
 

@@ -56,7 +56,7 @@ def direct_solution(layer, punch, axisymmetric: bool, delta0, H, mu, nu, refine=
     # 2D: a square around the overlap {Phi < delta0} (wider near nu = 1/2, where the contact outgrows it), cells
     # resolving H (Delta <= H/7.2, so that the check run at 0.7 times the cells still has Delta <= H/5) and the
     # contact (>= 128 across); widened when the contact reaches the boundary
-    half = extent_of(punch, delta0) * (1.15 if nu < 0.4 or layer.base != "bonded" else 1.6) + 1.5 * H
+    half = extent_of(punch, delta0) * (1.15 if nu < 0.4 or not layer.has_incompressible_model else 1.6) + 1.5 * H
     for _ in range(4):
         cells = n
         if cells is None:
@@ -138,7 +138,7 @@ class _SmoothDirect(Model):
     axisymmetric = True
 
     def refuses(self, problem: Problem) -> str | None:
-        return "the flat punch's direct solution is its own entry" if problem.shape.fixed_contact else None
+        return "the flat punch's direct solution is its own entry" if problem.tip.fixed_contact else None
 
     def skips(self, problem: Problem) -> bool:
         """A shape the other direct entry answers: passed over in silence."""
@@ -146,7 +146,7 @@ class _SmoothDirect(Model):
 
     def shape_reason(self, problem: Problem) -> str | None:
         """None when the punch's symmetry is this solver's, else why not."""
-        if problem.shape.axisymmetric != self.axisymmetric:
+        if problem.tip.axisymmetric != self.axisymmetric:
             return "the punch is not axisymmetric" if self.axisymmetric else "the punch is axisymmetric"
         return None
 

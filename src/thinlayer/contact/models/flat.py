@@ -70,7 +70,7 @@ class FlatPunchModel(Model):
     parameter_units = ("Pa", "", "m", "m", "m")
 
     def refuses(self, problem: Problem) -> str | None:
-        return None if problem.shape.fixed_contact else "the flat punch's laws hold for the flat punch only"
+        return None if problem.tip.fixed_contact else "the flat punch's laws hold for the flat punch only"
 
     def applies(self, problem: Problem) -> str | None:
         return None

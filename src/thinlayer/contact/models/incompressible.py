@@ -22,11 +22,11 @@ class IncompressibleModel(Model):
     equations = ("I.8", "I.7")
 
     def refuses(self, problem: Problem) -> str | None:
-        return SMOOTH_ONLY.format(name=self.name) if problem.shape.fixed_contact else None
+        return SMOOTH_ONLY.format(name=self.name) if problem.tip.fixed_contact else None
 
     def applies(self, problem: Problem) -> str | None:
         why = base_nu_reason(problem, self.name, incompressible=True)
-        if why is None and not (problem.shape.axisymmetric or problem.shape.quadric is not None):
+        if why is None and not (problem.tip.axisymmetric or problem.tip.quadric is not None):
             return ("the incompressible model is closed-form for axisymmetric punches and the elliptic paraboloid; "
                     "this punch needs the direct solver")
         return why
@@ -38,9 +38,7 @@ class IncompressibleModel(Model):
         """The sphere (I.11)-(I.12), another axisymmetric punch (I.9), the elliptic paraboloid (I.7)-(I.8)."""
         if answer.semi_axes is not None or answer.contact_radius is None:
             return self.equations
-        from .common import tip_shape
-
-        return ("I.11", "I.12") if tip_shape(answer.punch).sphere else ("I.9", "I.12")
+        return ("I.11", "I.12") if answer.punch.sphere_radius is not None else ("I.9", "I.12")
 
     def force_curve(self, problem: Problem) -> ForceCurve | None:
         return None if self.refuses(problem) or self.applies(problem) else nearly_incompressible_curve(problem,

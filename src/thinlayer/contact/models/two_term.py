@@ -79,7 +79,7 @@ def edge_h(layer: LayerKernel) -> float:
 def base_nu_reason(problem: Problem, name: str, incompressible: bool) -> str | None:
     """Why a nearly-incompressible model does not apply to this base and nu (None: it does)."""
     nu = problem.nu
-    if problem.layer.base != "bonded":
+    if not (problem.layer.has_incompressible_model if incompressible else problem.layer.has_two_term_model):
         return f"the {name} model is derived for a bonded base"
     if incompressible and nu != 0.5:
         return f"nu = {nu:.6g} < 1/2 (the incompressible model is nu = 1/2)"
@@ -99,12 +99,12 @@ def nearly_incompressible(problem: Problem, name: str) -> Indentation:
 
 
 def _nearly_incompressible(problem: Problem, name: str) -> Indentation:
-    layer, punch, shape = problem.layer, problem.tip, problem.shape
+    layer, punch = problem.layer, problem.tip
     H, mu, nu, tol, force, delta0 = problem.H, problem.mu, problem.nu, problem.tol, problem.force, problem.delta0
     h = edge_h(layer)
     common = dict(layer=layer, punch=punch, H=H, mu=mu, nu=nu, model=name, reason="", tol=tol)
-    if shape.sphere:
-        R = 1.0 / shape.quadric[0]
+    if punch.sphere_radius is not None:
+        R = punch.sphere_radius
         model = two_term_sphere(layer)
 
         def at(d0):
@@ -125,8 +125,8 @@ def _nearly_incompressible(problem: Problem, name: str) -> Indentation:
         return Indentation(**common, delta0=d0, force=v.force, contact_area=math.pi * radius**2,
                            contact_radius=radius, semi_axes=None, error_estimate=est, detail=v,
                            _pressure=lambda x1, x2: p_r(np.hypot(x1, x2)), _extent=1.2 * c)
-    if shape.quadric is not None:  # elliptic paraboloid at nu = 1/2 (I.6)-(I.8)
-        k1, k2, ang = shape.quadric
+    if punch.quadric is not None:  # elliptic paraboloid at nu = 1/2 (I.6)-(I.8)
+        k1, k2, ang = punch.quadric
         model = incompressible_ellipse_cached(1 / k1, 1 / k2)
 
         def at(d0):
@@ -194,11 +194,11 @@ class TwoTermModel(Model):
     equations = ("I.11", "I.12")
 
     def refuses(self, problem: Problem) -> str | None:
-        return SMOOTH_ONLY.format(name=self.name) if problem.shape.fixed_contact else None
+        return SMOOTH_ONLY.format(name=self.name) if problem.tip.fixed_contact else None
 
     def applies(self, problem: Problem) -> str | None:
         why = base_nu_reason(problem, self.name, incompressible=False)
-        if why is None and not problem.shape.sphere:
+        if why is None and not problem.tip.sphere_radius is not None:
             return "the two-term model is derived for the sphere (paraboloid) only"
         return why
 
