@@ -31,10 +31,10 @@ class ToyHertz(Model):
     equations = ("H.1", "H.2")
 
     def applies(self, problem):
-        return None if problem.shape.sphere else "the toy is for the sphere"
+        return None if problem.tip.sphere_radius is not None else "the toy is for the sphere"
 
     def run(self, problem):
-        R, d, nu, mu = 1.0 / problem.shape.quadric[0], problem.delta0, problem.nu, problem.mu
+        R, d, nu, mu = problem.tip.sphere_radius, problem.delta0, problem.nu, problem.mu
         c = math.sqrt(R * d)
         P = 4.0 / 3.0 * 2.0 * mu / (1.0 - nu) * math.sqrt(R) * d**1.5
         return Indentation(layer=problem.layer, punch=problem.tip, delta0=d, force=P, H=problem.H, mu=mu, nu=nu,

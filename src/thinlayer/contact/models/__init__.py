@@ -6,17 +6,20 @@ by the first entry that holds.  A new model is one module here with one ``regist
 """
 from __future__ import annotations
 
-from . import any_thickness, compressible, direct, flat, incompressible, two_term  # noqa: F401 - they register
+from . import any_thickness, compressible, direct, flat, incompressible, published, two_term  # noqa: F401 - they register
 from .base import (
     MODEL_REGISTRY,
     ForceCurve,
     Model,
     entries_named,
+    fit_entry,
+    fit_names,
     model_names,
     register_model,
     unregister_model,
 )
 from .walk import direct_comparison, entry_of, walk
 
-__all__ = ["ForceCurve", "MODEL_REGISTRY", "Model", "direct_comparison", "entries_named", "entry_of", "model_names",
+__all__ = ["ForceCurve", "MODEL_REGISTRY", "Model", "direct_comparison", "entries_named", "entry_of", "fit_entry",
+           "fit_names", "model_names",
            "register_model", "unregister_model", "walk"]

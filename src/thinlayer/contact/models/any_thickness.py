@@ -45,9 +45,9 @@ def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float
         return 1.5 + 0.5 * dlp, -dlp
 
     grid = np.geomspace(1e-8, 1e8, 4001)
-    lg = np.log(grid * law.ratios(grid)[1])  # log(c/H) against log chi: increasing
 
     def inverse(c):
+        lg = np.log(grid * law.ratios(grid)[1])  # log(c/H) against log chi: increasing
         t = np.log(np.asarray(c, dtype=float) / H)
         x = np.interp(t, lg, np.log(grid))
         for _ in range(3):  # Newton steps in log chi on log(chi C(chi)) = t, the slope from the grid
@@ -65,6 +65,7 @@ class AnyThicknessModel(Model):
     name = "any-thickness"
     preference = 60
     equations = ("T.7", "T.7")
+    fits = True
     declines = (NotTabulatedError, ValidityError)
 
     def refuses(self, problem: Problem) -> str | None:

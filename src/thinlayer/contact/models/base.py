@@ -36,7 +36,8 @@ if TYPE_CHECKING:
     from ..indentation import Indentation
     from ..problem import Problem
 
-__all__ = ["ForceCurve", "MODEL_REGISTRY", "Model", "entries_named", "estimate_ok", "fmt_est", "model_names",
+__all__ = ["ForceCurve", "MODEL_REGISTRY", "Model", "entries_named", "estimate_ok", "fit_entry", "fit_names", "fmt_est",
+           "model_names",
            "register_model", "unregister_model"]
 
 
@@ -136,6 +137,8 @@ class Model(ABC):
     aliases: ClassVar[tuple[str, ...]] = ()
     #: the model options: True takes them, False refuses them (one line), None ignores them
     takes_options: ClassVar[bool | None] = False
+    #: whether fit() offers this model's force curve (``fit(model=name)``)
+    fits: ClassVar[bool] = False
     #: exceptions after which ``model="auto"`` goes on to the next entry (non-asymptotic entries)
     declines: ClassVar[tuple[type[BaseException], ...]] = ()
 
@@ -241,6 +244,16 @@ def model_names() -> tuple[str, ...]:
         if m.solves and m.selectable and m.name not in out:
             out.append(m.name)
     return tuple(out)
+
+
+def fit_names() -> tuple[str, ...]:
+    """``fit()``'s choices of ``model``: the entries with a force curve for fitting, by preference."""
+    return tuple(dict.fromkeys(m.name for m in MODEL_REGISTRY if m.fits))
+
+
+def fit_entry(name: str) -> Model:
+    """The entry ``fit(model=name)`` uses."""
+    return next(m for m in MODEL_REGISTRY if m.fits and m.name == name)
 
 
 def entries_named(name: str) -> list[Model]:
