@@ -31,7 +31,7 @@ QUARTIC = tl.Punch("x_1**2/2 + x_2**2 + x_1**3/5 + x_1*x_2/10 + x_1**4 + x_2**4"
 def _clear():
     for f in (fl._force_law_cached, fl._compiled_closed_forms, fl._compiled_expr, two_term_model.edge_h,
               two_term_model.incompressible_ellipse_cached,
-              contour_mod._polynomial_cached, contour_mod._gauss_legendre, solution_mod._is_axisymmetric,
+              contour_mod._polynomial_cached, contour_mod._gauss_legendre,
               solution_mod._array_law, leading_mod._ellipse_functions, two_term_mod._edge_shift_float):
         f.cache_clear()
 
