@@ -5,6 +5,8 @@
 * :mod:`.polynomial` -- :class:`Punch`, the polynomial punch and its catalogue (paraboloid, elliptic paraboloid,
   fourth-degree paraboloid, general polynomial);
 * :mod:`.flat` -- :class:`FlatPunch`, the flat-ended cylinder (F.1);
+* :mod:`.cone`, :mod:`.sphere`, :mod:`.blunted_cone`, :mod:`.power_law`, :mod:`.revolution` -- the tips of
+  revolution that are not polynomials (issue 24; common part in :mod:`._radial`);
 * :mod:`.spec` -- :func:`tip_from_spec`, ``"paraboloid:R=10"`` read by the restricted grammar.
 
 A new tip kind is one module here (a :class:`Tip` subclass and a ``register_tip(TipKind(...))`` line), imported
@@ -15,7 +17,12 @@ from .base import SMOOTHNESS, TIPS, LevelSet, PunchError, Tip, TipKind, TipParam
 from .flat import FlatPunch
 from .polynomial import MAX_DEGREE, MAX_TERMS, MAX_TOTAL_DEGREE, Punch, PunchTooLargeError
 from .spec import TipSpecError, tip_from_spec, valid_forms
+from .cone import Cone
+from .sphere import Sphere
+from .blunted_cone import BluntedCone
+from .power_law import PowerLaw
+from .revolution import Revolution
 
-__all__ = ["MAX_DEGREE", "MAX_TERMS", "MAX_TOTAL_DEGREE", "SMOOTHNESS", "TIPS", "FlatPunch", "LevelSet", "Punch",
+__all__ = ["BluntedCone", "Cone", "PowerLaw", "Revolution", "Sphere", "MAX_DEGREE", "MAX_TERMS", "MAX_TOTAL_DEGREE", "SMOOTHNESS", "TIPS", "FlatPunch", "LevelSet", "Punch",
            "PunchError", "PunchTooLargeError", "Tip", "TipKind", "TipParameter", "TipSpecError", "is_polynomial_tip",
            "laplacian", "register_tip", "tip_from_spec", "valid_forms"]
