@@ -14,15 +14,16 @@ below.
 """
 from ..symbols import laplacian
 from .base import SMOOTHNESS, TIPS, LevelSet, PunchError, Tip, TipKind, TipParameter, is_polynomial_tip, register_tip
+from .blunted_cone import BluntedCone
+from .cone import Cone
 from .flat import FlatPunch
 from .polynomial import MAX_DEGREE, MAX_TERMS, MAX_TOTAL_DEGREE, Punch, PunchTooLargeError
-from .spec import TipSpecError, tip_from_spec, valid_forms
-from .cone import Cone
-from .sphere import Sphere
-from .blunted_cone import BluntedCone
 from .power_law import PowerLaw
 from .revolution import Revolution
+from .spec import TipSpecError, tip_from_spec, valid_forms
+from .sphere import Sphere
 
-__all__ = ["BluntedCone", "Cone", "PowerLaw", "Revolution", "Sphere", "MAX_DEGREE", "MAX_TERMS", "MAX_TOTAL_DEGREE", "SMOOTHNESS", "TIPS", "FlatPunch", "LevelSet", "Punch",
-           "PunchError", "PunchTooLargeError", "Tip", "TipKind", "TipParameter", "TipSpecError", "is_polynomial_tip",
-           "laplacian", "register_tip", "tip_from_spec", "valid_forms"]
+__all__ = ["MAX_DEGREE", "MAX_TERMS", "MAX_TOTAL_DEGREE", "SMOOTHNESS", "TIPS", "BluntedCone", "Cone", "FlatPunch",
+           "LevelSet", "PowerLaw", "Punch", "PunchError", "PunchTooLargeError", "Revolution", "Sphere", "Tip",
+           "TipKind", "TipParameter", "TipSpecError", "is_polynomial_tip", "laplacian", "register_tip", "tip_from_spec",
+           "valid_forms"]

@@ -233,7 +233,8 @@ class TipParameter:
     """One parameter of a tip kind, as a user names it in ``kind:key=value``.
 
     ``unit_kind`` is ``"length"``, ``"angle"`` (degrees), ``"number"``, ``"expression"`` (a formula in ``x_1, x_2``,
-    read by the restricted grammar) or ``"profile"`` (a radial profile in ``r``, read with ``radial=True``); ``aliases`` are other keys accepted for it; ``required`` says whether the constructor
+    read by the restricted grammar) or ``"profile"`` (a radial profile in ``r``, read with ``radial=True``);
+    ``aliases`` are other keys accepted for it; ``required`` says whether the constructor
     needs it (otherwise a missing value stays a symbol).
     """
 
