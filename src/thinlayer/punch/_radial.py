@@ -27,7 +27,6 @@ from typing import Any
 
 import numpy as np
 import sympy as sp
-from scipy import integrate, optimize
 
 from .. import symbols as S
 from ..display import fmt
@@ -170,6 +169,8 @@ class RadialTip(Tip):
         """
         if not isinstance(values, Mapping):
             raise InputTypeError(f"the tip's parameter values must be a dict, got {type(values).__name__}")
+        if not values:
+            return self
         names = {q.name for q in self.parameters}
         current = dict(self.values)
         for k, v in values.items():
@@ -256,6 +257,8 @@ class RadialTip(Tip):
             slope = v["flux"] / (2 * math.pi * a)
             second = 2 * math.pi * a * (2 * float(self.radial_curvature(np.array([a]))[0]) + slope / a)
             return LevelSet(v["area"], v["volume"], v["perimeter"], v["flux"], a, a, second)
+        from scipy import integrate  # lazy: importing thinlayer.punch loads no scipy
+
         a = self._radius_by_root(d)
         pts = [b for b in self.radial_breakpoints if 0 < b < a]
         vol, _ = integrate.quad(lambda s: 2 * math.pi * s * (d - float(self.radial_profile(np.array([s]))[0])),
@@ -266,6 +269,8 @@ class RadialTip(Tip):
         return LevelSet(math.pi * a * a, vol, 2 * math.pi * a, flux, a, a, second)
 
     def _radius_by_root(self, d: float) -> float:
+        from scipy import optimize  # lazy: importing thinlayer.punch loads no scipy
+
         hi = min(1.0, 0.5 * self.support_radius)
         for _ in range(2200):
             if float(self.radial_profile(np.array([hi]))[0]) > d:
