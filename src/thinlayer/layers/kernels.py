@@ -132,6 +132,10 @@ class LayerKernel(RichDisplay, ABC):
     #: whether the kernel L(u) depends on Poisson's ratio (False: frictionless base, half-space; nu then enters
     #: only through vartheta = mu/(1 - nu) (2.1))
     kernel_depends_on_nu: ClassVar[bool] = True
+    #: whether the base carries no shear (the frictionless base): m_1 = 0, so the first correction of the force
+    #: law (1.8) is of relative order (H/a)^3; the kernel is nu-free and nu comes from the caller (vartheta, (2.1));
+    #: reports add the exact/Alexandrov edge-shift table and the frictionless errata kinds
+    shear_free_base: ClassVar[bool] = False
 
     @property
     def base_label(self) -> str | None:
@@ -424,6 +428,7 @@ class FrictionlessLayer(LayerKernel):
     base_note: ClassVar[str] = "frictionless base"
     has_edge_shift: ClassVar[bool] = True
     kernel_depends_on_nu: ClassVar[bool] = False
+    shear_free_base: ClassVar[bool] = True
 
     @property
     def kernel_key(self) -> LayerKernel:

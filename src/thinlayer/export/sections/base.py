@@ -81,12 +81,12 @@ def short(val: Any) -> str:
 
 def incompressible_bonded(layer: Any) -> bool:
     """The incompressible layer bonded to its base (nu = 1/2, A = 0): sections (I.1)-(I.12), not (2.24)-(3.25)."""
-    return layer.base == "bonded" and not layer.has_compressible_expansion
+    return layer.has_incompressible_model and not layer.has_compressible_expansion
 
 
 def compressible_bonded(layer: Any) -> bool:
     """A compressible layer bonded to its base (not the incompressible limit): the (3.15)-(3.25) sections apply."""
-    return layer.base == "bonded" and layer.has_compressible_expansion
+    return layer.has_two_term_model and layer.has_compressible_expansion
 
 
 def polynomial_only(key: str, table: Any, context: ParseContext) -> None:

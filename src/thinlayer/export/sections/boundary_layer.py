@@ -70,7 +70,7 @@ def render(doc: Any, der: Any, context: Any) -> None:
     doc.text(r"so that the contact edge lies the distance $h^* H$ inside the leading contour $\Gamma_0$, (3.25):")
     doc.math(rf"h^* = {nl(1 / sp.sqrt(C) - 1 / (2 * B))} \tag{{3.25}}")
     force_words = ("the first correction is of relative order $(H/a)^3$, since $m_1 = 0$"
-                   if layer.base == "frictionless" else "with the correction of relative order $(H/a)^2$")
+                   if layer.shear_free_base else "with the correction of relative order $(H/a)^2$")
     doc.section("Force and contact area").text(
         rf"The force is the integral of the inner terms $p_0 + p_1$ plus the force defect of the boundary layer, "
         rf"{force_words}; $a$ is the contact half-width. The defect of the boundary layer,")
@@ -92,7 +92,7 @@ def render(doc: Any, der: Any, context: Any) -> None:
         doc.math(rf"|\omega| = {area}{rem_A} \tag{{3.25}}")
     else:
         doc.math(r"|\omega| = |\omega_0| - h^* H |\Gamma_0|" + rem_A + r" \tag{3.25}")
-    if layer.base == "frictionless":
+    if layer.shear_free_base:
         from ...asymptotics.wiener_hopf import edge_shift_alexandrov, edge_shift_exact
 
         doc.table(r"Edge shift of the frictionless base: exact (Wiener--Hopf) and Alexandrov's "

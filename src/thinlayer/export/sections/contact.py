@@ -68,7 +68,7 @@ def parse(ct: Any, context: Any) -> dict | None:
     if nu is not None and layer_nu is not None:
         raise DerivationFileError(f"[contact] nu = {nu!r} contradicts [layer] nu = {layer_nu!r}: give nu in one "
                                   "place ([layer] for the whole derivation, or [contact] with [layer] nu = 'symbolic')")
-    if layer.base == "frictionless":
+    if layer.shear_free_base:
         if not isinstance(nu, (int, float)) or not -1 < nu <= 0.5:
             raise DerivationFileError(f"[contact] nu = {nu!r}: the frictionless base needs a number in (-1, 1/2] "
                                       "for vartheta = mu/(1 - nu)")

@@ -83,7 +83,7 @@ def punch_kinds(der: Any) -> set[str]:
 def layer_kinds(der: Any) -> set[str]:
     """The kinds of :data:`thinlayer.errata.LAYERS` a derivation's layer (and its flat-punch table) covers."""
     layer = der.layer
-    if layer.base == "frictionless":
+    if layer.shear_free_base:
         return {"compressible", "frictionless"}
     if not layer.has_compressible_expansion:
         return {"incompressible"}

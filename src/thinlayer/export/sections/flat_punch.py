@@ -55,7 +55,6 @@ def render(doc: Any, der: Any, context: Any) -> None:
     layer, table = der.layer, der.sections[KEY]
     from ...asymptotics.flat_punch import thick_flat_punch_coefficients, thin_flat_punch_derivation
     from ...contact.flat_punch import stiffness_table
-    from ...layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer
 
     d = thin_flat_punch_derivation()
     h_star = sp.Symbol("h^*", real=True)  # the edge shift of (3.25): one symbol with the other sections
@@ -135,11 +134,11 @@ def render(doc: Any, der: Any, context: Any) -> None:
     doc.math(r"\epsilon_{\mathrm{thick}} = \frac{|c_N \lambda^N| + |c_{N-1} \lambda^{N-1}|}{\kappa},\quad "
              r"\kappa = \sum_{k=0}^{N} c_k \lambda^k \tag{F.19}")
     ratios = [float(v) for v in table["a_over_H"]]
-    frictionless = layer.base == "frictionless"
+    frictionless = layer.shear_free_base
     nus = [0.3] if frictionless else [float(v) for v in table["nu"]]
     cols, worst = [], 0.0
     for nu in nus:
-        lay = FrictionlessLayer(nu) if frictionless else (IncompressibleLayer() if nu == 0.5 else BondedLayer(nu))
+        lay = layer.with_nu(nu)
         kappa, est, _ = stiffness_table(lay, ratios, "exact")
         cols.append([float(k) for k in kappa])
         worst = max(worst, float(max(est)))

@@ -32,7 +32,7 @@ def render(doc: Any, der: Any, context: Any) -> None:
 
     layer = der.layer
     nu = nu_latex(layer)
-    base = "bonded to" if layer.base == "bonded" else "lying without friction on"
+    base = layer.base_phrase
     ratio = "" if nu == r"\nu" else rf", with Poisson ratio $\nu = {nu}$"
     doc.section("Layer kernel").text(rf"The layer of thickness $H$ is {base} a rigid base{ratio}. Its kernel, (2.3):")
     doc.math(rf"\mathcal{{L}}(u) = {nl(layer.L())} \tag{{2.3}}")

@@ -44,7 +44,7 @@ def parse(st: Any, context: Any) -> dict | None:
     if st is None:
         return None
     layer, punch = context.layer, context.punch
-    if punch is None or not (layer.base == "frictionless" or compressible_bonded(layer)):
+    if punch is None or not (layer.shear_free_base or compressible_bonded(layer)):
         raise DerivationFileError("[second_order] is for the compressible expansion of a polynomial punch (a bonded "
                                   "layer with nu < 1/2 or the frictionless base), not the flat punch or nu = 1/2")
     vals = st.get("nu", list(SECOND_ORDER_NUS))
@@ -109,7 +109,7 @@ def _nu_label(value: Any) -> str:
 
 def _numeric_layer(layer: Any) -> bool:
     """Whether the constants of ``layer`` are numbers (a numeric nu, or the frictionless base)."""
-    return layer.base == "frictionless" or (layer.parameter is None and layer.numeric_nu is not None)
+    return layer.shear_free_base or (layer.parameter is None and layer.numeric_nu is not None)
 
 
 def _boundary_layer(doc: Any) -> None:
