@@ -46,7 +46,8 @@ RANK = {
 
 #: asymptotic stages in the paper's order: each imports only earlier ones
 STAGES = [
-    "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "composite", "second_order",
+    "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "tip_law", "composite",
+    "second_order",
     "incompressible", "thick_layer", "flat_punch", "solution",
 ]
 
@@ -249,7 +250,7 @@ def test_no_layer_type_or_name_checks_outside_layers():
 #: export/), which still ask a layer for its base or a tip for its class or name.  Removed when the
 #: models/sections/cli branches merge; the list only shrinks (a module that no longer offends must leave it).
 NOT_YET_MIGRATED = {
-    "thinlayer.contact.solve", "thinlayer.contact.fit", "thinlayer.export.cli", "thinlayer.export.report",
+    "thinlayer.export.cli", "thinlayer.export.report",
     "thinlayer.export.derivation", "thinlayer.export._second_order_section", "thinlayer.export._errata_section",
     "thinlayer.export._flat_section",
 }

@@ -494,6 +494,8 @@ NO_USER_VALUES: dict[str, str] = {
     **{f"thinlayer.{k}.{m}": "prints the object" for k in ("Punch", "FlatPunch", "Indentation") for m in ("latex",
                                                                                                           "text_lines")},
     "thinlayer.Punch.codegen_expressions": "returns the punch's own expressions",
+    **{f"thinlayer.asymptotics.{m}.codegen_constants": "returns the law's layer constants (h*, r_3): no argument"
+       for m in ("force_law.ForceLaw", "second_order.SecondOrderLaw")},
     "thinlayer.LayerKernel": "the abstract base of the layers: no constructor (Python refuses to instantiate it)",
     "thinlayer.punch.base.Tip": "the abstract base of the tips: no constructor (Python refuses to instantiate it)",
     "thinlayer.punch.base.LevelSet": "a result class: thinlayer builds it; its constructor stores values and "
@@ -502,6 +504,8 @@ NO_USER_VALUES: dict[str, str] = {
     "thinlayer.errors.boundary": "a decorator for thinlayer's own functions (its argument is code, not a value)",
     "thinlayer.errors.boundary_methods": "a class decorator for thinlayer's own classes",
     "thinlayer.errors.translate": "turns an exception into thinlayer's; never evaluates its text",
+    "thinlayer.asymptotics.solution.ContactSolution.report_rows": "prints the result's numbers; its argument is the "
+                                                                  "report's LaTeX of [units], set after them as text",
 }
 #: result classes: thinlayer builds them; their constructors store what they are given and evaluate nothing
 RESULT_CLASSES = (
@@ -515,7 +519,7 @@ RESULT_CLASSES = (
     "thinlayer.asymptotics.second_order.SecondOrderLaw", "thinlayer.asymptotics.second_order.SecondOrderValues",
     "thinlayer.asymptotics.solution.ContactSolution", "thinlayer.asymptotics.solution.ForceArrays",
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution", "thinlayer.contact.any_thickness.AnyThicknessLaw",
-    "thinlayer.contact.fit.FitResult", "thinlayer.contact.solve.DirectComparison",
+    "thinlayer.contact.fit.FitResult", "thinlayer.contact.indentation.DirectComparison",
     "thinlayer.numerics.AxisymmetricContact",
     "thinlayer.numerics.Contact2D", "thinlayer.numerics.GridContact",
 )

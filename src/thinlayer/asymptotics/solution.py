@@ -45,7 +45,7 @@ from .._checks import positive as _positive
 from ..display import RichDisplay
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..normal import normal_latex
+from ..normal import float_latex, normal_latex
 from ..punch import Punch, PunchError, is_polynomial_tip
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, error_estimate_arrays, force_law
@@ -294,6 +294,42 @@ class ContactSolution(RichDisplay):
             r"\ (\text{Alexandrov}) \tag{3.25}",
         ]
         return " \\\\\n".join(rows)
+
+    def report_rows(self, units: dict | None = None) -> tuple[str, list[str]]:
+        r"""What a report shows of this solution beside the table every model fills: a sentence and tagged lines.
+
+        The force (1.8) and the contact area (3.25) as leading term and first correction (and the second-order
+        terms (SO.9), (SO.10) when ``order == 2``), the numbers to six significant digits.  The hook of the
+        report's contact section (:mod:`thinlayer.export.sections.contact`), which asks a result for it instead
+        of naming its model.
+
+        Parameters
+        ----------
+        units : dict, optional
+            The LaTeX set after a force (key ``"force"``, e.g. ``r"\,\mathrm{N}"``) and after an area (``"area"``);
+            none by default.
+
+        Returns
+        -------
+        tuple of str and list of str
+            The sentence (LaTeX text) and the displayed lines, each ending in its ``\tag``.
+        """
+        u = units or {}
+        force_unit, area_unit = u.get("force", ""), u.get("area", "")
+        v, second = self.values, self.order == 2
+        tags = self._tags()
+
+        def term(x: float) -> str:  # " + 0.1" or " - 0.1"; nothing for 0
+            return "" if x == 0 else f" {'-' if x < 0 else '+'} {float_latex(abs(x), 6)}"
+
+        lead = (r"The force (1.8) and the contact area (3.25) as leading term and first correction:" if not second
+                else r"The force (SO.9) and the contact area (SO.10) as leading term, first and second correction:")
+        sign = "-" if v.edge_shift >= 0 else "+"
+        force = f"P = {float_latex(v.P0, 6)}{term(v.P1)}{term(v.P2) if second else ''}"
+        area = (rf"|\omega| = {float_latex(v.area0, 6)} {sign} {float_latex(abs(v.edge_shift), 6)} \cdot "
+                rf"{float_latex(self.H, 6)} \cdot {float_latex(v.perimeter, 6)}{term(v.area2) if second else ''}")
+        return lead, [rf"{force} = {float_latex(v.force, 6)}{force_unit} \tag{{{tags[0]}}}",
+                      rf"{area} = {float_latex(v.area, 6)}{area_unit} \tag{{{tags[1]}}}"]
 
     def _tags(self) -> tuple[str, str]:
         return ("SO.9", "SO.10") if self.order == 2 else ("1.8", "3.25")

@@ -162,6 +162,23 @@ class Tip(RichDisplay, ABC):
         r = points(r, "r")
         return self.profile(r, 0.0 * r)
 
+    def radial_slope(self, r: Any) -> Any:
+        """``dPhi/dr`` of an axisymmetric tip at the radii ``r`` (numpy), where the tip knows it in closed form; the
+        direct axisymmetric solver uses it for the half-space part of the edge condition.  Default: a
+        :class:`PunchError` (the solver then works without it).
+        """
+        raise PunchError(f"the {self.name} has no closed-form radial slope dPhi/dr")
+
+    @property
+    def radial_breakpoints(self) -> tuple[float, ...]:
+        """Radii where Phi'' of an axisymmetric tip jumps (a blunted cone's tangent join); ``()`` by default."""
+        return ()
+
+    @property
+    def support_radius(self) -> float:
+        """The radius beyond which the tip is absent (``Phi = +inf``: the exact sphere's ``R``); ``inf`` by default."""
+        return math.inf
+
     @abstractmethod
     def level_set(self, delta0: Any) -> LevelSet | None:
         """The integrals of the force law over ``{Phi < delta0}`` (:class:`LevelSet`), or None where the tip has
@@ -208,15 +225,16 @@ def positive_depth(delta0: Any) -> float:
 # the registry of tip kinds
 # =============================================================================================
 #: the values of :attr:`TipParameter.unit_kind`
-UNIT_KINDS = ("length", "angle", "number", "expression")
+UNIT_KINDS = ("length", "angle", "number", "expression", "profile")
 
 
 @dataclass(frozen=True)
 class TipParameter:
     """One parameter of a tip kind, as a user names it in ``kind:key=value``.
 
-    ``unit_kind`` is ``"length"``, ``"angle"``, ``"number"`` or ``"expression"`` (a formula in ``x_1, x_2``, read by
-    the restricted grammar); ``aliases`` are other keys accepted for it; ``required`` says whether the constructor
+    ``unit_kind`` is ``"length"``, ``"angle"`` (degrees), ``"number"``, ``"expression"`` (a formula in ``x_1, x_2``,
+    read by the restricted grammar) or ``"profile"`` (a radial profile in ``r``, read with ``radial=True``);
+    ``aliases`` are other keys accepted for it; ``required`` says whether the constructor
     needs it (otherwise a missing value stays a symbol).
     """
 

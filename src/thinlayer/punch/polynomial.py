@@ -189,6 +189,41 @@ class Punch(Tip):
         return FlatPunch(a)
 
     @classmethod
+    def cone(cls, half_angle=None) -> Tip:
+        """Cone ``Phi = r cot(alpha)``, half-angle in degrees (:class:`~thinlayer.punch.Cone`)."""
+        from .cone import Cone
+
+        return Cone(half_angle)
+
+    @classmethod
+    def sphere(cls, R=None) -> Tip:
+        """Exact sphere ``Phi = R - sqrt(R^2 - r^2)`` (:class:`~thinlayer.punch.Sphere`)."""
+        from .sphere import Sphere
+
+        return Sphere(R)
+
+    @classmethod
+    def blunted_cone(cls, R=None, half_angle=None) -> Tip:
+        """Cone with a spherical apex, tangent join (:class:`~thinlayer.punch.BluntedCone`), angle in degrees."""
+        from .blunted_cone import BluntedCone
+
+        return BluntedCone(R, half_angle)
+
+    @classmethod
+    def power_law(cls, C=None, n=None) -> Tip:
+        """``Phi = C r^n``, real ``n >= 1`` (:class:`~thinlayer.punch.PowerLaw`)."""
+        from .power_law import PowerLaw
+
+        return PowerLaw(C, n)
+
+    @classmethod
+    def revolution(cls, expr) -> Tip:
+        """A profile ``Phi(r)`` read by the restricted grammar (:class:`~thinlayer.punch.Revolution`)."""
+        from .revolution import Revolution
+
+        return Revolution(expr)
+
+    @classmethod
     def fourth_degree(cls, R=None, K=None) -> "Punch":
         """Fourth-degree paraboloid ``Phi = (x1^2 + x2^2)/(2R) + (x1^2 + x2^2)^2/K^3`` (section 5)."""
         r = sp.Symbol("R", positive=True) if R is None else as_expr(R)

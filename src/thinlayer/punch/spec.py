@@ -70,6 +70,7 @@ def tip_from_spec(spec: Any) -> Tip:
             raise TipSpecError(f"the key {par.name!r} is given twice in the tip spec {spec!r:.80}")
         try:
             values[par.name] = parse_expression(text.strip(), coordinates=par.unit_kind == "expression",
+                                                radial=par.unit_kind == "profile",
                                                 what=f"the {par.description} {par.name}")
         except ExpressionError as exc:
             raise (type(exc) if isinstance(exc, WorkLimitError) else TipSpecError)(
