@@ -250,9 +250,12 @@ def test_no_layer_type_or_name_checks_outside_layers():
 #: export/), which still ask a layer for its base or a tip for its class or name.  Removed when the
 #: models/sections/cli branches merge; the list only shrinks (a module that no longer offends must leave it).
 NOT_YET_MIGRATED = {
-    "thinlayer.export.cli", "thinlayer.export.report",
-    "thinlayer.export.derivation", "thinlayer.export._second_order_section", "thinlayer.export._errata_section",
-    "thinlayer.export._flat_section",
+    "thinlayer.export.cli",
+    # the report's sections, moved out of report.py/derivation.py by the sections branch with their
+    # `layer.base ==` tests (10 lines)
+    "thinlayer.export.sections.base", "thinlayer.export.sections.boundary_layer", "thinlayer.export.sections.contact",
+    "thinlayer.export.sections.errata", "thinlayer.export.sections.flat_punch", "thinlayer.export.sections.kernel",
+    "thinlayer.export.sections.second_order",
 }
 
 
