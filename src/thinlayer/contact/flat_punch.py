@@ -368,7 +368,9 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
     lo, hi = math.log(sys.float_info.min), math.log(sys.float_info.max)
     log_area = math.log(math.pi) + 2 * math.log(radius)
     if not lo <= log_area <= hi:  # before any model: the disc's area alone leaves the double range
-        raise InputError(f"the flat punch's contact area pi a^2 is 1e{log_area / math.log(10):.1f}, "
+        exp10 = log_area / math.log(10)
+        shown = f"{10 ** (exp10 - math.floor(exp10)):.2g}e{math.floor(exp10):+d}"  # 3.1e-600: not a double
+        raise InputError(f"the flat punch's contact area pi a^2 is {shown}, "
                          f"{'below' if log_area < 0 else 'beyond'} the double range (a = {radius:.3g}): express the "
                          "lengths in other units")
     with np.errstate(over="ignore", under="ignore", divide="ignore"):  # an estimate of inf just declines a model
