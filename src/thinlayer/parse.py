@@ -17,6 +17,16 @@ name a plain sympy Symbol of that name -- ``E``, ``I``, ``S``, ``N``, ``Q``, ``b
 (a call, an attribute, a string, ``^``, ``[``, ``=``, ...) is an :class:`ExpressionError` naming the token
 and its position.
 
+A radial profile ``Phi(r)`` of a tip of revolution (``parse_expression(text, radial=True)``,
+:meth:`thinlayer.Punch.revolution`) is read by the same grammar with three additions and the same bounds::
+
+    atom  := number | name | "(" expr ")" | ("sqrt" | "abs") "(" expr ")"
+    power := atom ("**" unary)?        (the exponent a number: an integer or an exact rational p/q, |p|, q <= 1000)
+
+The name ``r`` is the radius (``thinlayer.parse.RADIUS``, a nonnegative Symbol), the coordinates ``x_1, x_2`` are
+not names there, ``sqrt`` and ``abs`` are the only calls (any other call, attribute or keyword stays an error), and a
+decimal exponent is exact (``r**1.5`` is ``r**(3/2)``).
+
 Work is bounded before it starts, by cost and not by shape (each limit a :class:`~thinlayer.errors.WorkLimitError`
 naming it and why): the text's length (:data:`MAX_LENGTH`), the nesting depth, each exponent (an integer of
 magnitude at most :data:`MAX_EXPONENT`), each number literal (an integer of at most :data:`MAX_DIGITS` digits; a
@@ -54,7 +64,7 @@ from . import symbols as S
 from .errors import InputError, InputTypeError, WorkLimitError, boundary, boundary_methods
 
 __all__ = ["Cost", "ExpressionError", "MAX_BITS", "MAX_DIGITS", "MAX_EXPONENT", "MAX_FLOAT_DIGITS", "MAX_LENGTH",
-           "MAX_PARAMETERS", "MAX_TERMS", "MAX_TOTAL_DEGREE", "as_expr", "check_cost", "expression_cost",
+           "MAX_PARAMETERS", "MAX_TERMS", "MAX_TOTAL_DEGREE", "RADIUS", "as_expr", "check_cost", "expression_cost",
            "parse_expression", "parse_number", "sympy_value"]
 
 #: longest formula read (characters)
@@ -79,6 +89,11 @@ MAX_TERMS = 2000
 MAX_PARAMETERS = 250
 
 _ALLOWED = "numbers, the coordinates x_1, x_2, parameter names, + - * / ** and parentheses"
+_ALLOWED_RADIAL = "numbers, the radius r, parameter names, + - * / **, parentheses, sqrt(...) and abs(...)"
+#: the radius of a radial profile Phi(r) read with ``radial=True``
+RADIUS = sp.Symbol("r", nonnegative=True)
+#: the calls a radial profile may make, and what they build
+_RADIAL_FUNCTIONS = {"sqrt": sp.sqrt, "abs": sp.Abs}
 _TOKEN = re.compile(r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*)"
                     r"|(?P<op>\*\*|[-+*/()]))")
 
@@ -246,7 +261,9 @@ def _tokens(text: str) -> list[tuple[str, str, int]]:
 
 
 class _Parser:
-    def __init__(self, text: str, names: Mapping[str, sp.Symbol], allowed: frozenset[str] | None):
+    def __init__(self, text: str, names: Mapping[str, sp.Symbol], allowed: frozenset[str] | None,
+                 radial: bool = False):
+        self.radial = radial
         self.toks = _tokens(text)
         self.i = 0
         self.names = dict(names)
@@ -315,8 +332,21 @@ class _Parser:
             self.deeper()
             exp = self.unary()
             self.depth -= 1
+            if self.radial and exp.is_Float:  # a decimal is exact: 1.5 is 3/2
+                exp = sp.Rational(str(exp))
+            if self.radial and exp.is_Rational and not exp.is_Integer:
+                if abs(int(exp.p)) > MAX_EXPONENT or int(exp.q) > MAX_EXPONENT:
+                    raise ExpressionError(f"the exponent {exp} after position {tok[2]} must be a rational p/q with "
+                                          f"|p|, q at most {MAX_EXPONENT}")
+                if base == 0 and exp < 0:
+                    raise ExpressionError(f"0 to a negative power at position {tok[2]}")
+                cost = _power_cost(expression_cost(base), int(exp.p), len(base.free_symbols))
+                if cost.bits > MAX_BITS or cost.terms > MAX_TERMS or cost.degree > MAX_TOTAL_DEGREE:
+                    check_cost(base**0, cost=cost, what=f"power at position {tok[2]}")
+                return base**exp
             if not (exp.is_Integer and abs(int(exp)) <= MAX_EXPONENT):
-                raise ExpressionError(f"the exponent {exp} after position {tok[2]} must be an integer of magnitude "
+                what = "an integer or a rational p/q" if self.radial else "an integer"
+                raise ExpressionError(f"the exponent {exp} after position {tok[2]} must be {what} of magnitude "
                                       f"at most {MAX_EXPONENT}")
             if base == 0 and exp < 0:
                 raise ExpressionError(f"0 to a negative power at position {tok[2]}")
@@ -334,11 +364,24 @@ class _Parser:
             return _number(value, pos)
         if kind == "name":
             nxt = self.peek()
+            if nxt is not None and nxt[1] == "(" and self.radial and value in _RADIAL_FUNCTIONS:
+                self.take("(")
+                self.deeper()
+                inner = self.expr()
+                self.depth -= 1
+                self.take(")")
+                return _RADIAL_FUNCTIONS[value](inner)
+            if nxt is not None and nxt[1] == "(" and self.radial:
+                raise ExpressionError(f"{value}(...) at position {pos} is a call: a radial profile may call only "
+                                      f"sqrt(...) and abs(...) ({_ALLOWED_RADIAL})")
             if nxt is not None and nxt[1] == "(":
                 raise ExpressionError(f"{value}(...) at position {pos} is a function call, not a polynomial term: "
                                       f"a formula here is a polynomial with parameters ({_ALLOWED})")
             if value in self.names:
                 return self.names[value]
+            if self.radial and value in _COORDINATE_NAMES:
+                raise ExpressionError(f"{value!r} at position {pos}: a radial profile is a formula in the radius r, "
+                                      "not in the coordinates x_1, x_2")
             if self.allowed is not None and value not in self.allowed:
                 valid = ", ".join(sorted(set(self.names) | self.allowed)) or "none"
                 raise ExpressionError(f"unknown name {value!r} at position {pos}: the valid names are {valid}")
@@ -383,7 +426,7 @@ def _number(text: str, pos: int) -> sp.Number:
 
 @boundary
 def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str] | None = None,
-                     what: str = "formula") -> sp.Expr:
+                     what: str = "formula", radial: bool = False) -> sp.Expr:
     """A user's formula as a sympy expression, read by the restricted grammar (never evaluated as code).
 
     Parameters
@@ -396,6 +439,9 @@ def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str
         The parameter names allowed; None allows any name.
     what : str
         What the formula is, for the error message (``"punch"``, ``"R_1"``, ...).
+    radial : bool
+        Read a radial profile ``Phi(r)``: the name ``r`` is :data:`RADIUS`, ``sqrt(...)``, ``abs(...)`` and rational
+        exponents are allowed, the coordinates are not (module docstring).
 
     Returns
     -------
@@ -410,10 +456,12 @@ def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str
         raise InputTypeError(f"{what} must be a string here, got {type(text).__name__}")
     if len(text) > MAX_LENGTH:
         raise ExpressionError(f"cannot read the {what}: it has {len(text)} characters, more than {MAX_LENGTH}")
-    coords = {"x_1": S.x1, "x_2": S.x2, "x1": S.x1, "x2": S.x2} if coordinates else {}
+    coords = {"x_1": S.x1, "x_2": S.x2, "x1": S.x1, "x2": S.x2} if coordinates and not radial else {}
+    if radial:
+        coords = {"r": RADIUS}
     allowed = None if names is None else frozenset(names)
     try:
-        parser = _Parser(text, coords, allowed)
+        parser = _Parser(text, coords, allowed, radial)
         if not parser.toks:
             raise ExpressionError("it is empty")
         out = parser.expr()

@@ -1,0 +1,166 @@
+r"""The thin-layer force law (1.8) of a tip of revolution, read through its level set (issue 24).
+
+The general law of :mod:`thinlayer.asymptotics.force_law` is
+
+    P = (vartheta/(A H)) V + coefficient * J + remainder,        coefficient = (vartheta H/A)(M_1 + m_1/2),
+
+with ``V = iint (delta0 - Phi)_+`` and ``J = oint |grad Phi| ds = iint Laplacian Phi`` over the level set
+``{Phi < delta0}``.  Its derivation uses the inner terms ``p_0``, ``p_1`` (2.26)-(2.27), (4.1) and the boundary layer
+(3.15)-(3.25) at the contour; it holds for a tip whose inner expansion reaches order 1
+(:attr:`~thinlayer.punch.Tip.max_inner_order` >= 1), which needs ``Laplacian Phi`` integrable: the divergence
+theorem ``iint Laplacian Phi = oint |grad Phi|`` then holds because ``2 pi r Phi'(r) -> 0`` at an apex.  The
+coefficient is the engine's, derived on any polynomial punch (it does not depend on the punch); V and J come from the
+tip's :meth:`~thinlayer.punch._radial.RadialTip.level_set_expressions` (symbolic) or ``level_set`` (numeric).
+
+Order of the remainder (relative to ``P_0``, ``a`` the level-set radius):
+
+* the boundary layer's next order (curvature of ``Gamma_0``, ``p_1`` seen by the boundary layer): ``O((H/a)^3)``
+  (module docstring of :mod:`~thinlayer.asymptotics.force_law`);
+* an apex ``Phi ~ C r^n`` (n not an even integer): the inner expansion fails in the region ``r ~ H``, where the
+  pressure differs from ``p_0 + p_1`` by ``O(vartheta H C r^{n-2})``, i.e. a force ``O(vartheta C H^{n+1})``; against
+  ``P_0 ~ vartheta C a^{n+2}/H`` that is ``O((H/a)^{n+2})``.  The next inner term ``p_2 ~ H^3 Laplacian^2 Phi
+  ~ H^3 r^{n-4}`` integrated from ``r ~ H`` gives the same order (``n < 2``) -- no logarithm for ``n != 2``.
+
+So the remainder is ``O((H/a)^q)`` with ``q = min(3, n + 2)`` -- for the cone (``n = 1``) ``q = 3``: at a fixed
+contact radius ``|P - P_0 - P_1| ~ vartheta cot(alpha) H^2``.  For the cone
+``V = pi tan^2(alpha) delta0^3/3``, ``J = 2 pi delta0``:
+
+    P_0 = pi vartheta tan^2(alpha) delta0^3/(3 A H),        P_1 = 2 pi delta0 (vartheta H/A)(M_1 + m_1/2).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from .. import symbols as S
+from ..display import RichDisplay, fmt
+from ..errors import InputError, boundary, boundary_methods
+from ..layers.kernels import LayerKernel
+from ..normal import normal_latex
+from ..punch import Punch, Tip
+from .force_law import force_law, lambdify_law
+
+__all__ = ["TipForceLaw", "tip_force_law"]
+
+
+@boundary_methods
+@dataclass(frozen=True)
+class TipForceLaw(RichDisplay):
+    """``P(delta0) = P0 + P1 + O(P0 (H/a)^q)`` for a tip of revolution (module docstring).
+
+    Attributes
+    ----------
+    layer, tip
+        The layer kernel and the tip.
+    P0, P1 : sympy.Expr or None
+        The leading force and its first correction in ``delta_0, H, nu`` and the tip's parameters (None when the
+        level set has no closed form: then :meth:`evaluate`).
+    coefficient : sympy.Expr
+        ``(vartheta H/A)(M_1 + m_1/2)``, the engine's (:func:`~thinlayer.asymptotics.force_law.force_law`).
+    remainder_order : float
+        ``q``: the remainder is ``O(P0 (H/a)^q)``.
+    remainder_sources : str
+        Where the remainder comes from.
+    """
+
+    layer: LayerKernel
+    tip: Tip
+    P0: sp.Expr | None
+    P1: sp.Expr | None
+    coefficient: sp.Expr
+    remainder_order: float
+    remainder_sources: str
+
+    equation = "1.8"
+
+    @property
+    def force(self) -> sp.Expr | None:
+        """``P0 + P1``."""
+        return None if self.P0 is None else self.P0 + self.P1
+
+    def evaluate(self, delta0: float, H: float, mu: float = 1.0) -> tuple[float, float]:
+        """``(P0, P1)`` at numbers, through the tip's numeric level set (any tip of revolution)."""
+        ls = self.tip.level_set(delta0)
+        sub = {S.H: H, S.mu: mu}
+        th = float((self.layer.vartheta / (self.layer.A * S.H)).subs(sub))
+        k = float(self.coefficient.subs(sub))
+        return th * ls.volume, k * ls.flux
+
+    def lambdify(self, args=None, backend: str = "numpy"):
+        """``P0 + P1`` as a numeric function of ``(delta_0, H, mu, ...)`` (closed forms only)."""
+        if self.P0 is None:
+            raise InputError(f"the force law of the {self.tip.name} has no closed form: use .evaluate(delta0, H, mu)")
+        from .force_law import law_arguments
+
+        args = law_arguments(self.force) if args is None else args
+        return lambdify_law(args, (self.force,), backend)
+
+    def latex(self) -> str:
+        q = f"{self.remainder_order:g}"
+        body = r"\frac{\vartheta V}{\mathcal{A} H} + " + normal_latex(self.coefficient) + r"\, J" \
+            if self.P0 is None else normal_latex(self.P0) + " + " + normal_latex(self.P1)
+        return rf"P = {body} + O\!\left(P_0 (H/a)^{{{q}}}\right) \tag{{1.8}}"
+
+    def text_lines(self) -> list[str]:
+        """The lines of ``str(self)``."""
+        lines = [f"TipForceLaw: {self.tip.name} on {self.layer}   (1.8)"]
+        if self.P0 is not None:
+            lines += [f"  P0 = {fmt(self.P0)}", f"  P1 = {fmt(self.P1)}"]
+        else:
+            lines += [f"  P = vartheta V/(A H) + ({fmt(self.coefficient)}) J  (V, J from the level set)"]
+        lines.append(f"  remainder O(P0 (H/a)^{self.remainder_order:g}): {self.remainder_sources}")
+        return lines
+
+
+def _apex_exponent(tip: Tip) -> float | None:
+    """``n`` of ``Phi ~ C r^n`` at the apex when n is not an even integer (an apex), else None."""
+    if tip.smoothness != "apex":
+        return None
+    from ..punch._radial import r
+
+    first = tip.radial_expr.args[0][0] if isinstance(tip.radial_expr, sp.Piecewise) else tip.radial_expr
+    _, e = sp.simplify(first).as_leading_term(r).as_coeff_exponent(r)
+    return float(e) if e.is_number else None
+
+
+@boundary
+def tip_force_law(layer: LayerKernel, tip: Any) -> TipForceLaw:
+    """The force law (1.8) of a tip of revolution through its level set (module docstring).
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer, Punch
+    >>> law = tip_force_law(BondedLayer(), Punch.cone())
+    >>> law.remainder_order
+    3.0
+    """
+    if not isinstance(layer, LayerKernel) or not layer.has_thickness:
+        raise InputError(f"the thin-layer law needs a layer of finite thickness (e.g. BondedLayer(0.3)), got {layer!r}")
+    if not isinstance(tip, Tip) or not tip.axisymmetric or tip.polynomial is not None or tip.fixed_contact:
+        raise InputError(f"tip_force_law takes a tip of revolution that is not a polynomial (Punch.cone(70), "
+                         f"Punch.sphere(R), ...); polynomial punches: thinlayer.force_law; got {tip!r:.80}")
+    order = tip.max_inner_order
+    if order is not None and order < 1:
+        raise InputError(f"the inner expansion of the {tip.name} stops before order 1: no first correction")
+    # the coefficient of J is the engine's, derived on a polynomial punch: it does not depend on the shape
+    coefficient = force_law(layer, Punch.paraboloid()).coefficient
+    exprs = tip.level_set_expressions()
+    th = layer.vartheta / (layer.A * S.H)
+    P0 = P1 = None
+    if exprs is not None:
+        P0 = sp.factor(th * exprs["volume"])
+        P1 = sp.factor(coefficient * exprs["flux"])
+    n = _apex_exponent(tip)
+    if n is None:
+        q, why = 3.0, "the boundary layer's next order (curvature of the contour)"
+    else:
+        q = min(3.0, n + 2.0)
+        why = (f"the boundary layer's next order (H/a)^3 and the apex region r ~ H, (H/a)^{n + 2:g} (Phi ~ r^{n:g})"
+               if not math.isclose(n + 2, 3) else "the boundary layer's next order and the apex region r ~ H, both "
+                                                  "(H/a)^3 (Phi ~ r)")
+    if tip.radial_breakpoints:
+        why += "; valid while the contour stays off the join r_t (Laplacian^2 Phi has a line source there)"
+    return TipForceLaw(layer, tip, P0, P1, coefficient, q, why)

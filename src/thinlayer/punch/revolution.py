@@ -1,0 +1,103 @@
+r"""A tip of revolution given by its profile ``Phi(r)``, read by the restricted grammar (issue 24).
+
+``Punch.revolution("R - sqrt(R**2 - r**2)")`` or ``tip_from_spec("revolution:expr=2*r**1.5")``: the formula is read by
+:func:`thinlayer.parse.parse_expression` with ``radial=True`` (the radius ``r``, parameter names, ``+ - * / **``,
+rational exponents, ``sqrt(...)``, ``abs(...)``; never evaluated as code).  A numeric profile must vanish at
+``r = 0`` and increase (checked on a sample).  Its inner order and smoothness are read off the apex
+(:func:`~thinlayer.punch._radial.apex_inner_order`); its level set is found by root finding and quadrature.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import sympy as sp
+
+from ..errors import WorkLimitError, boundary_methods
+from ..parse import RADIUS, ExpressionError, check_cost, parse_expression
+from ._radial import RadialTip, check_profile
+from .base import PunchError, TipKind, TipParameter, register_tip
+
+
+def _profile_expr(expr: Any) -> sp.Expr:
+    if isinstance(expr, str):
+        try:
+            return parse_expression(expr, radial=True, what="radial profile Phi(r)")
+        except ExpressionError as exc:
+            raise (type(exc) if isinstance(exc, WorkLimitError) else PunchError)(f"the profile: {exc}") from None
+    if not isinstance(expr, sp.Expr) or isinstance(expr, sp.Piecewise):
+        raise PunchError(f"the profile of a tip of revolution must be a formula in r (a string such as "
+                         f"'R - sqrt(R**2 - r**2)'), got {expr!r:.60}")
+    # a sympy expression: its plain-named r becomes the radius; it must be built from what the grammar builds
+    expr = expr.xreplace({q: RADIUS for q in expr.free_symbols if q.name == "r"})
+    allowed = (sp.Add, sp.Mul, sp.Pow, sp.Abs, sp.Symbol, sp.Number)
+    bad = [a for a in sp.preorder_traversal(expr) if not isinstance(a, allowed)]
+    if bad:
+        raise PunchError(f"the profile may hold only + - * / **, sqrt and abs of r and parameters; {bad[0]} is not")
+    try:
+        return check_cost(expr, "radial profile Phi(r)")
+    except WorkLimitError as exc:
+        raise type(exc)(str(exc)) from None
+
+
+@boundary_methods
+@dataclass(frozen=True, init=False)
+class Revolution(RadialTip):
+    """A tip of revolution ``Phi(r)`` from a formula (module docstring).
+
+    Examples
+    --------
+    >>> from thinlayer import Punch
+    >>> tip = Punch.revolution("r**2/2 + r**3")
+    >>> tip.smoothness, tip.max_inner_order
+    ('apex', 2)
+    """
+
+    values: tuple
+    name: ClassVar[str] = "tip of revolution"
+
+    def __init__(self, expr: Any) -> None:
+        e = _profile_expr(expr)
+        if RADIUS not in e.free_symbols:
+            raise PunchError(f"the profile Phi(r) = {e} does not depend on r")
+        object.__setattr__(self, "values", (("expr", e),))
+        check_profile(self)
+
+    def _rebuild(self, values: dict) -> Revolution:  # pragma: no cover - subs is overridden
+        return Revolution(values["expr"])
+
+    def subs(self, values) -> Revolution:
+        """A new tip with parameters replaced (strings read by the restricted grammar, never evaluated)."""
+        from collections.abc import Mapping
+
+        from ..parse import parse_number
+
+        if not isinstance(values, Mapping):
+            raise PunchError(f"the tip's parameter values must be a dict, got {type(values).__name__}")
+        by_name = {q.name: q for q in self.parameters}
+        out = {}
+        for k, v in values.items():
+            key = k.name if isinstance(k, sp.Symbol) else k
+            if key not in by_name:
+                raise PunchError(f"{k!r} is not a parameter of the tip of revolution; its parameters are "
+                                 f"{', '.join(by_name) or 'none'}")
+            try:
+                out[by_name[key]] = parse_number(v, f"the value of {key}")
+            except (TypeError, ValueError) as exc:
+                raise PunchError(str(exc)) from None
+        return Revolution(self.radial_expr.xreplace(out))
+
+    @property
+    def kind(self) -> str:
+        """``"revolution"``."""
+        return "revolution"
+
+    @property
+    def radial_expr(self) -> sp.Expr:
+        """The profile as read."""
+        return self.values[0][1]
+
+
+register_tip(TipKind("revolution", Revolution, (
+    TipParameter("expr", "profile", "radial profile Phi(r)", ("Phi", "profile"), required=True),),
+    "any tip of revolution Phi(r), read by the restricted grammar (r, sqrt, abs, rational powers) (issue 24)"))
