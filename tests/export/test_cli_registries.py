@@ -49,3 +49,22 @@ def test_one_name_for_the_base():
         assert _choices(p, "--base") == ("bonded", "frictionless"), cmd
         text = p.format_help()
         assert "--base" in text and "--layer" not in text, cmd
+
+
+def test_solve_models_and_tips_are_the_registries(capsys):
+    from thinlayer.contact.models import fit_names, model_names
+    from thinlayer.punch import TIPS
+
+    assert _choices(_sub("solve"), "--model") == model_names()
+    assert _choices(_sub("fit"), "--model") == fit_names()
+    # --tip takes every kind of the tip registry (its value is parsed by tip_from_spec)
+    assert "thinlayer.punch.TIPS" in _sub("solve").format_help()
+    argv = ["solve", "--nu", "0.3", "--delta0", "0.01", "--H", "0.5", "--mu", "1", "--json"]
+    assert main([*argv, "--tip", "flat:a=1"]) == 0
+    a = json.loads(capsys.readouterr().out)
+    assert main([*argv, "--flat", "1"]) == 0
+    assert json.loads(capsys.readouterr().out)["force"] == a["force"]
+    assert main([*argv, "--tip", "nosuchtip:a=1"]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "cone" in err, err
+    assert "flat" in TIPS and "cone" in TIPS

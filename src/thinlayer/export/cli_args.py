@@ -58,11 +58,21 @@ def punch_from_args(args, allow_flat: bool = False):
     from ..punch import Punch
 
     flat_a = getattr(args, "flat", None) if allow_flat else None
-    given = [o for o, v in (("--punch", args.punch), ("--kind", args.kind), ("--flat", flat_a)) if v is not None]
+    spec = getattr(args, "tip", None) if allow_flat else None
+    given = [o for o, v in (("--tip", spec), ("--punch", args.punch), ("--kind", args.kind), ("--flat", flat_a))
+             if v is not None]
     if len(given) != 1:
-        choices = "--punch EXPR (a polynomial in x_1, x_2), --kind NAME " + f"({', '.join(KINDS)})" + (
+        choices = ("--tip KIND:key=value,... (thinlayer.punch.TIPS), " if allow_flat else "") + (
+            "--punch EXPR (a polynomial in x_1, x_2), --kind NAME " + f"({', '.join(KINDS)})") + (
             " and --flat A" if allow_flat else "")
         raise BadInput(f"give exactly one of {choices}" + (f"; got {' and '.join(given)}" if given else ""))
+    if spec is not None:
+        from ..punch import tip_from_spec
+
+        if args.param:
+            raise BadInput("--tip KIND:key=value,... holds the tip's values: leave out --param")
+        tip = tip_from_spec(spec)
+        return tip, bool(getattr(tip, "fixed_contact", False))
     if flat_a is not None:
         from ..punch import FlatPunch
 
@@ -107,6 +117,9 @@ def add_punch_args(p: argparse.ArgumentParser, flat: bool = False) -> None:
     p.add_argument("--param", action="append", metavar="NAME=VALUE",
                    help="a value for a punch parameter (repeatable), e.g. --param R_1=4 --param R_2=1")
     if flat:
+        p.add_argument("--tip", metavar="KIND:key=value,...",
+                       help="a tip of the registry thinlayer.punch.TIPS, e.g. paraboloid:R=10, cone:half_angle=70, "
+                            "flat:a=1, sphere:R=2 (instead of --kind/--param, --punch, --flat)")
         p.add_argument("--flat", type=finite, metavar="A",
                        help="a flat-ended cylinder of radius A instead of --kind/--punch (--delta0 is its depth w0)")
 

@@ -31,7 +31,8 @@ __all__ = ["MAX_SWEEP", "add_solve_parser", "cmd_solve", "parse_values", "pretty
 MAX_SWEEP = 1000
 #: the options that may be swept
 SWEPT = ("delta0", "force", "H")
-#: the public model names of solve() (the --model choices): until the model registry lands, the names solve() takes
+#: the --model choices: the public names of the model registry (thinlayer.contact.models.model_names(), which
+#: imports the models), written out so that ``thinlayer --help`` imports none; a test keeps them equal
 MODEL_CHOICES = ("auto", "asymptotic", "compressible", "two-term", "incompressible", "any-thickness", "direct")
 #: every name a reason may start a segment with (the models of solve() and the flat punch's)
 _REASON_NAMES = ("compressible", "two-term", "incompressible", "any-thickness", "direct", "thin-layer",
@@ -225,16 +226,26 @@ def _pct(x: float | None) -> str:
     return f"± {100 * x:.2g} %"
 
 
+def expr_missing(punch: Any) -> bool:
+    """Whether a tip has no formula to print (its description says what it is)."""
+    return getattr(punch, "expr", None) is None
+
+
 def _punch_text(punch: Any, params: dict[str, float] | None = None) -> str:
     """The punch once: its name and Φ in Unicode maths with its parameters' values, or its own description."""
     from ..normal import normal_text, symbol_text
 
     desc = getattr(punch, "description", None)
-    if isinstance(desc, str) and desc:
+    if isinstance(desc, str) and desc and (getattr(punch, "fixed_contact", False) or expr_missing(punch)):
         return pretty(desc)
     expr = getattr(punch, "expr", None)
     if expr is None:
         return str(punch.name)
+    if getattr(punch, "polynomial", True) is None:  # a tip of revolution that is no polynomial: Φ(r)
+        try:
+            return f"{punch.name}, Φ(r) = {normal_text(getattr(punch, 'radial_expr', expr))}"
+        except Exception:  # noqa: BLE001 - a form the printer does not know: the tip's own words
+            return pretty(str(desc).replace("Phi", "Φ"))
     values = "".join(f", {symbol_text(k)} = {_g(v)}" for k, v in (params or {}).items())
     return f"{punch.name}, Φ = {normal_text(expr)}{values}"
 
@@ -355,10 +366,10 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                     "without --max-pressure). "
                     f"CSV columns: {', '.join(CSV_COLUMNS)}.",
         epilog="examples:\n"
-               "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 --H 0.1 --E 2 --json\n"
+               "  thinlayer solve --nu 0.3 --tip paraboloid:R=10 --delta0 0.1 --H 0.1 --E 2 --json\n"
                "  thinlayer solve --base frictionless --nu 0.5 --punch 'x_1**2/8 + x_2**2/2' --force 100 --H 0.05 "
                "--mu 1\n"
-               "  thinlayer solve --flat 1 --nu 0.3 --delta0 0.01 --H 0.5 --E 2.6\n"
+               "  thinlayer solve --tip flat:a=1 --nu 0.3 --delta0 0.01 --H 0.5 --E 2.6\n"
                "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 --H 0.05 --mu 1 --order 2\n"
                "  thinlayer solve --nu 0.49 --kind paraboloid --param R=10 --delta0 0.1 --H 0.5 --mu 1 --verbose\n"
                "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.01:1:100 --H 0.1 --E 2 "
