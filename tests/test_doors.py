@@ -183,6 +183,12 @@ INVENTORY: dict[str, list] = {
                                             lambda s: tl.Punch.elliptic_paraboloid(1, s)],
     "thinlayer.Punch.paraboloid": [lambda s: tl.Punch.paraboloid(s)],
     "thinlayer.Punch.flat": [lambda s: tl.Punch.flat(s)],
+    # the tips of revolution (issue 24): each argument read by the grammar or refused
+    "thinlayer.Punch.cone": [lambda s: tl.Punch.cone(s)],
+    "thinlayer.Punch.sphere": [lambda s: tl.Punch.sphere(s)],
+    "thinlayer.Punch.blunted_cone": [lambda s: tl.Punch.blunted_cone(s, 70), lambda s: tl.Punch.blunted_cone(1, s)],
+    "thinlayer.Punch.power_law": [lambda s: tl.Punch.power_law(s, 2), lambda s: tl.Punch.power_law(1, s)],
+    "thinlayer.Punch.revolution": [lambda s: tl.Punch.revolution(s)],
     "thinlayer.Punch.fourth_degree": [lambda s: tl.Punch.fourth_degree(s), lambda s: tl.Punch.fourth_degree(1, s)],
     "thinlayer.Punch.general": [lambda s: tl.Punch.general(s), lambda s: tl.Punch.general(2, prefix=s)],
     "thinlayer.Punch.lambdify": [lambda s: F().P.lambdify(args=[s]), lambda s: F().P.lambdify(backend=s)],
@@ -195,7 +201,7 @@ INVENTORY: dict[str, list] = {
     # the tip protocol (thinlayer.punch.Tip): every tip answers these
     **{f"{k}.{m}": [lambda s, t=t, m=m: getattr(t, m)(s)] for k, t in (
         ("thinlayer.Punch", tl.Punch.paraboloid(10)), ("thinlayer.FlatPunch", tl.FlatPunch(1)),
-        ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2"))) for m in ("level_set", "radial_profile")},
+        ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2"))) for m in ("level_set", "radial_profile", "radial_slope")},
     **{f"{k}.profile": [lambda s, t=t: t.profile(s, 0.0), lambda s, t=t: t.profile(0.0, s)] for k, t in (
         ("thinlayer.Punch", tl.Punch.paraboloid(10)), ("thinlayer.FlatPunch", tl.FlatPunch(1)),
         ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2")))},
