@@ -201,7 +201,8 @@ INVENTORY: dict[str, list] = {
     # the tip protocol (thinlayer.punch.Tip): every tip answers these
     **{f"{k}.{m}": [lambda s, t=t, m=m: getattr(t, m)(s)] for k, t in (
         ("thinlayer.Punch", tl.Punch.paraboloid(10)), ("thinlayer.FlatPunch", tl.FlatPunch(1)),
-        ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2"))) for m in ("level_set", "radial_profile", "radial_slope")},
+        ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2")))
+        for m in ("level_set", "radial_profile", "radial_slope")},
     **{f"{k}.profile": [lambda s, t=t: t.profile(s, 0.0), lambda s, t=t: t.profile(0.0, s)] for k, t in (
         ("thinlayer.Punch", tl.Punch.paraboloid(10)), ("thinlayer.FlatPunch", tl.FlatPunch(1)),
         ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2")))},
