@@ -22,6 +22,8 @@ from typing import Any
 from .cli_args import (  # noqa: F401 - BadInput and the shared helpers, importable from here as before
     BASES,
     KINDS,
+    NOTE,
+    TIP_KINDS,
     BadInput,
     add_punch_args,
     base_arg,
@@ -30,6 +32,7 @@ from .cli_args import (  # noqa: F401 - BadInput and the shared helpers, importa
     punch_from_args,
     punch_params,
     solve_layer,
+    tip_needs_values,
 )
 
 EXIT_OK, EXIT_FAILURE, EXIT_BAD_INPUT = 0, 1, 2
@@ -268,6 +271,8 @@ def _codegen_result(args):
 
     if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
         raise BadInput("composite needs numeric --nu, --delta0 and --H (and --param values)")
+    if args.tip is not None:
+        tip_needs_values(punch, args.tip)
     sol = solve(_layer(args.nu), punch, delta0=args.delta0, H=args.H, mu=args.mu,
                 parameters=punch_params(args.param), boundary_layer="alexandrov")
     return sol.composite
@@ -310,10 +315,11 @@ def _nearly_incompressible_result(args, punch):
 
     if args.param:
         punch = punch.subs(punch_params(args.param))
-    sphere = punch.name.startswith("paraboloid")
+    radii = _paraboloid_radii(punch)
+    sphere = radii is not None and radii[0] == radii[1]
     if args.result == "two-term":
         if not sphere:
-            raise BadInput("two-term: the two-term model (I.10)-(I.11) is derived for the sphere: --kind paraboloid")
+            raise BadInput("two-term: the two-term model (I.10)-(I.11) is derived for the sphere: --tip paraboloid")
         layer = _layer(args.nu or "symbolic")
         nu = layer.numeric_nu
         if nu is not None and not 0.25 < nu < 0.5:
@@ -324,17 +330,24 @@ def _nearly_incompressible_result(args, punch):
         raise BadInput(f"incompressible: the model is nu = 1/2; leave out --nu (got {args.nu})")
     if sphere:
         return two_term_sphere(IncompressibleLayer())
-    if punch.name == "elliptic paraboloid":
-        import sympy as sp
-
-        from .. import symbols as S
-
-        e = sp.Poly(punch.expr, S.x1, S.x2)
-        return incompressible_ellipse(1 / (2 * e.coeff_monomial(S.x1**2)), 1 / (2 * e.coeff_monomial(S.x2**2)))
+    if radii is not None:
+        return incompressible_ellipse(*radii)
     try:
         return incompressible_axisymmetric(punch)
     except (ValueError, TypeError) as exc:
         raise BadInput(f"incompressible: {exc}") from exc
+
+
+def _paraboloid_radii(punch) -> tuple | None:
+    """``(R1, R2)`` when the tip's polynomial is ``x1^2/(2 R1) + x2^2/(2 R2)`` (R1, R2 numbers or parameters: the
+    paraboloid ``R1 = R2 = R`` or the elliptic paraboloid with its axes along x1, x2); else None.  Read from the
+    tip's :attr:`~thinlayer.punch.Tip.polynomial`, not its name.
+    """
+    poly = punch.polynomial
+    terms = dict(poly.terms()) if poly is not None else {}
+    if set(terms) != {(2, 0), (0, 2)}:
+        return None
+    return 1 / (2 * terms[(2, 0)]), 1 / (2 * terms[(0, 2)])
 
 
 #: what ``thinlayer codegen`` generates (the choices of RESULT)
@@ -367,7 +380,7 @@ def _cmd_codegen_any_thickness(args) -> int:
         from ..layers.kernels import IncompressibleLayer
 
         layer = solve_layer(args.base, args.nu if args.nu not in (None, "symbolic") else "0")
-        if layer.base == "bonded" and layer.numeric_nu == 0.5:
+        if layer.incompressible_at(layer.numeric_nu):
             layer = IncompressibleLayer()
         name = args.name or "thinlayer_flat_punch"
         sources = {lang: flat_punch_source(layer, lang) for lang in langs}
@@ -484,7 +497,7 @@ def _add_inner(sub: Any, fmt: type) -> None:
                        description="Inner expansion p_0 + p_1 + ... for a punch.\n"
                                    "JSON keys: punch, nu, order, arguments, terms, scaled_terms, pressure "
                                    "(each {expr, latex, value}).",
-                       epilog="examples:\n  thinlayer inner --kind elliptic_paraboloid --latex\n"
+                       epilog="examples:\n  thinlayer inner --tip elliptic_paraboloid --latex\n"
                               "  thinlayer inner --punch 'x_1**2/2 + x_2**4' --nu 3/10 --json")
     i.add_argument("--nu", default="symbolic", help="'symbolic' (default), an exact fraction, or a number")
     base_arg(i, "base of the layer: bonded (default) or frictionless", old="--model")
@@ -517,14 +530,14 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                                    "or C), 'flat-punch' (kappa(a/H) of a flat punch, --law thin|thick, one nu).\n"
                                    "Without --out the code is printed. JSON keys: a list of "
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
-                       epilog="examples:\n  thinlayer codegen inner --kind elliptic_paraboloid --nu 3/10 --lang c\n"
-                              "  thinlayer codegen force --kind paraboloid --lang all --out gen\n"
-                              "  thinlayer codegen force --order 2 --kind paraboloid --nu 3/10 --lang c,python\n"
+                       epilog="examples:\n  thinlayer codegen inner --tip elliptic_paraboloid --nu 3/10 --lang c\n"
+                              "  thinlayer codegen force --tip paraboloid --lang all --out gen\n"
+                              "  thinlayer codegen force --order 2 --tip paraboloid --nu 3/10 --lang c,python\n"
                               "  thinlayer codegen coefficients --order 2 --lang fortran,rust --json\n"
-                              "  thinlayer codegen composite --kind paraboloid --param R=2 --nu 0.3 "
+                              "  thinlayer codegen composite --tip paraboloid:R=2 --nu 0.3 "
                               "--delta0 0.25 --H 0.02 --lang python\n"
-                              "  thinlayer codegen incompressible --kind elliptic_paraboloid --lang c,python\n"
-                              "  thinlayer codegen two-term --kind paraboloid --nu 0.45 --lang julia\n"
+                              "  thinlayer codegen incompressible --tip elliptic_paraboloid --lang c,python\n"
+                              "  thinlayer codegen two-term --tip paraboloid --nu 0.45 --lang julia\n"
                               "  thinlayer codegen any-thickness --nu 0.45 --lang python,c --out gen")
     g.add_argument("result", choices=CODEGEN_RESULTS, help="what to generate")
     g.add_argument("--law", choices=("thin", "thick", "any-thickness"), default="thin",
@@ -575,7 +588,7 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="examples:\n"
                "  thinlayer report elliptic_paraboloid --out thinlayer-out --pdf --overwrite\n"
                "  thinlayer coefficients --nu 3/10 --order 4 --json\n"
-               "  thinlayer solve --nu 0.3 --kind elliptic_paraboloid --param R_1=4 --param R_2=1 "
+               "  thinlayer solve --nu 0.3 --tip elliptic_paraboloid:R1=4,R2=1 "
                "--delta0 0.5 --H 0.05 --E 2.6\n\n"
                "exit codes: 0 success, 2 bad input (one-line reason on stderr), 1 other failure,\n"
                "130 Ctrl-C, 143 SIGTERM, 141 output pipe closed")
@@ -635,6 +648,9 @@ def main(argv: list[str] | None = None) -> int:
     try:
         code = args.func(args)
         sys.stdout.flush()
+        note = getattr(args, NOTE, None)
+        if code == EXIT_OK and note:  # a deprecated option: one line after the output (error runs keep one line)
+            _err(f"note: {note}")
         return code
     except BrokenPipeError:
         _silence_stdout()

@@ -11,8 +11,8 @@ import math
 import sys
 from typing import Any
 
-__all__ = ["BASES", "BadInput", "KINDS", "add_punch_args", "base_arg", "finite", "nonfinite", "print_text",
-           "punch_from_args", "punch_params", "solve_layer"]
+__all__ = ["BASES", "BadInput", "KINDS", "NOTE", "TIP_KINDS", "add_punch_args", "base_arg", "finite", "nonfinite",
+           "print_text", "punch_from_args", "punch_params", "solve_layer", "tip_needs_values"]
 
 
 def finite(text: str) -> float:
@@ -47,24 +47,68 @@ def nonfinite(obj: Any, path: str = "") -> str | None:
     return None
 
 
+#: the catalogue names of the deprecated ``--kind NAME`` (each a kind of ``--tip``)
 KINDS = ("elliptic_paraboloid", "paraboloid", "fourth_degree")
+#: the kinds of ``--tip``: the keys of :data:`thinlayer.punch.TIPS`, written out so that building the parser imports
+#: no sympy (``thinlayer --help`` stays fast); a test keeps them equal to the registry's keys
+TIP_KINDS = ("blunted_cone", "cone", "flat", "paraboloid", "elliptic_paraboloid", "fourth_degree", "polynomial",
+             "power_law", "revolution", "sphere")
+#: the attribute of the parsed arguments holding the deprecation note of ``--kind``/``--flat`` (printed by
+#: :func:`thinlayer.export.cli.main` on stderr after a command that succeeded)
+NOTE = "deprecation_note"
+
+
+def _kind_note(kind: str, params: list[str] | None) -> str:
+    """``--kind NAME [--param K=V ...]`` in the words of ``--tip``: ``"--kind paraboloid is deprecated; use --tip
+    paraboloid:R=10"`` (a ``--param`` name that is an alias of the kind's key, ``R_1``, is written as the key).
+    """
+    from ..punch import TIPS
+
+    row = TIPS.get(kind)
+    keys = {k: p.name for p in (row.parameters if row else ()) for k in (p.name, *p.aliases)}
+    items = []
+    for it in params or []:
+        k, _, v = it.partition("=")
+        items.append(f"{keys.get(k.strip(), k.strip())}={v.strip()}")
+    spec = kind + (":" + ",".join(items) if items else "")
+    return f"--kind {kind} is deprecated; use --tip {spec}"
+
+
+def tip_needs_values(tip, spec: str) -> None:
+    """Refuse a ``--tip`` spec that leaves parameters symbolic where numbers are needed (``solve``, ``codegen
+    composite``): one line naming the spec's keys, ``write --tip paraboloid:R=VALUE`` (``--param`` is refused with
+    ``--tip``, so the library's "give --param" would send the user in a circle).
+    """
+    if not tip.parameters:
+        return
+    from ..punch import TIPS
+
+    row = TIPS.get(tip.kind)
+    keys = {a: p.name for p in (row.parameters if row else ()) for a in (p.name, *p.aliases)}
+    missing = [keys.get(str(s), str(s)) for s in tip.parameters]
+    fix = spec.strip() + ("," if ":" in spec else ":") + ",".join(f"{k}=VALUE" for k in missing)
+    raise BadInput(f"--tip {spec}: {', '.join(missing)} without a value; write --tip {fix}")
 
 
 def punch_from_args(args, allow_flat: bool = False):
-    """The punch of ``--punch EXPR``, ``--kind NAME`` (with ``--param``) or, where ``allow_flat``, ``--flat A``.
+    """The punch of ``--tip KIND:key=value,...``, ``--punch EXPR``, ``--kind NAME`` (with ``--param``; deprecated) or,
+    where ``allow_flat``, ``--flat A`` (deprecated).
 
-    Returns the punch, or ``(punch, flat)`` with ``allow_flat`` (``flat``: the flat-ended cylinder was asked for).
+    Without ``allow_flat`` (``inner``, ``codegen``) the tip must be a polynomial (:attr:`Tip.polynomial`): the
+    symbolic stages (2.26)-(3.25) take only those.  A deprecated option sets the note :data:`NOTE` on ``args``.
+
+    Returns the punch, or ``(punch, flat)`` with ``allow_flat`` (``flat``: a tip with a fixed contact, the
+    flat-ended cylinder, was asked for).
     """
     from ..punch import Punch
 
     flat_a = getattr(args, "flat", None) if allow_flat else None
-    spec = getattr(args, "tip", None) if allow_flat else None
+    spec = getattr(args, "tip", None)
     given = [o for o, v in (("--tip", spec), ("--punch", args.punch), ("--kind", args.kind), ("--flat", flat_a))
              if v is not None]
     if len(given) != 1:
-        choices = ("--tip KIND:key=value,... (thinlayer.punch.TIPS), " if allow_flat else "") + (
-            "--punch EXPR (a polynomial in x_1, x_2), --kind NAME " + f"({', '.join(KINDS)})") + (
-            " and --flat A" if allow_flat else "")
+        choices = ("--tip KIND:key=value,... (thinlayer.punch.TIPS), --punch EXPR (a polynomial in x_1, x_2), "
+                   f"--kind NAME ({', '.join(KINDS)})") + (" and --flat A" if allow_flat else "")
         raise BadInput(f"give exactly one of {choices}" + (f"; got {' and '.join(given)}" if given else ""))
     if spec is not None:
         from ..punch import tip_from_spec
@@ -72,13 +116,22 @@ def punch_from_args(args, allow_flat: bool = False):
         if args.param:
             raise BadInput("--tip KIND:key=value,... holds the tip's values: leave out --param")
         tip = tip_from_spec(spec)
-        return tip, bool(getattr(tip, "fixed_contact", False))
+        if allow_flat:  # solve: numbers
+            tip_needs_values(tip, spec)
+            return tip, bool(tip.fixed_contact)
+        if tip.polynomial is None:
+            raise BadInput(f"--tip {spec}: the {tip.name} is not a polynomial in x_1, x_2, and the symbolic stages "
+                           "(2.26)-(3.25) need one (e.g. --tip paraboloid, --tip polynomial:expr='x_1**2/2 + x_2**4')")
+        return tip
     if flat_a is not None:
         from ..punch import FlatPunch
 
         if args.param:
             raise BadInput("--flat A is the flat-ended cylinder of radius A: leave out --param")
+        setattr(args, NOTE, f"--flat {flat_a:g} is deprecated; use --tip flat:a={flat_a:g}")
         return FlatPunch(flat_a), True
+    if args.kind is not None:
+        setattr(args, NOTE, _kind_note(args.kind, args.param))
     punch = getattr(Punch, args.kind)() if args.kind is not None else Punch(args.punch)
     return (punch, False) if allow_flat else punch
 
@@ -112,16 +165,20 @@ def print_text(text: str) -> None:
 
 
 def add_punch_args(p: argparse.ArgumentParser, flat: bool = False) -> None:
+    """``--tip`` (the tip registry), ``--punch``, ``--param`` and the deprecated ``--kind`` (and, with ``flat``,
+    ``--flat``), hidden from ``--help`` like every former spelling.
+    """
+    where = "" if flat else "; here a polynomial tip (the symbolic stages need one)"
+    p.add_argument("--tip", metavar="KIND:key=value,...",
+                   help=f"a tip of the registry thinlayer.punch.TIPS, KIND one of {', '.join(TIP_KINDS)}; a value "
+                        "left out stays a symbol (--tip paraboloid: the paraboloid of radius R), e.g. "
+                        f"paraboloid:R=10, cone:half_angle=70, flat:a=1, sphere:R=2{where}")
     p.add_argument("--punch", help="the punch Phi as a polynomial in x_1, x_2, e.g. 'x_1**2/8 + x_2**2/2'")
-    p.add_argument("--kind", choices=KINDS, help="a catalogue punch with symbolic parameters instead of --punch")
+    p.add_argument("--kind", choices=KINDS, help=argparse.SUPPRESS)  # deprecated: --tip KIND
     p.add_argument("--param", action="append", metavar="NAME=VALUE",
-                   help="a value for a punch parameter (repeatable), e.g. --param R_1=4 --param R_2=1")
+                   help="a value for a parameter of --punch (repeatable), e.g. --param R=4")
     if flat:
-        p.add_argument("--tip", metavar="KIND:key=value,...",
-                       help="a tip of the registry thinlayer.punch.TIPS, e.g. paraboloid:R=10, cone:half_angle=70, "
-                            "flat:a=1, sphere:R=2 (instead of --kind/--param, --punch, --flat)")
-        p.add_argument("--flat", type=finite, metavar="A",
-                       help="a flat-ended cylinder of radius A instead of --kind/--punch (--delta0 is its depth w0)")
+        p.add_argument("--flat", type=finite, metavar="A", help=argparse.SUPPRESS)  # deprecated: --tip flat:a=A
 
 
 #: the bases of a layer (``--base``)

@@ -3,7 +3,7 @@
 :func:`add_flat_parser` adds the subcommand to the ``thinlayer`` parser, :func:`cmd_flat` runs it.  One row per
 value of ``--a-over-H``: kappa, the model that gave it (exact Fredholm solution (F.6)-(F.7), thin-layer law
 (F.10)-(F.16) or thick series (F.18)) and its estimated relative error.  The force of one punch on one layer is
-``thinlayer solve --flat A ...``.
+``thinlayer solve --tip flat:a=A ...``.
 """
 from __future__ import annotations
 
@@ -41,7 +41,7 @@ def add_flat_parser(subparsers: Any, formatter_class: type) -> argparse.Argument
                     "JSON: {layer (the base), nu, model, rows: [{a_over_H, kappa, model, error_estimate}]}.",
         epilog="examples:\n  thinlayer flat-punch --a-over-H 0.5 2 10 --nu 0.3\n"
                "  thinlayer flat-punch --a-over-H 50 --nu 0.5 --model thin --json\n"
-               "  thinlayer solve --flat 1.0 --nu 0.3 --H 0.5 --delta0 0.01 --E 2.6   # force of one punch")
+               "  thinlayer solve --tip flat:a=1 --nu 0.3 --H 0.5 --delta0 0.01 --E 2.6   # force of one punch")
     s.add_argument("--a-over-H", dest="a_over_H", type=_ratio, nargs="+", required=True,
                    help=f"punch radius over layer thickness (> 0; at most {MAX_VALUES} values)")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")

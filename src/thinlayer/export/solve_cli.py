@@ -370,11 +370,11 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                "  thinlayer solve --base frictionless --nu 0.5 --punch 'x_1**2/8 + x_2**2/2' --force 100 --H 0.05 "
                "--mu 1\n"
                "  thinlayer solve --tip flat:a=1 --nu 0.3 --delta0 0.01 --H 0.5 --E 2.6\n"
-               "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.1 --H 0.05 --mu 1 --order 2\n"
-               "  thinlayer solve --nu 0.49 --kind paraboloid --param R=10 --delta0 0.1 --H 0.5 --mu 1 --verbose\n"
-               "  thinlayer solve --nu 0.3 --kind paraboloid --param R=10 --delta0 0.01:1:100 --H 0.1 --E 2 "
+               "  thinlayer solve --nu 0.3 --tip paraboloid:R=10 --delta0 0.1 --H 0.05 --mu 1 --order 2\n"
+               "  thinlayer solve --nu 0.49 --tip paraboloid:R=10 --delta0 0.1 --H 0.5 --mu 1 --verbose\n"
+               "  thinlayer solve --nu 0.3 --tip paraboloid:R=10 --delta0 0.01:1:100 --H 0.1 --E 2 "
                "--format csv\n"
-               "  thinlayer solve --nu 0.45 --kind paraboloid --param R=10 --delta0 0.1 --H 0.05,0.1,0.5,2 --mu 1")
+               "  thinlayer solve --nu 0.45 --tip paraboloid:R=10 --delta0 0.1 --H 0.05,0.1,0.5,2 --mu 1")
     base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
     s.add_argument("--H", type=parse_values, required=True,
