@@ -88,7 +88,8 @@ def test_one_entry_per_name_and_applies():
         unregister_model(entry)
     # "direct": three entries (flat punch exact, axisymmetric spectral, 2D FFT), each with its own applies
     assert [type(m).__name__ for m in entries_named("direct")] == ["FlatExact", "AxisymmetricDirect", "FFTDirect"]
-    assert model_names() == solve_mod.MODELS == ("auto", "asymptotic", "compressible", "two-term", "incompressible",
+    assert model_names() == solve_mod.MODELS == ("auto", "asymptotic", "compressible", "tip-law", "two-term",
+                                                 "incompressible",
                                                  "any-thickness", "direct")
 
 

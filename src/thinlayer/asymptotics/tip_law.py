@@ -81,10 +81,12 @@ class TipForceLaw(RichDisplay):
         """``P0 + P1``."""
         return None if self.P0 is None else self.P0 + self.P1
 
-    def evaluate(self, delta0: float, H: float, mu: float = 1.0) -> tuple[float, float]:
-        """``(P0, P1)`` at numbers, through the tip's numeric level set (any tip of revolution)."""
+    def evaluate(self, delta0: float, H: float, mu: float = 1.0, nu: float | None = None) -> tuple[float, float]:
+        """``(P0, P1)`` at numbers, through the tip's numeric level set (any tip of revolution); ``nu`` for a layer
+        whose kernel fixes none (the frictionless base: ``vartheta = mu/(1 - nu)`` keeps the symbol).
+        """
         ls = self.tip.level_set(delta0)
-        sub = {S.H: H, S.mu: mu}
+        sub = {S.H: H, S.mu: mu} if nu is None else {S.H: H, S.mu: mu, S.nu: nu}
         th = float((self.layer.vartheta / (self.layer.A * S.H)).subs(sub))
         k = float(self.coefficient.subs(sub))
         return th * ls.volume, k * ls.flux

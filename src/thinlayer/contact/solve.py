@@ -140,11 +140,13 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     if (delta0 is None) == (force is None):
         raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
     loading = Depth(positive(delta0, "delta0")) if delta0 is not None else Force(positive(force, "force"))
-    if isinstance(punch, Tip) and not is_polynomial_tip(punch):  # the flat punch: nothing to substitute, no options
-        if options or parameters:
-            raise InputTypeError("the flat punch takes no parameters or options, got "
-                                 f"{sorted({**(parameters or {}), **options})}")
-        tip = punch
+    if isinstance(punch, Tip) and not is_polynomial_tip(punch):  # flat punch, tips of revolution: no options
+        if options:
+            raise InputTypeError(f"the {punch.name} takes no model options, got {sorted(options)}")
+        tip = punch.subs(parameters) if parameters else punch
+        if not tip.is_numeric:
+            names = ", ".join(q.name for q in tip.parameters)
+            raise InputError(f"the {tip.name} has free parameter(s) {names}: give them in parameters={{...}}")
     else:
         tip = numeric_punch(punch, parameters)
     if layer.numeric_nu is None or layer.incompressible_at(nu_v):  # a frictionless base's nu; bonded at nu = 1/2

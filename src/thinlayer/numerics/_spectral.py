@@ -173,6 +173,11 @@ class Discretisation:
 
 
 # --------------------------------------------------------------------------- the load of a tip that is not a polynomial
+#: geometric panels towards an apex, each 4x narrower (innermost ``~(pi/2) 4^-20 ~ 1e-12``): with 6 levels the power
+#: law ``r^1.5`` kept a mode-independent error of 7.3e-11 in P against Sneddon's closed form (its slope ``~ th^{1/2}``
+#: on the innermost panel); with 20 levels it is at rounding, 336 more load nodes
+GRADING_LEVELS = 20
+
 @dataclass(frozen=True)
 class RadialLoad:
     r"""The profile of a tip of revolution for the load vector, with what makes it accurate at an apex or a join.
@@ -207,7 +212,7 @@ class RadialLoad:
         edges.update(math.asin(b / c) for b in self.breaks if 0.0 < b < c)
         if self.graded:
             first = min(e for e in edges if e > 0)
-            edges.update(first * 4.0 ** -j for j in range(1, 7))
+            edges.update(first * 4.0 ** -j for j in range(1, GRADING_LEVELS + 1))
         edges = sorted(edges)
         total = 2 * modes + 48
         th, w = [], []

@@ -14,6 +14,7 @@ from ..any_thickness import NotTabulatedError, any_thickness_fields, any_thickne
 from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
+from .common import polynomial_reason
 
 __all__ = ["AnyThicknessModel", "sphere_curve"]
 
@@ -78,7 +79,7 @@ class AnyThicknessModel(Model):
         return self.refuses(problem) is not None or not problem.tip.axisymmetric
 
     def applies(self, problem: Problem) -> str | None:
-        return None
+        return polynomial_reason(problem.tip)
 
     def run(self, problem: Problem) -> Indentation:
         tol = problem.tol

@@ -10,7 +10,7 @@ import numpy as np
 
 from ...asymptotics.solution import ValidityError
 
-__all__ = ["LazyExtent", "depth_for_force", "extent_of", "fast_size"]
+__all__ = ["LazyExtent", "depth_for_force", "extent_of", "fast_size", "polynomial_reason"]
 
 
 class LazyExtent:
@@ -100,3 +100,20 @@ def depth_for_force(force_of: Callable[[float], float], target: float, guess: fl
     if not (g(lo) < 0 < g(hi)):
         raise ValidityError(f"solve(): no depth gives the force {target:.6g}", "force")
     return math.exp(optimize.brentq(g, lo, hi, xtol=1e-14, rtol=1e-13))
+
+
+def polynomial_reason(tip: Any) -> str | None:
+    """None for a polynomial punch; else why a model built on the polynomial inner expansion (2.26)-(3.25) does not
+    take this tip, read from the tip's answers (smoothness, inner order), never from its class or name.
+    """
+    if tip.polynomial is not None:
+        return None
+    order = tip.max_inner_order
+    if tip.smoothness == "apex":
+        why = (f"the {tip.name} has an apex (Laplacian^{order + 1} Phi not integrable there; inner order {order})"
+               if order is not None else f"the {tip.name} has an apex")
+    elif order is not None:
+        why = f"the {tip.name} is not a polynomial (its inner expansion stops at order {order})"
+    else:
+        why = f"the {tip.name} is not a polynomial"
+    return f"needs a polynomial punch; {why}"

@@ -16,7 +16,7 @@ from ...asymptotics.solution import compressible_solution, force_arrays
 from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
-from .common import LazyExtent
+from .common import LazyExtent, polynomial_reason
 
 __all__ = ["CompressibleModel", "SMOOTH_ONLY"]
 
@@ -40,7 +40,7 @@ class CompressibleModel(Model):
     def applies(self, problem: Problem) -> str | None:
         if not problem.layer.has_compressible_expansion:
             return "nu = 1/2 on a bonded base: A = 0 in (2.4), no compressible expansion"
-        return None
+        return polynomial_reason(problem.tip)
 
     def run(self, problem: Problem) -> Indentation:
         layer, punch, H = problem.layer, problem.tip, problem.H
@@ -67,7 +67,7 @@ class CompressibleModel(Model):
 
     def force_curve(self, problem: Problem) -> ForceCurve | None:
         """``force_arrays`` at ``mu = 1``: the punches with a closed-form law (quadric, radial monomial)."""
-        if problem.tip.fixed_contact or not problem.layer.has_compressible_expansion:
+        if problem.tip.fixed_contact or not problem.layer.has_compressible_expansion or problem.tip.polynomial is None:
             return None
         closed_form = force_law(problem.layer, problem.tip)
         if closed_form.kind == "contour":  # the law needs its contour at every depth

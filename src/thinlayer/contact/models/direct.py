@@ -49,7 +49,7 @@ def direct_solution(layer, punch, axisymmetric: bool, delta0, H, mu, nu, refine=
         floor = 1e-9  # the spectral estimate can read zero; the solver's own tolerances are ~1e-12
         est = {"force": max(res.force_error, floor), "contact_radius": max(res.radius_error / c, floor),
                "contact_area": max(2 * res.radius_error / c, floor)}
-        why = f"axisymmetric spectral solver, {res.modes} modes (estimate: change from ~0.7x the modes)"
+        why = f"axisymmetric spectral solver, {res.modes} modes (estimate: from runs at fewer modes)"
         return Indentation(**common, force=res.force, contact_area=res.contact_area, contact_radius=c,
                            semi_axes=None, reason=why, error_estimate=est, detail=res,
                            _pressure=lambda x1, x2: res.pressure_at(np.hypot(x1, x2)), _extent=1.2 * c)

@@ -7,6 +7,7 @@ from __future__ import annotations
 from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
+from .common import polynomial_reason
 from .compressible import SMOOTH_ONLY
 from .two_term import base_nu_reason, nearly_incompressible, nearly_incompressible_curve
 
@@ -25,7 +26,7 @@ class IncompressibleModel(Model):
         return SMOOTH_ONLY.format(name=self.name) if problem.tip.fixed_contact else None
 
     def applies(self, problem: Problem) -> str | None:
-        why = base_nu_reason(problem, self.name, incompressible=True)
+        why = base_nu_reason(problem, self.name, incompressible=True) or polynomial_reason(problem.tip)
         if why is None and not (problem.tip.axisymmetric or problem.tip.quadric is not None):
             return ("the incompressible model is closed-form for axisymmetric punches and the elliptic paraboloid; "
                     "this punch needs the direct solver")

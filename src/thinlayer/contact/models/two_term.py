@@ -27,7 +27,7 @@ from ...layers.kernels import LayerKernel
 from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
-from .common import depth_for_force
+from .common import depth_for_force, polynomial_reason
 from .compressible import SMOOTH_ONLY
 
 __all__ = ["TwoTermModel", "base_nu_reason", "edge_h", "incompressible_ellipse_cached", "nearly_incompressible",
@@ -197,7 +197,7 @@ class TwoTermModel(Model):
         return SMOOTH_ONLY.format(name=self.name) if problem.tip.fixed_contact else None
 
     def applies(self, problem: Problem) -> str | None:
-        why = base_nu_reason(problem, self.name, incompressible=False)
+        why = base_nu_reason(problem, self.name, incompressible=False) or polynomial_reason(problem.tip)
         if why is None and not problem.tip.sphere_radius is not None:
             return "the two-term model is derived for the sphere (paraboloid) only"
         return why
