@@ -33,9 +33,10 @@ MAX_SWEEP = 1000
 SWEPT = ("delta0", "force", "H")
 #: the --model choices: the public names of the model registry (thinlayer.contact.models.model_names(), which
 #: imports the models), written out so that ``thinlayer --help`` imports none; a test keeps them equal
-MODEL_CHOICES = ("auto", "asymptotic", "compressible", "two-term", "incompressible", "any-thickness", "direct")
+MODEL_CHOICES = ("auto", "asymptotic", "compressible", "tip-law", "two-term", "incompressible", "any-thickness",
+                 "direct")
 #: every name a reason may start a segment with (the models of solve() and the flat punch's)
-_REASON_NAMES = ("compressible", "two-term", "incompressible", "any-thickness", "direct", "thin-layer",
+_REASON_NAMES = ("compressible", "tip-law", "two-term", "incompressible", "any-thickness", "direct", "thin-layer",
                  "thick-layer", "exact")
 #: the CSV columns, in order (``semi_axis_1``/``_2`` split ``semi_axes``)
 CSV_COLUMNS = ("delta0", "force", "contact_area", "contact_radius", "semi_axis_1", "semi_axis_2", "max_pressure",
