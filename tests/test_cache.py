@@ -206,3 +206,19 @@ def test_the_hooked_constants_read_back_equal_the_computation(folder, monkeypatc
     assert computed[0]._mpf_ == read[0]._mpf_ and computed[1]._mpf_ == read[1]._mpf_  # bit for bit
     # an independent route to the same h*: another exact factorisation (normaliser) of the kernel
     assert abs(read[0] - wh.edge_shift_exact("1/4", dps=15, normaliser="sqrt")) < 1e-12
+
+
+def test_the_force_defect_read_back_is_the_derived_expression(folder, monkeypatch):
+    """D = m_1/2 (derived from (3.23)-(3.25)) is kept as its exact polynomial coefficients in m_1."""
+    from thinlayer.asymptotics import force_law as fl
+
+    fl.boundary_layer_force_defect.cache_clear()
+    derived = fl.boundary_layer_force_defect()  # derived, and written
+    fl.boundary_layer_force_defect.cache_clear()
+    with monkeypatch.context() as m:
+        m.setattr(fl, "_derived_force_defect", None)  # read back, not derived again
+        read = fl.boundary_layer_force_defect()
+    fl.boundary_layer_force_defect.cache_clear()
+    m1 = sp.Symbol("m_1", real=True)
+    assert read == derived and sp.expand(read - fl._derived_force_defect()) == 0
+    assert read == m1 / 2  # the closed form the boundary layer's Laplace transform gives by hand
