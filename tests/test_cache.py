@@ -222,3 +222,28 @@ def test_the_force_defect_read_back_is_the_derived_expression(folder, monkeypatc
     m1 = sp.Symbol("m_1", real=True)
     assert read == derived and sp.expand(read - fl._derived_force_defect()) == 0
     assert read == m1 / 2  # the closed form the boundary layer's Laplace transform gives by hand
+
+
+def test_the_thick_moments_and_the_two_term_edge_shift_read_back_bit_for_bit(folder, monkeypatch):
+    """b_k (T.2) and h(nu) (I.12) from disk equal the computation; b_0 also equals an adaptive quadrature."""
+    import thinlayer as tl
+    from thinlayer.asymptotics import thick_layer as tk
+    from thinlayer.asymptotics.incompressible import two_term as tt
+
+    layer = tl.BondedLayer(0.3)
+
+    def fresh():
+        tk._moments_cached.cache_clear()
+        tt._edge_shift_cached.cache_clear()
+        return tk.thick_moments(layer, 2, dps=15), tt.two_term_edge_shift(tl.BondedLayer(0.45), dps=12)
+
+    computed = fresh()
+    with monkeypatch.context() as m:
+        m.setattr(tk, "_moments_computed", None)
+        m.setattr(tt, "_edge_shift_computed", None)
+        read = fresh()
+    assert [v._mpf_ for v in computed[0]] == [v._mpf_ for v in read[0]]
+    assert computed[1]._mpf_ == read[1]._mpf_
+    with mpmath.workdps(20):  # (T.2) b_0 = int_0^oo (1 - L(u)) du by adaptive quadrature, another rule
+        b0 = mpmath.quad(lambda u: 1 - layer.L_numeric(u, "mpmath"), [0, 1, 4, 16, mpmath.inf])
+    assert abs(b0 - read[0][0]) < 1e-12 * abs(b0)
