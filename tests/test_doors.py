@@ -155,6 +155,8 @@ def _layer_doors() -> dict[str, list]:
         out[f"{k}.series_parts"] = [lambda s, lay=lay: lay.series_parts(s, None),
                                     lambda s, lay=lay: lay.series_parts(1, s)]
         out[f"{k}.small_u"] = [lambda s, lay=lay: lay.small_u(s), lambda s, lay=lay: lay.small_u(2, s)]
+        out[f"{k}.with_nu"] = [lambda s, lay=lay: lay.with_nu(s)]
+        out[f"{k}.incompressible_at"] = [lambda s, lay=lay: lay.incompressible_at(s)]
         if hasattr(getattr(tl, cls), "large_u"):
             out[f"{k}.large_u"] = [lambda s, lay=lay: lay.large_u(s)]
     return out
@@ -190,6 +192,16 @@ INVENTORY: dict[str, list] = {
     "thinlayer.Punch.subs": [lambda s: tl.Punch.paraboloid().subs({"R": s}),
         lambda s: tl.Punch.paraboloid().subs({s: 1}),
                              lambda s: tl.Punch.paraboloid().subs(s)],
+    # the tip protocol (thinlayer.punch.Tip): every tip answers these
+    **{f"{k}.{m}": [lambda s, t=t, m=m: getattr(t, m)(s)] for k, t in (
+        ("thinlayer.Punch", tl.Punch.paraboloid(10)), ("thinlayer.FlatPunch", tl.FlatPunch(1)),
+        ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2"))) for m in ("level_set", "radial_profile")},
+    **{f"{k}.profile": [lambda s, t=t: t.profile(s, 0.0), lambda s, t=t: t.profile(0.0, s)] for k, t in (
+        ("thinlayer.Punch", tl.Punch.paraboloid(10)), ("thinlayer.FlatPunch", tl.FlatPunch(1)),
+        ("thinlayer.punch.base.Tip", tl.Punch.paraboloid("3/2")))},
+    "thinlayer.FlatPunch.subs": [lambda s: tl.FlatPunch(1).subs({"a": s}), lambda s: tl.FlatPunch(1).subs({s: 1}),
+                                 lambda s: tl.FlatPunch(1).subs(s)],
+    "thinlayer.punch.base.Tip.subs": [lambda s: tl.Punch.paraboloid().subs({"R": s})],
     # the stages
     "thinlayer.kernel_coefficients": [lambda s: tl.kernel_coefficients(s, 2),
         lambda s: tl.kernel_coefficients(F().L, s),
@@ -482,11 +494,18 @@ NO_USER_VALUES: dict[str, str] = {
     **{f"thinlayer.{k}.{m}": "prints the object" for k in ("Punch", "FlatPunch", "Indentation") for m in ("latex",
                                                                                                           "text_lines")},
     "thinlayer.Punch.codegen_expressions": "returns the punch's own expressions",
+    **{f"thinlayer.asymptotics.{m}.codegen_constants": "returns the law's layer constants (h*, r_3): no argument"
+       for m in ("force_law.ForceLaw", "second_order.SecondOrderLaw")},
     "thinlayer.LayerKernel": "the abstract base of the layers: no constructor (Python refuses to instantiate it)",
+    "thinlayer.punch.base.Tip": "the abstract base of the tips: no constructor (Python refuses to instantiate it)",
+    "thinlayer.punch.base.LevelSet": "a result class: thinlayer builds it; its constructor stores values and "
+                                     "evaluates none",
     "thinlayer.Indentation.as_dict": "returns the numbers it holds",
     "thinlayer.errors.boundary": "a decorator for thinlayer's own functions (its argument is code, not a value)",
     "thinlayer.errors.boundary_methods": "a class decorator for thinlayer's own classes",
     "thinlayer.errors.translate": "turns an exception into thinlayer's; never evaluates its text",
+    "thinlayer.asymptotics.solution.ContactSolution.report_rows": "prints the result's numbers; its argument is the "
+                                                                  "report's LaTeX of [units], set after them as text",
 }
 #: result classes: thinlayer builds them; their constructors store what they are given and evaluate nothing
 RESULT_CLASSES = (
@@ -500,7 +519,7 @@ RESULT_CLASSES = (
     "thinlayer.asymptotics.second_order.SecondOrderLaw", "thinlayer.asymptotics.second_order.SecondOrderValues",
     "thinlayer.asymptotics.solution.ContactSolution", "thinlayer.asymptotics.solution.ForceArrays",
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution", "thinlayer.contact.any_thickness.AnyThicknessLaw",
-    "thinlayer.contact.fit.FitResult", "thinlayer.contact.solve.DirectComparison",
+    "thinlayer.contact.fit.FitResult", "thinlayer.contact.indentation.DirectComparison",
     "thinlayer.numerics.AxisymmetricContact",
     "thinlayer.numerics.Contact2D", "thinlayer.numerics.GridContact",
 )
@@ -508,7 +527,7 @@ for _cls in RESULT_CLASSES:
     NO_USER_VALUES[_cls] = "a result class: thinlayer builds it; its constructor stores values and evaluates none"
 #: methods of the result classes that take no argument (they print or return what the result holds)
 _NO_ARGUMENT = ("latex", "text_lines", "codegen_expressions", "as_dict", "scaled_semi_axes", "leading", "weights",
-                "force_defect", "extent", "moments", "lambdify")
+                "force_defect", "extent", "moments", "lambdify", "codegen_constants")
 del _cls
 
 

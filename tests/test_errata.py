@@ -65,7 +65,7 @@ def test_every_entry_quotes_its_publication_or_names_its_secondary_source():
 
 
 def test_secondary_entries_say_so_where_the_report_prints_them():
-    from thinlayer.export._errata_section import _heading
+    from thinlayer.export.sections.errata import _heading
 
     hayes = errata.get("Hayes 1972")
     assert len(hayes) == 4

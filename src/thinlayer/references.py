@@ -3,7 +3,7 @@ r"""The bibliography: every publication thinlayer cites, keyed by a citation key
 Each field of an entry is taken from a record of the publication itself (the record is named in
 ``record``); a field that could not be checked against such a record is left out, and ``note`` says
 what is missing.  Reports cite by key (``\cite{hayes1972}``) and list only what they cite
-(:func:`thinlayer.export._references_section.references_section`); the errata registry names the
+(:func:`thinlayer.export.sections.references.references_section`); the errata registry names the
 publication of each entry by its key (:attr:`thinlayer.errata.Erratum.source`).
 
 >>> from thinlayer import references

@@ -21,7 +21,7 @@ from thinlayer.asymptotics import solution as solution_mod
 from thinlayer.asymptotics.incompressible import leading as leading_mod
 from thinlayer.asymptotics.incompressible import two_term as two_term_mod
 from thinlayer.asymptotics.solution import force_arrays
-from thinlayer.contact import solve as solve_mod
+from thinlayer.contact.models import two_term as two_term_model
 
 SPHERE = tl.Punch.paraboloid(10)
 ELLIPSE = tl.Punch.elliptic_paraboloid(40, 10)
@@ -29,9 +29,9 @@ QUARTIC = tl.Punch("x_1**2/2 + x_2**2 + x_1**3/5 + x_1*x_2/10 + x_1**4 + x_2**4"
 
 
 def _clear():
-    for f in (fl._force_law_cached, fl._compiled_closed_forms, fl._compiled_expr, solve_mod._shape,
-              solve_mod._phi_numpy, solve_mod._edge_h, solve_mod._incompressible_ellipse,
-              contour_mod._polynomial_cached, contour_mod._gauss_legendre, solution_mod._is_axisymmetric,
+    for f in (fl._force_law_cached, fl._compiled_closed_forms, fl._compiled_expr, two_term_model.edge_h,
+              two_term_model.incompressible_ellipse_cached,
+              contour_mod._polynomial_cached, contour_mod._gauss_legendre,
               solution_mod._array_law, leading_mod._ellipse_functions, two_term_mod._edge_shift_float):
         f.cache_clear()
 

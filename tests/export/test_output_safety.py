@@ -61,7 +61,7 @@ def test_symbol_name_injection_through_the_api_is_rejected(tmp_path):
     from thinlayer import symbols as S
 
     punch = Punch((S.x1 ** 2 + S.x2 ** 2) / (2 * bad))
-    evil = Derivation(der.name, der.title, der.layer, punch, 2, None, ())
+    evil = Derivation(der.name, der.title, der.layer, punch, 2)
     with pytest.raises(ReportTextError, match="not allowed"):
         report_latex(evil)
 

@@ -104,7 +104,7 @@ def erratum_name(e) -> str:
 def _errata_in(tex: str) -> set[str]:
     """The names of the entries the report's section Errata prints (each heading names its entry)."""
     from thinlayer import errata
-    from thinlayer.export._errata_section import _heading
+    from thinlayer.export.sections.errata import _heading
 
     section = tex.split(r"\section{Errata}", 1)[1].split(r"\begin{thebibliography}", 1)[0]
     return {erratum_name(e) for e in errata.ENTRIES if rf"\paragraph{{{_heading(e)}.}}" in section}
@@ -116,7 +116,7 @@ FAMILIES = ("F", "I", "SO", "T")
 
 def tag_gaps(tex: str) -> list[str]:
     """Sections whose displayed tags of a family of :data:`FAMILIES` skip a number (ranges expanded)."""
-    from thinlayer.export._errata_section import equations_used
+    from thinlayer.export.sections.errata import equations_used
 
     bad = []
     for sec in re.split(r"\\section\{", tex)[1:]:
@@ -154,7 +154,7 @@ def test_catalogue_reports_are_typeset(name, catalogue_report):
     assert PAPER in tex  # the paper is cited by its title
     # issue 28: its own errata (the set the concern rules select) and a bibliography of exactly what it cites
     assert _errata_in(tex) == EXPECTED_ERRATA[name], name
-    from thinlayer.export._references_section import cited_keys
+    from thinlayer.export.sections.references import cited_keys
 
     items = re.findall(r"\\bibitem\{([^{}]*)\}", tex)
     assert items and items[0] == "argatov" and set(items) == set(cited_keys(tex)), (items, cited_keys(tex))
@@ -256,7 +256,7 @@ def test_sphere_report_carries_units_captions_and_one_tag_per_group():
     assert der.units == {"length": r"\mathrm{mm}", "stress": r"\mathrm{MPa}", "force": r"\mathrm{N}"}
     import dataclasses
 
-    tex = report_latex(dataclasses.replace(der, validation=None))
+    tex = report_latex(dataclasses.replace(der, sections={**der.sections, "validation": None}))
     assert r"\,\mathrm{N}" in tex and r"\,\mathrm{mm}^{2}" in tex and r"\,\mathrm{MPa}" in tex
     tables = tex.count(r"\begin{table}")
     assert tables >= 2 and tex.count(r"\caption{") == tables
@@ -308,7 +308,7 @@ def test_sphere_report_prints_3_24_as_the_paper():
     import dataclasses
 
     der = load_derivation(ROOT / "derivations" / "sphere.toml")
-    tex = report_latex(dataclasses.replace(der, validation=None, contact=None))
+    tex = report_latex(dataclasses.replace(der, sections={**der.sections, "validation": None, "contact": None}))
     line = next(ln for ln in tex.splitlines() if r"\tag{3.24}" in ln)
     assert r"\sqrt{B \left(v - h^{*}\right)}" in line and r"e^{- B \left(v - h^{*}\right)}" in line
     assert r"\frac{s \sqrt{B^{2} + s^{2}}}{C + s^{2}}" in tex  # (3.19): no parentheses inside the root
@@ -413,7 +413,7 @@ def test_figures_omitted_without_matplotlib_say_so_on_the_page_and_the_hint_in_t
     import logging
     import sys
 
-    from thinlayer.export.report import _figures
+    from thinlayer.export.sections.validation import _figures
 
     for mod in ("matplotlib", "matplotlib.figure", "matplotlib.backends.backend_agg"):
         monkeypatch.setitem(sys.modules, mod, None)

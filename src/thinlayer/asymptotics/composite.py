@@ -357,6 +357,6 @@ def composite_pressure(layer: LayerKernel, punch: Punch, delta0: float, H: float
     big = np.flatnonzero(np.abs(ct) >= _TAIL)
     if big.size and big[-1] + 1 < len(vt):  # the band ends where |Qhat - v| stays below _TAIL
         band = float(vt[big[-1] + 1])
-    quadratic = sp.Poly(Phi, S.x1, S.x2).total_degree() <= 2
+    quadratic = punch.polynomial.total_degree() <= 2
     return CompositePressure(layer, punch, float(delta0), float(H), float(mu), inner, boundary_layer, h,
                              th / float(layer.A), float(band), p_in, phi3, Q, (zt, ct), nu, hess3, quadratic)

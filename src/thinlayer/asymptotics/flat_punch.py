@@ -119,7 +119,7 @@ import sympy as sp
 from .. import symbols as S
 from .._checks import InputError, InputTypeError, check_bounded, check_int
 from ..display import RichDisplay, fmt
-from ..layers.kernels import FrictionlessLayer, GenericLayer, IncompressibleLayer, LayerKernel
+from ..layers.kernels import GenericLayer, IncompressibleLayer, LayerKernel
 from ..normal import join_signed, normal_latex
 from ..punch import Punch
 from .force_law import layer_label
@@ -162,16 +162,14 @@ def _check_layer(layer: Any) -> LayerKernel:
     if not layer.has_thickness or layer.symbolic_coefficients or layer.parameter is not None:
         raise InputError(f"the flat-punch asymptotics need a layer of finite thickness with a numeric kernel: "
                          f"BondedLayer(0.3), FrictionlessLayer() or IncompressibleLayer(); got {layer!r}")
-    if layer.base == "frictionless":
-        return FrictionlessLayer()
-    return layer
+    return layer.kernel_key  # a frictionless kernel does not depend on nu: one cache entry
 
 
 def _regime(layer: LayerKernel) -> str:
     """``"compressible"`` (frictionless base or nu <= 1/4), ``"two-term"`` or ``"incompressible"``."""
     if not layer.has_compressible_expansion:
         return "incompressible"
-    if layer.base == "bonded" and layer.numeric_nu > 0.25:  # m_1 > 0: the two-term operator (I.10) is elliptic
+    if layer.has_two_term_model and layer.numeric_nu > 0.25:  # m_1 > 0: the two-term operator (I.10) is elliptic
         return "two-term"
     return "compressible"
 

@@ -92,7 +92,7 @@ from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..normal import join_signed, normal_latex
 from ..parse import parse_number
-from ..punch import Punch, PunchError
+from ..punch import Punch, PunchError, is_polynomial_tip
 from ..results import checked_lambdify, latex_equation
 from .inner import inner_pressure
 
@@ -188,9 +188,9 @@ def _check_quadratic_size(expr: sp.Expr) -> None:
                   MAX_QUADRATIC_TERMS, why)
 
 
-def _quadratic_data(expr: sp.Expr):
-    """``(K, b, c)`` if Phi is quadratic with a constant Hessian K, else None."""
-    poly = sp.Poly(expr, S.x1, S.x2)
+def _quadratic_data(expr: sp.Expr, poly: sp.Poly | None = None):
+    """``(K, b, c)`` if Phi is quadratic with a constant Hessian K, else None (``poly``: Phi's Poly, if known)."""
+    poly = sp.Poly(expr, S.x1, S.x2) if poly is None else poly
     if poly.total_degree() != 2:
         return None
     X = sp.Matrix([S.x1, S.x2])
@@ -205,9 +205,9 @@ def radial_monomial(expr: sp.Expr):
     return _radial_monomial(expr)
 
 
-def _radial_monomial(expr: sp.Expr):
-    """``(c, k)`` if Phi = c (x1^2 + x2^2)^k, else None."""
-    poly = sp.Poly(expr, S.x1, S.x2)
+def _radial_monomial(expr: sp.Expr, poly: sp.Poly | None = None):
+    """``(c, k)`` if Phi = c (x1^2 + x2^2)^k, else None (``poly``: Phi's Poly, if known)."""
+    poly = sp.Poly(expr, S.x1, S.x2) if poly is None else poly
     d = poly.total_degree()
     if d < 2 or d % 2:
         return None
@@ -723,7 +723,7 @@ def force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
     """
     if not isinstance(layer, LayerKernel):
         raise InputTypeError(f"layer must be a thinlayer layer kernel (e.g. BondedLayer(0.3)), got {layer!r}")
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         punch = Punch(punch)
     if not layer.has_thickness:
         raise InputError("the half-space kernel (L = 1) has no thin-layer expansion; use a layer of finite H")
@@ -750,7 +750,7 @@ def _force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
         raise ArithmeticError(f"p_1 = {p1} is not proportional to Laplacian(Phi) = {lap}")
     coefficient = sp.factor(p1_factor + th * S.H * _force_defect(layer) / layer.A)
     expr = punch.expr
-    quad = _quadratic_data(expr)
+    quad = _quadratic_data(expr, punch.polynomial)
     if quad is not None:
         _check_quadratic_size(expr)
         K, b, c = quad
@@ -768,7 +768,7 @@ def _force_law(layer: LayerKernel, punch: Punch) -> ForceLaw:
             perimeter = 2 * sp.pi * a1
         kind = "quadratic"
     else:
-        rm = _radial_monomial(expr)
+        rm = _radial_monomial(expr, punch.polynomial)
         if rm is not None:
             cc, k = rm
             if cc.is_number and not cc > 0:

@@ -35,7 +35,7 @@ from ..layers.coefficients import order_limit
 from ..layers.kernels import LayerKernel
 from ..normal import normal_latex
 from ..parse import as_expr
-from ..punch import Punch
+from ..punch import Punch, is_polynomial_tip
 from ..results import checked_lambdify
 
 METHODS = ("closed", "recursion")
@@ -212,7 +212,7 @@ def inner_pressure(layer: LayerKernel, punch: Punch, order: int | None = None,
     """
     if not isinstance(layer, LayerKernel):
         raise InputTypeError(f"layer must be a LayerKernel (e.g. BondedLayer()), got {type(layer).__name__}")
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         raise InputTypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
     if method not in METHODS:
         raise InputError(f"method must be one of {METHODS}, got {method!r}")

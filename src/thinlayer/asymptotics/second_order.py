@@ -113,7 +113,7 @@ from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..normal import join_signed, normal_latex
-from ..punch import Punch
+from ..punch import Punch, is_polynomial_tip
 from ..results import latex_equation
 from .force_law import (
     ForceLaw,
@@ -661,7 +661,7 @@ def second_order_law(layer: LayerKernel, punch: Punch) -> SecondOrderLaw:
     """
     if not isinstance(layer, LayerKernel):
         raise InputTypeError(f"layer must be a layer kernel such as BondedLayer(0.3), got {type(layer).__name__}")
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         raise InputTypeError(f"punch must be a Punch, got {type(punch).__name__}")
     try:
         return _second_order_law(layer, punch)

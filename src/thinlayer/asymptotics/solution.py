@@ -45,8 +45,8 @@ from .._checks import positive as _positive
 from ..display import RichDisplay
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..normal import normal_latex
-from ..punch import Punch, PunchError
+from ..normal import float_latex, normal_latex
+from ..punch import Punch, PunchError, is_polynomial_tip
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, error_estimate_arrays, force_law
 
@@ -98,7 +98,7 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     """The layer and its numeric Poisson ratio (given by the layer, or by ``nu`` for a nu-free kernel)."""
     if not isinstance(layer, LayerKernel):
         raise InputTypeError(f"layer must be a thinlayer layer, e.g. BondedLayer(0.3); got {layer!r}")
-    if layer.base is None or not layer.has_compressible_expansion or layer.symbolic_coefficients:
+    if not layer.has_edge_shift or not layer.has_compressible_expansion or layer.symbolic_coefficients:
         raise NotDerivedError(
             f"solve() supports BondedLayer and FrictionlessLayer, got {type(layer).__name__}; "
             "the boundary layer and edge shift are derived for those kernels"
@@ -115,7 +115,7 @@ def _check_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
 @boundary
 def numeric_punch(punch: Any, parameters: dict | None = None) -> Punch:
     """The punch as a :class:`~thinlayer.Punch` with every parameter given a number (one clear error if not)."""
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         punch = Punch(punch)
     if parameters:
         punch = punch.subs(parameters)
@@ -279,8 +279,8 @@ class ContactSolution(RichDisplay):
         nu = getattr(self.layer, "nu", None)
         nu = normal_latex(sp.Rational(Fraction(mpmath.nstr(mpmath.mpf(self.nu), 15)))
                       if nu is None or isinstance(nu, mpmath.mpf) else nu)
-        if self.layer.base == "frictionless":
-            nu += r"\ (\text{frictionless base})"
+        if self.layer.base_note:
+            nu += rf"\ (\text{{{self.layer.base_note}}})"
         rows = [
             rf"\Phi = {normal_latex(self.punch.expr)},\quad \nu = {nu},\quad \delta_0 = {self.delta0:.6g},"
             rf"\quad H = {self.H:.6g},\quad \mu = {self.mu:.6g},\quad H/a = {self.H_over_a:.4g}",
@@ -295,6 +295,42 @@ class ContactSolution(RichDisplay):
         ]
         return " \\\\\n".join(rows)
 
+    def report_rows(self, units: dict | None = None) -> tuple[str, list[str]]:
+        r"""What a report shows of this solution beside the table every model fills: a sentence and tagged lines.
+
+        The force (1.8) and the contact area (3.25) as leading term and first correction (and the second-order
+        terms (SO.9), (SO.10) when ``order == 2``), the numbers to six significant digits.  The hook of the
+        report's contact section (:mod:`thinlayer.export.sections.contact`), which asks a result for it instead
+        of naming its model.
+
+        Parameters
+        ----------
+        units : dict, optional
+            The LaTeX set after a force (key ``"force"``, e.g. ``r"\,\mathrm{N}"``) and after an area (``"area"``);
+            none by default.
+
+        Returns
+        -------
+        tuple of str and list of str
+            The sentence (LaTeX text) and the displayed lines, each ending in its ``\tag``.
+        """
+        u = units or {}
+        force_unit, area_unit = u.get("force", ""), u.get("area", "")
+        v, second = self.values, self.order == 2
+        tags = self._tags()
+
+        def term(x: float) -> str:  # " + 0.1" or " - 0.1"; nothing for 0
+            return "" if x == 0 else f" {'-' if x < 0 else '+'} {float_latex(abs(x), 6)}"
+
+        lead = (r"The force (1.8) and the contact area (3.25) as leading term and first correction:" if not second
+                else r"The force (SO.9) and the contact area (SO.10) as leading term, first and second correction:")
+        sign = "-" if v.edge_shift >= 0 else "+"
+        force = f"P = {float_latex(v.P0, 6)}{term(v.P1)}{term(v.P2) if second else ''}"
+        area = (rf"|\omega| = {float_latex(v.area0, 6)} {sign} {float_latex(abs(v.edge_shift), 6)} \cdot "
+                rf"{float_latex(self.H, 6)} \cdot {float_latex(v.perimeter, 6)}{term(v.area2) if second else ''}")
+        return lead, [rf"{force} = {float_latex(v.force, 6)}{force_unit} \tag{{{tags[0]}}}",
+                      rf"{area} = {float_latex(v.area, 6)}{area_unit} \tag{{{tags[1]}}}"]
+
     def _tags(self) -> tuple[str, str]:
         return ("SO.9", "SO.10") if self.order == 2 else ("1.8", "3.25")
 
@@ -308,7 +344,7 @@ class ContactSolution(RichDisplay):
         corr = f"correction {v.P1:+.6g}" + (f", second order {v.P2:+.6g}" if second else "")
         return (
             f"ContactSolution({self.punch.name}: delta0={self.delta0:.6g}, H={self.H:.6g}, mu={self.mu:.6g}, "
-            f"nu={self.nu:.6g}{', frictionless base' if self.layer.base == 'frictionless' else ''}; "
+            f"nu={self.nu:.6g}{', ' + self.layer.base_note if self.layer.base_note else ''}; "
             f"H/a={self.H_over_a:.3g}{'; second order' if second else ''})\n"
             f"  force        P = {v.force:.8g}  (leading {v.P0:.8g}, {corr}; "
             f"error estimate {self._pct('force')})\n"
@@ -601,16 +637,8 @@ def _scaled(vals: ForceValues, mu: float, order: int) -> ForceValues:
                        vals.edge_shift if order else 0.0, vals.V, vals.J, vals.P2 * mu, vals.area2)
 
 
-@lru_cache(maxsize=256)
-def _is_axisymmetric(punch: Punch) -> bool:
-    from .. import symbols as S
-
-    e = punch.expr
-    return sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0
-
-
 def _reference_model(punch: Punch) -> str:
-    if _is_axisymmetric(punch):
+    if punch.axisymmetric:
         return "the direct numerical solver thinlayer.numerics.solve_axisymmetric"
     return "the direct numerical solver thinlayer.numerics.solve_2d"
 
@@ -620,11 +648,11 @@ def _validity_model(layer: LayerKernel, punch: Punch, vals: ForceValues) -> str:
     model = _reference_model(punch)
     x = vals.H_over_a
     e1 = abs(vals.P1 / vals.P0) if vals.P0 else 0.0
-    m1 = float(layer.m(1)) if layer.base == "bonded" else 0.0
+    m1 = float(layer.m(1)) if layer.has_two_term_model else 0.0
     if m1 > 0 and e1 > (1.0 + vals.edge_shift**2) * x * x:
         lam2 = 1.0 / (m1 * x * x) if x > 0 else math.inf
-        where = ("thinlayer.asymptotics.incompressible.two_term_sphere" if _is_axisymmetric(punch)
-                 and sp.Poly(punch.expr, *sorted(punch.expr.free_symbols, key=str)).total_degree() == 2
+        where = ("thinlayer.asymptotics.incompressible.two_term_sphere" if punch.axisymmetric and punch.is_numeric
+                 and punch.polynomial.total_degree() == 2
                  else "thinlayer.asymptotics.incompressible (regime(), solve_obstacle_grid)")
         model += (f", or for nu near 1/2 the two-term/incompressible model {where} "
                   f"(lambda^2 = (a/H)^2/m1 = {lam2:.3g})")

@@ -88,10 +88,10 @@ from .. import symbols as S
 from .._cache import cached
 from .._checks import InputError, InputTypeError, check_bounded, check_order, positive
 from ..display import RichDisplay, fmt
-from ..layers.kernels import FrictionlessLayer, LayerKernel
+from ..layers.kernels import LayerKernel
 from ..normal import join_signed, normal_latex
 from ..parse import as_expr
-from ..punch import Punch
+from ..punch import Punch, is_polynomial_tip
 from ..results import checked_lambdify, latex_equation
 
 __all__ = [
@@ -153,9 +153,7 @@ def _check_layer(layer: Any) -> LayerKernel:
     if not layer.has_thickness or layer.symbolic_coefficients or layer.parameter is not None:
         raise InputError(f"the thick-layer moments (T.2) need a layer of finite thickness with a numeric kernel: "
                          f"BondedLayer(0.3), FrictionlessLayer() or IncompressibleLayer(); got {layer!r}")
-    if layer.base == "frictionless":  # the kernel does not depend on nu: one cache entry
-        return FrictionlessLayer()
-    return layer
+    return layer.kernel_key  # a frictionless kernel does not depend on nu: one cache entry
 
 
 @lru_cache(maxsize=64)
@@ -341,13 +339,13 @@ def _to_number(p: Any, gv: list) -> mpmath.mpf:
 # =============================================================================================
 def _radial_coefficients(punch: Punch) -> dict[int, sp.Expr]:
     """``{n: phi_n}`` of ``Phi = sum_n phi_n r^{2n}`` (checked axisymmetric, ``Phi(0) = 0``)."""
-    e = sp.expand(punch.expr)
-    if sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) != 0:
+    if not punch.axisymmetric:
         raise InputError(f"the thick-layer expansion (T.5) is for axisymmetric punches; Phi = {punch.expr} is not "
                          "(x1 dPhi/dx2 - x2 dPhi/dx1 != 0)")
-    prof = sp.Poly(sp.expand(e.xreplace({S.x2: 0})), S.x1)
     out: dict[int, sp.Expr] = {}
-    for (deg,), coef in prof.terms():
+    for (deg, j), coef in punch.polynomial.terms():  # Phi(x1, 0): the terms free of x2
+        if j:
+            continue
         if deg == 0:
             raise InputError(f"the punch Phi = {punch.expr} has Phi(0) = {coef}; normalise it with Phi(0) = 0")
         out[deg // 2] = coef
@@ -564,7 +562,7 @@ def thick_layer_expansion(punch: Any, order: int = 8) -> ThickLayerExpansion:
     """
     if isinstance(punch, str):
         punch = Punch(punch)
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         raise InputTypeError(f"punch must be a thinlayer Punch (or a polynomial string in x_1, x_2), got {punch!r}")
     return _expansion(punch, _check_thick_order(order))
 

@@ -616,31 +616,23 @@ class _DirectPressure:
 
 
 def sphere_radius(punch) -> float | None:
-    """R when ``Phi = (x1^2 + x2^2)/(2R)`` exactly, else None."""
-    import sympy as sp
-
-    from .. import symbols as S
-
-    poly = sp.Poly(sp.expand(punch.expr), S.x1, S.x2)
-    terms = dict(poly.terms())
-    if set(terms) != {(2, 0), (0, 2)} or terms[(2, 0)] != terms[(0, 2)] or not terms[(2, 0)] > 0:
-        return None
-    return 1.0 / (2.0 * float(terms[(2, 0)]))
+    """R when ``Phi = (x1^2 + x2^2)/(2R)`` exactly, else None: the tip's own answer (:attr:`Tip.sphere_radius`)."""
+    return punch.sphere_radius
 
 
 def _layer_nu(layer: Any, nu: Any) -> tuple[Any, float, str]:
-    from ..layers.kernels import FrictionlessLayer, IncompressibleLayer, LayerKernel
+    from ..layers.kernels import LayerKernel
 
-    if not isinstance(layer, LayerKernel) or layer.base not in BASES or not layer.has_thickness \
+    if not isinstance(layer, LayerKernel) or layer.base_label not in BASES or not layer.has_thickness \
             or layer.symbolic_coefficients or layer.parameter is not None:
         raise InputTypeError(f"the any-thickness law needs BondedLayer(nu) (-1 < nu <= 1/2, numeric) or "
                         f"FrictionlessLayer(nu); got {layer!r}")
     nv = float(layer.poisson_ratio(nu))
-    nv, base = _check_nu_base(nv, layer.base)
-    if base == "frictionless" and layer.numeric_nu is None:
-        layer = FrictionlessLayer(nv)
-    if base == "bonded" and nv == 0.5:
-        layer = IncompressibleLayer()
+    nv, base = _check_nu_base(nv, layer.base_label)
+    if layer.numeric_nu is None and not layer.kernel_depends_on_nu:  # a frictionless base: nu from the caller
+        layer = layer.with_nu(nv)
+    if layer.incompressible_at(nv):  # a bonded base at nu = 1/2: the incompressible layer (I.1)
+        layer = layer.with_nu(nv)
     return layer, nv, base
 
 

@@ -41,10 +41,13 @@ from .._checks import InputError, InputTypeError, check_array_size, check_choice
 from ..display import RichDisplay
 from ..errors import ComputationError, ValidityWarning, boundary, boundary_methods
 from .any_thickness import BASES, any_thickness_law
+from .models import fit_entry, fit_names
+from .models.published import series_coefficients
 
 __all__ = ["FIT_MODELS", "FitResult", "MODEL_TOL", "fit", "model_error"]
 
-FIT_MODELS = ("any-thickness", "hertz", "dimitriadis2002", "garcia2018")
+#: fit()'s models: the registry's entries with a force curve for fitting (:mod:`thinlayer.contact.models`)
+FIT_MODELS = fit_names()
 #: the largest relative difference in force from the any-thickness law over the data for a valid fit
 MODEL_TOL = 0.05
 #: a condition number of the scaled Jacobian above this means the data cannot separate the parameters
@@ -161,44 +164,29 @@ class FitResult(RichDisplay):
                 rf"\text{{{self.model}}},\ \nu = {self.nu:.4g}")
 
 
-def _series_coefficients(model: str, base: str) -> tuple[float, ...]:
-    from ..asymptotics.thick_layer import PUBLISHED_SERIES
-
-    key = {"dimitriadis2002": f"dimitriadis2002-{'bonded' if base == 'bonded' else 'nonbonded'}",
-           "garcia2018": "garcia2018-sphere"}[model]
-    if model == "garcia2018" and base != "bonded":
-        raise InputError("the Garcia & Garcia (2018) series is for a bonded layer; use base='bonded' or another model")
-    return (1.0, *PUBLISHED_SERIES[key]["coefficients"])
-
-
 def _shape_function(model: str, R: float, nu: float, base: str):
-    """``g(delta, H) -> (P/E, d log P/d log delta, d log P/d log H)`` of one model (zero force for delta <= 0)."""
-    K = 4.0 / 3.0 / (1.0 - nu * nu) * math.sqrt(R)  # P_Hertz/E/delta^{3/2}
-    if model == "any-thickness":
-        law = any_thickness_law(nu, base)
+    """``g(delta, H) -> (P/E, d log P/d log delta, d log P/d log H)`` of one model (zero force for delta <= 0).
 
-        def g(delta: np.ndarray, H: float):
-            pos = delta > 0
-            d = np.where(pos, delta, 1.0)
-            ld = np.log(d)
-            lp, dlp = law.log_force_ratio(0.5 * (ld + math.log(R)) - math.log(H))
-            P = np.where(pos, K * np.exp(1.5 * ld + lp), 0.0)
-            return P, np.where(pos, 1.5 + 0.5 * dlp, 0.0), np.where(pos, -dlp, 0.0)
+    The model's unit-modulus :class:`~thinlayer.contact.models.ForceCurve` from the registry (no tolerance: the
+    validity is measured by :func:`model_error`), divided by ``E/mu = 2(1 + nu)``.
+    """
+    from ..layers.kernels import BondedLayer, FrictionlessLayer
+    from ..punch import Punch
+    from .problem import Depth, Elastic, Frictionless, Problem
 
-        return g
-    coef = np.array((1.0,) if model == "hertz" else _series_coefficients(model, base))
-    dcoef = coef[1:] * np.arange(1, coef.size)
+    entry = fit_entry(model)
+    layer = FrictionlessLayer(nu) if base == "frictionless" else BondedLayer(nu)
+    tip = Punch.paraboloid(R)
+    scale = 1.0 / (2.0 * (1.0 + nu))
+    entry.force_curve(Problem(layer, tip, Elastic(1.0, nu), Frictionless(), Depth(1.0), 1.0, math.inf))  # refusals
 
     def g(delta: np.ndarray, H: float):
+        curve = entry.force_curve(Problem(layer, tip, Elastic(1.0, nu), Frictionless(), Depth(1.0), H, math.inf))
         pos = delta > 0
-        d = np.where(pos, delta, 0.0)
-        chi = np.sqrt(R * d) / H
-        S = np.polynomial.polynomial.polyval(chi, coef)
-        dS = chi * np.polynomial.polynomial.polyval(chi, dcoef) if dcoef.size else np.zeros_like(chi)
-        P = K * d**1.5 * S
-        with np.errstate(divide="ignore", invalid="ignore"):
-            dl = np.where(S > 0, dS / S, 0.0)
-        return P, np.where(pos, 1.5 + 0.5 * dl, 0.0), np.where(pos, -dl, 0.0)
+        d = np.where(pos, delta, 1.0)
+        P = np.where(pos, curve.force(d) * scale, 0.0)
+        gd, gH = curve.slopes(d)
+        return P, np.where(pos, gd, 0.0), np.where(pos, gH, 0.0)
 
     return g
 
@@ -220,7 +208,7 @@ def model_error(model: str, R: float, nu: float, base: str, H: float, chi_max: f
         return float(law.error_estimate(np.array([chi_max]))[0][0]), chi_max
     chi = np.geomspace(min(1e-4, chi_max), chi_max, 400)
     ratio, _ = law.ratios(chi)
-    coef = np.array((1.0,) if model == "hertz" else _series_coefficients(model, base))
+    coef = np.array(series_coefficients(model, base))
     dev = np.abs(np.polynomial.polynomial.polyval(chi, coef) / ratio - 1.0)
     k = int(np.argmax(dev))
     return float(dev[k]), float(chi[k])
@@ -256,12 +244,11 @@ def _points(delta: Any, force: Any) -> tuple[np.ndarray, np.ndarray]:
 def _radius(punch: Any) -> float:
     if isinstance(punch, numbers.Real) and not isinstance(punch, bool):
         return positive(punch, "punch (the sphere radius R)")
-    from ..punch import Punch
-    from .any_thickness import sphere_radius
+    from ..punch import Tip
 
-    if not isinstance(punch, Punch):
+    if not isinstance(punch, Tip):
         raise InputTypeError(f"punch must be the sphere radius R (a number) or Punch.paraboloid(R), got {punch!r}")
-    R = sphere_radius(punch)
+    R = punch.sphere_radius
     if R is None:
         raise InputError(f"fit() needs a sphere (paraboloid of revolution) Phi = r^2/(2R); got Phi = {punch.expr}")
     return R
@@ -333,7 +320,7 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
         raise InputTypeError("fit() needs H= (the layer thickness, or its starting value with fit_H=True)")
     H0 = positive(H, "H")
     check_choice(base, BASES, "base")
-    check_choice(model, FIT_MODELS, "model")
+    check_choice(model, fit_names(), "model")
     if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not -1 < float(nu) <= 0.5:
         raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}")
     nu = float(nu)

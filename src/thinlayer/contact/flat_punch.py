@@ -351,15 +351,14 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
     """The flat punch's answer as the fields of :class:`~thinlayer.contact.solve.Indentation` (F.1).
 
     ``choice`` is ``solve()``'s model: ``"auto"`` (the thick series, then the thin-layer law, within ``tol``,
-    else the exact solution), ``"asymptotic"`` (the same, refusing instead of the exact solution), or
+    else the exact solution), ``"asymptotic"`` (the same, refusing instead of the exact solution),
+    ``"thick"`` or ``"thin"`` (that law only, refusing beyond ``tol``: the registry's flat-punch entries), or
     ``"direct"``/``"any-thickness"`` (the exact Fredholm solution (F.6)-(F.7), any ``a/H <= 200``).  The contact is
     the disc (its area and radius are exact); the pressure comes from the exact solution on first use.
     """
     nv = float(nu)
-    if layer.base == "frictionless" and layer.numeric_nu is None:
-        from ..layers.kernels import FrictionlessLayer
-
-        layer = FrictionlessLayer(nv)
+    if layer.numeric_nu is None and not layer.kernel_depends_on_nu:  # a frictionless base: nu from the caller
+        layer = layer.with_nu(nv)
     if choice in ("compressible", "two-term", "incompressible"):
         raise InputError(f"model={choice!r} is a model of smooth punches; for the flat punch the thin-layer law "
                          "(F.10)-(F.16) covers every nu: use model='auto', 'asymptotic', 'any-thickness' or 'direct'")
@@ -378,8 +377,8 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
                 kappa, est, which = _models(layer, x, "thick", tol)
             except ValueError:
                 kappa, est, which = _models(layer, x, "thin", tol)  # refuses in one line beyond tol
-        elif choice == "auto":
-            kappa, est, which = _models(layer, x, "auto", tol)
+        elif choice in ("auto", "thick", "thin"):
+            kappa, est, which = _models(layer, x, choice, tol)
         elif n is not None:
             st = flat_punch_kappa(layer, float(x), n)
             kappa, est, which = np.asarray(st.kappa), np.asarray(st.error), np.asarray(0)
@@ -406,7 +405,7 @@ def flat_punch_fields(layer: LayerKernel, radius: float, H: float, w0: float | N
                 contact_radius=radius, semi_axes=None, model=model, reason=why,
                 error_estimate={"force": e, "contact_area": 0.0, "contact_radius": 0.0}, tol=tol,
                 detail=FlatPunchResult(layer, FLAT_PUNCH_MODELS[int(which)], radius, H, mu, nv, w, P, k, e),
-                _pressure=_FlatPressure(layer, radius, H, w, mu, nv, n), _extent=1.2 * radius)
+                _pressure=_FlatPressure(layer, radius, H, w, mu, nv, n), _extent=1.2 * radius, extras={"kappa": k})
 
 
 # =============================================================================================

@@ -7,8 +7,8 @@ carries out the stages of the paper and collects their LaTeX into one document.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
-from fractions import Fraction
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -20,29 +20,48 @@ except ModuleNotFoundError:  # pragma: no cover
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..punch import Punch
 from .report import ReportTextError, check_symbol_names, check_title
+from .sections import CORE_TABLES, SECTIONS, ParseContext, figure_files, parse_sections
+from .sections import schema as sections_schema
+from .sections.base import DerivationFileError
 from .units import unit_latex  # noqa: F401 - kept importable from here
 
-
-class DerivationFileError(ValueError):
-    """A derivation file is malformed: the message names the key and what is valid."""
+__all__ = ["CORE_SCHEMA", "DOCUMENTS", "Derivation", "DerivationFileError", "ErrataDocument", "SCHEMA", "catalogue",
+           "catalogue_folder", "check_schema", "load_derivation", "report_latex", "resolve_derivation", "write_report"]
 
 
 @dataclass(frozen=True)
 class Derivation:
-    """A validated derivation file: what :func:`report_latex` derives, in the paper's order."""
+    """A validated derivation file: what :func:`report_latex` derives, in the paper's order.
+
+    The core tables (:data:`CORE_SCHEMA`) are fields; every other table belongs to a report section
+    (:mod:`thinlayer.export.sections`) and its parsed value is ``sections[KEY]`` (None when the file has no such
+    table), also readable as an attribute: ``der.contact is der.sections["contact"]``.
+
+    Attributes
+    ----------
+    punch_traits : frozenset of str
+        What the file's catalogue punch (``[punch] kind``) is beyond its formula, in the words of
+        :data:`thinlayer.errata.PUNCHES` (``"sphere"``, ``"elliptic paraboloid"``): the sections that print a
+        catalogue punch's closed forms in its own symbols (the ellipse (3.1), the sphere's (I.11)) ask for it
+        instead of the punch's name.  Empty for a punch given by ``expr``.
+    """
 
     name: str
     title: str
     layer: LayerKernel
-    punch: Punch
+    punch: Punch | None
     coefficient_order: int
-    inner_order: int | None
-    edge_shift_nus: tuple
-    contact: dict | None = None
-    validation: dict | None = None
     units: dict | None = None
-    flat_punch: dict | None = None
-    second_order: dict | None = None
+    sections: Mapping[str, Any] = field(default_factory=dict)
+    punch_traits: frozenset = frozenset()
+
+    def __getattr__(self, key: str) -> Any:
+        # only reached when no field has the name: a section's table by its KEY (None when the file has none)
+        if key.startswith("_") or key == "sections":
+            raise AttributeError(key)
+        if any(s.KEY == key for s in SECTIONS):
+            return self.sections.get(key)
+        raise AttributeError(f"'Derivation' object has no attribute {key!r}")
 
 
 @dataclass(frozen=True)
@@ -60,8 +79,8 @@ class ErrataDocument:
 DOCUMENTS = {"errata": ErrataDocument}
 
 
-#: the schema: table -> {key: (python types, what is valid)}; any other key is an error
-SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
+#: the schema of the core tables (read here): table -> {key: (python types, what is valid)}
+CORE_SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
     "derivation": {"name": ((str,), "a file-name-safe string (letters, digits, '-', '_')"),
                    "title": ((str,), "a string")},
     "layer": {"model": ((str,), "'bonded' or 'frictionless'"),
@@ -69,30 +88,39 @@ SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
     "coefficients": {"order": ((int,), "an integer from 1 to 30")},
     "punch": {"kind": ((str,), "a catalogue name, or 'flat' (a flat-ended cylinder, with [flat_punch])"),
               "expr": ((str,), "a polynomial in x_1, x_2 as a string")},
-    "flat_punch": {"a_over_H": ((list,), "a list of punch radius over thickness values in (0, 200]"),
-                   "nu": ((list,), "a list of Poisson ratios in (-1, 1/2] (columns of the table)")},
-    "inner": {"order": ((int,), "a positive integer (number of terms)")},
-    "edge_shift": {"nu": ((list,), "a list of numbers in (-1, 1/2)")},
-    "contact": {"delta0": ((int, float), "a number > 0"), "force": ((int, float), "a number > 0"),
-                "H": ((int, float), "a number > 0"), "mu": ((int, float), "a number > 0 (shear modulus)"),
-                "E": ((int, float), "a number > 0 (Young's modulus)"),
-                "nu": ((int, float), "a number in (-1, 1/2]"),
-                "model": ((str,), "'auto', 'asymptotic', 'compressible', 'two-term', 'incompressible', "
-                                  "'any-thickness' or 'direct'"),
-                "tol": ((int, float), "a relative tolerance > 0, e.g. 0.05"),
-                "parameters": ((dict,), "a table of numbers, e.g. {R_1 = 4, R_2 = 1}")},
-    "validation": {"nu": ((list,), "a list of Poisson ratios"), "H_over_a": ((list,), "a list of H/a values"),
-                   "shapes": ((list,), "a list of shape names")},
-    "second_order": {"nu": ((list,), "a list of 1 to 12 Poisson ratios in (-1, 1/2) (numbers, or exact strings "
-                                     "like '3/10') or 'frictionless' (the rows of the table of r_3)")},
     "units": {"length": ((str,), "a length unit such as 'mm' or 'um'"),
               "stress": ((str,), "a stress unit such as 'MPa' or 'N/mm^2' (of mu and E)"),
               "force": ((str,), "a force unit such as 'N' or 'mN'")},
 }
-_TOP_KEYS = set(SCHEMA)
+assert tuple(CORE_SCHEMA) == CORE_TABLES
+
+
+class _Schema(Mapping):
+    """The derivation file's schema, table -> {key: (python types, what is valid)}; any other key is an error.
+
+    The core tables' (:data:`CORE_SCHEMA`) and the registered report sections' fragments
+    (:func:`thinlayer.export.sections.schema`), assembled at each reading: a section registered later is in it.
+    """
+
+    def _tables(self) -> dict[str, dict[str, tuple[tuple[type, ...], str]]]:
+        return {**CORE_SCHEMA, **sections_schema()}
+
+    def __getitem__(self, table: str) -> dict[str, tuple[tuple[type, ...], str]]:
+        return self._tables()[table]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._tables())
+
+    def __len__(self) -> int:
+        return len(self._tables())
+
+    def __repr__(self) -> str:
+        return f"SCHEMA({self._tables()!r})"
+
+
+#: the schema: table -> {key: (python types, what is valid)}; any other key is an error
+SCHEMA: Mapping[str, dict[str, tuple[tuple[type, ...], str]]] = _Schema()
 _REQUIRED = ("derivation", "layer", "punch")
-#: the range of a dimensional number of [contact] (beyond it squares and cubes leave double precision)
-NUMBER_RANGE = (1e-30, 1e30)
 
 
 def _type_name(kinds: tuple[type, ...]) -> str:
@@ -113,13 +141,14 @@ def check_schema(data: dict) -> None:
     DerivationFileError
         naming the table, the key and the valid keys (or the expected type).
     """
-    unknown = sorted(set(data) - _TOP_KEYS)
+    schema = dict(SCHEMA)
+    unknown = sorted(set(data) - set(schema))
     if unknown:
-        raise DerivationFileError(f"unknown table(s) {unknown}; valid tables are {sorted(_TOP_KEYS)}")
+        raise DerivationFileError(f"unknown table(s) {unknown}; valid tables are {sorted(schema)}")
     for t in _REQUIRED:
         if t not in data:
             raise DerivationFileError(f"the table [{t}] is required")
-    for table, keys in SCHEMA.items():
+    for table, keys in schema.items():
         if table not in data:
             continue
         tab = data[table]
@@ -139,24 +168,6 @@ def check_schema(data: dict) -> None:
 def _short(val: Any) -> str:
     text = repr(val)
     return text if len(text) <= 60 else text[:50] + " ..."
-
-
-def _validation_table(vt: Any) -> dict | None:
-    """Validate ``[validation]``: a small study against the direct numerics for the report."""
-    if vt is None:
-        return None
-    from ..validation import check_nus, check_ratios, check_shapes
-
-    checks = (("nu", lambda v: list(check_nus(v, "nu")), [0.3]),
-              ("H_over_a", lambda v: list(check_ratios(v, "H_over_a")), [0.1, 0.05, 0.025]),
-              ("shapes", lambda v: list(check_shapes(v)), ["sphere"]))
-    out = {}
-    for key, check, default in checks:
-        try:
-            out[key] = check(vt.get(key, default))
-        except (TypeError, ValueError, ArithmeticError) as exc:
-            raise DerivationFileError(f"[validation] {key} = {_short(vt.get(key))}: {exc}") from exc
-    return out
 
 
 #: the dimension (kg, m, s) of each key of [units] and examples of it
@@ -200,76 +211,6 @@ def _units_table(ut: Any) -> dict | None:
     return out
 
 
-def _positive_number(table: dict, key: str, where: str) -> float:
-    """A finite number in :data:`NUMBER_RANGE` (a TOML value already of type int or float)."""
-    val = table[key]
-    lo, hi = NUMBER_RANGE
-    if not (isinstance(val, (int, float)) and lo <= abs(float(val)) <= hi and val > 0):
-        raise DerivationFileError(f"[{where}] {key} = {val!r} is invalid: expected a number > 0 from {lo:g} to {hi:g}")
-    return float(val)
-
-
-def _contact_table(ct: Any, layer: LayerKernel, punch: Punch, layer_nu: Any) -> dict | None:
-    """Validate ``[contact]``: numeric parameters for :func:`thinlayer.solve`."""
-    if ct is None:
-        return None
-    if ("delta0" in ct) == ("force" in ct):
-        raise DerivationFileError("[contact] needs exactly one of 'delta0' (indentation) or 'force' (inverse problem)")
-    if "H" not in ct:
-        raise DerivationFileError("[contact] is missing the key 'H' (a number > 0)")
-    out = {key: _positive_number(ct, key, "contact") for key in ("delta0", "force", "H", "mu", "E") if key in ct}
-    if "mu" in out and "E" in out:
-        raise DerivationFileError("[contact] gives both 'mu' and 'E': give one elastic modulus (mu shear, E Young's)")
-    if "mu" not in out and "E" not in out:
-        out["mu"] = 1.0  # the report's numbers are then per unit shear modulus, as the symbolic sections
-    if "model" in ct:
-        from ..contact.solve import MODELS
-
-        if ct["model"] not in MODELS:
-            raise DerivationFileError(f"[contact] model = {ct['model']!r}: valid models are {list(MODELS)}")
-        out["model"] = ct["model"]
-    if "tol" in ct:
-        out["tol"] = _positive_number(ct, "tol", "contact")
-    nu = ct.get("nu")
-    if nu is not None and layer_nu is not None:
-        raise DerivationFileError(f"[contact] nu = {nu!r} contradicts [layer] nu = {layer_nu!r}: give nu in one "
-                                  "place ([layer] for the whole derivation, or [contact] with [layer] nu = 'symbolic')")
-    if layer.base == "frictionless":
-        if not isinstance(nu, (int, float)) or not -1 < nu <= 0.5:
-            raise DerivationFileError(f"[contact] nu = {nu!r}: the frictionless base needs a number in (-1, 1/2] "
-                                      "for vartheta = mu/(1 - nu)")
-        out["nu"] = float(nu)
-    elif _compressible_bonded(layer) and layer.parameter is not None:
-        if nu is None:
-            raise DerivationFileError("[contact] needs 'nu' (a number in (-1, 1/2)) because [layer] nu is symbolic")
-    if nu is not None and _compressible_bonded(layer):
-        try:
-            out["layer"] = BondedLayer(nu)
-        except (ValueError, TypeError, ArithmeticError) as exc:
-            raise DerivationFileError(f"[contact] nu = {nu!r}: {exc}") from exc
-    pars = ct.get("parameters", {})
-    for k in pars:
-        if isinstance(pars[k], bool) or not isinstance(pars[k], (int, float)):
-            raise DerivationFileError(f"[contact] parameters.{k} = {_short(pars[k])} is invalid: expected a "
-                                      "number; parameters is a table of numbers, e.g. {R_1 = 4, R_2 = 1}")
-        _positive_number(pars, k, "contact.parameters")
-    names = {q.name for q in punch.parameters}
-    bad = set(pars) - names
-    if bad:
-        raise DerivationFileError(f"[contact] parameters {sorted(bad)} are not parameters of the punch "
-                                  f"({', '.join(sorted(names)) or 'it has none'})")
-    missing = names - set(pars)
-    if missing:
-        raise DerivationFileError(f"[contact] parameters: values missing for {sorted(missing)}")
-    out["parameters"] = dict(pars)
-    return out
-
-
-def _compressible_bonded(layer: LayerKernel) -> bool:
-    """A compressible layer bonded to its base (not the incompressible limit): the (3.15)-(3.25) sections apply."""
-    return layer.base == "bonded" and layer.has_compressible_expansion
-
-
 def _need(table: dict, key: str, where: str, kinds: tuple, what: str) -> Any:
     if key not in table:
         raise DerivationFileError(f"[{where}] is missing the key '{key}' ({what})")
@@ -298,84 +239,29 @@ def _layer_table(lay: dict) -> LayerKernel:
         raise DerivationFileError(f"[layer] nu = {_short(nu)}: {exc}") from exc
 
 
-_KINDS = {"elliptic_paraboloid": Punch.elliptic_paraboloid, "paraboloid": Punch.paraboloid,
-          "fourth_degree": Punch.fourth_degree}
+#: the catalogue punches of ``[punch] kind``: the constructor, and what the punch is beyond its formula
+#: (:attr:`Derivation.punch_traits`, in the words of :data:`thinlayer.errata.PUNCHES`)
+_KINDS = {"elliptic_paraboloid": (Punch.elliptic_paraboloid, frozenset({"elliptic paraboloid"})),
+          "paraboloid": (Punch.paraboloid, frozenset({"sphere"})),
+          "fourth_degree": (Punch.fourth_degree, frozenset())}
 
 
-#: the default table of [flat_punch]: a/H from thick to thin, nu from 0 to incompressible
-FLAT_DEFAULT = {"a_over_H": [0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0], "nu": [0.0, 0.3, 0.45, 0.5]}
-
-
-def _flat_table(ft: Any, needed: bool) -> dict | None:
-    """``[flat_punch]``: the a/H values (<= 30, in (0, 200]) and the nu values (<= 8, in (-1, 1/2]) of the table."""
-    if ft is None:
-        return dict(FLAT_DEFAULT) if needed else None
-    out = {}
-    for key, lo, hi, most, closed in (("a_over_H", 0.0, 200.0, 30, True), ("nu", -1.0, 0.5, 8, True)):
-        vals = ft.get(key, FLAT_DEFAULT[key])
-        ok = (0 < len(vals) <= most and all(isinstance(v, (int, float)) and not isinstance(v, bool)
-                                                and lo < v <= hi for v in vals))
-        if not ok:
-            raise DerivationFileError(f"[flat_punch] {key} = {_short(vals)}: a list of 1 to {most} numbers in "
-                                      f"({lo:g}, {hi:g}]")
-        out[key] = [float(v) for v in vals]
-    return out
-
-
-#: the default rows of the table of [second_order]: nu from 0 to nearly incompressible, and the frictionless base
-SECOND_ORDER_NUS = ("0", "1/4", "3/10", "2/5", "9/20", "frictionless")
-#: the most rows of that table (each r_3 by three factorisations, ~0.2 s)
-SECOND_ORDER_MOST = 12
-_EXACT_NU = re.compile(r"[-+]?[0-9]{1,6}(\.[0-9]{1,6})?(/[0-9]{1,6})?")
-
-
-def _second_order_table(st: Any, layer: LayerKernel, punch: Punch | None) -> dict | None:
-    """``[second_order]``: the section of (SO.1)-(SO.10) and the nu values of its table of ``r_3``.
-
-    Each value is a number or an exact string (``"3/10"``, parsed by :class:`fractions.Fraction`, never
-    evaluated) with ``-1 < nu < 1/2``, or ``"frictionless"`` (the layer on a frictionless base).
-    """
-    if st is None:
-        return None
-    if punch is None or not (layer.base == "frictionless" or _compressible_bonded(layer)):
-        raise DerivationFileError("[second_order] is for the compressible expansion of a polynomial punch (a bonded "
-                                  "layer with nu < 1/2 or the frictionless base), not the flat punch or nu = 1/2")
-    vals = st.get("nu", list(SECOND_ORDER_NUS))
-    what = (f"a list of 1 to {SECOND_ORDER_MOST} Poisson ratios in (-1, 1/2) (numbers, or exact strings like "
-            "'3/10') or 'frictionless'")
-    if not 0 < len(vals) <= SECOND_ORDER_MOST:
-        raise DerivationFileError(f"[second_order] nu = {_short(vals)}: {what}")
-    out = []
-    for v in vals:
-        if v == "frictionless":
-            out.append(v)
-            continue
-        if isinstance(v, str) and _EXACT_NU.fullmatch(v.strip()):
-            num: Any = Fraction(v.strip())
-        elif isinstance(v, (int, float)) and not isinstance(v, bool):
-            num = float(v)
-        else:
-            raise DerivationFileError(f"[second_order] nu: {_short(v)} is invalid: {what}")
-        if not -1 < num < Fraction(1, 2):
-            raise DerivationFileError(f"[second_order] nu: {_short(v)} is outside (-1, 1/2): {what}")
-        out.append(num)
-    return {"nu": out}
-
-
-def _punch_table(pu: dict) -> Punch | None:
-    """The punch of ``[punch]``: a catalogue ``kind`` or a polynomial ``expr``; its symbol names checked.
+def _punch_table(pu: dict) -> tuple[Punch | None, frozenset]:
+    """The punch of ``[punch]`` and its traits: a catalogue ``kind`` or a polynomial ``expr``; its symbol names checked.
 
     ``kind = "flat"`` (the flat-ended cylinder) gives ``None``: its report is the section of ``[flat_punch]``.
     """
     if ("kind" in pu) == ("expr" in pu):
         raise DerivationFileError("[punch] needs exactly one of 'kind' (a catalogue punch) or 'expr' (a polynomial)")
     if pu.get("kind") == "flat":
-        return None
+        return None, frozenset()
+    traits: frozenset = frozenset()
     if "kind" in pu:
         if pu["kind"] not in _KINDS:
             raise DerivationFileError(f"[punch] kind = {_short(pu['kind'])}: valid kinds are "
                                       f"{sorted([*_KINDS, 'flat'])}")
-        punch = _KINDS[pu["kind"]]()
+        make, traits = _KINDS[pu["kind"]]
+        punch = make()
     else:
         try:
             punch = Punch(pu["expr"])
@@ -385,7 +271,7 @@ def _punch_table(pu: dict) -> Punch | None:
         check_symbol_names((q.name for q in punch.expr.free_symbols), "[punch]")
     except ReportTextError as exc:
         raise DerivationFileError(str(exc)) from exc
-    return punch
+    return punch, traits
 
 
 def _read_tables(path: Path) -> dict:
@@ -528,25 +414,10 @@ def _load(path: Path) -> Derivation:
     corder = data.get("coefficients", {}).get("order", 3)
     if not 1 <= corder <= 30:
         raise DerivationFileError(f"[coefficients] order = {corder!r}: an integer from 1 to 30")
-    punch = _punch_table(data["punch"])
-    iorder = data.get("inner", {}).get("order")
-    if iorder is not None and not 1 <= iorder <= 30:
-        raise DerivationFileError(f"[inner] order = {iorder!r}: a positive integer (number of terms) up to 30")
-    es = data.get("edge_shift", {}).get("nu", [])
-    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and -1 < v < 0.5 for v in es) or len(es) > 50:
-        raise DerivationFileError(f"[edge_shift] nu = {_short(es)}: a list of at most 50 numbers in (-1, 1/2)")
-    layer_nu = data["layer"].get("nu")
-    if punch is None:
-        extra = [t for t in ("inner", "contact", "validation") if t in data]
-        if extra:
-            raise DerivationFileError(f"[{extra[0]}] is for a polynomial punch; with [punch] kind = 'flat' the report "
-                                      "is the table of [flat_punch] (thinlayer solve --flat for one contact)")
-    contact = _contact_table(data.get("contact"), layer, punch, None if layer_nu == "symbolic" else layer_nu)
-    validation = _validation_table(data.get("validation"))
+    punch, traits = _punch_table(data["punch"])
     units = _units_table(data.get("units"))
-    flat = _flat_table(data.get("flat_punch"), punch is None)
-    second = _second_order_table(data.get("second_order"), layer, punch)
-    return Derivation(name, title, layer, punch, corder, iorder, tuple(es), contact, validation, units, flat, second)
+    context = ParseContext(layer, punch, corder, units, data)
+    return Derivation(name, title, layer, punch, corder, units, parse_sections(data, context), traits)
 
 
 def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: bool = False) -> str:
@@ -574,14 +445,13 @@ def report_latex(der: Derivation, figure_dir: str | Path | None = None, force: b
     from .report import derivation_document
 
     if isinstance(der, ErrataDocument):
-        from ._errata_section import errata_document
         from .report import Document
+        from .sections.errata import errata_document
 
         return errata_document(Document(der.title))
     if der.punch is not None:
         check_symbol_names((q.name for q in der.punch.expr.free_symbols), "punch")
     return derivation_document(der, figure_dir, force)
-
 
 
 def write_report(der: Derivation, out_dir: str | Path, pdf: bool | None = False, force: bool = False,
@@ -628,12 +498,11 @@ def write_report(der: Derivation, out_dir: str | Path, pdf: bool | None = False,
     pdf = latex_available() if pdf is None else bool(pdf) and not missing_engine
     out = Path(out_dir)
     tex = out / f"{der.name}.tex"
-    figures = out / f"{der.name}-figures" if der.validation is not None else None
-    targets = [tex, *pdf_outputs(tex)]
-    if figures is not None:
-        from ..validation.plots import figure_files
-
-        targets += figure_files(figures, "validation", ("pdf",))
+    figures: Path | None = out / f"{der.name}-figures"
+    figure_targets = figure_files(der, figures)  # the sections' figures (the validation plots)
+    if not figure_targets:
+        figures = None
+    targets = [tex, *pdf_outputs(tex), *figure_targets]
 
     def check() -> None:
         check_writable(tex, force)

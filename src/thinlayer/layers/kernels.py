@@ -115,8 +115,53 @@ class LayerKernel(RichDisplay, ABC):
     has_compressible_expansion: ClassVar[bool] = True
     #: whether the Maclaurin data are plain symbols (``A``, ``m_n``) rather than derived from ``L(u)``
     symbolic_coefficients: ClassVar[bool] = False
-    #: the base under the layer: ``"bonded"``, ``"frictionless"`` or None (no base)
+    #: the base under the layer: ``"bonded"``, ``"frictionless"`` or None (no base).  Data: callers outside
+    #: ``layers/`` do not compare it; they ask the members below
     base: ClassVar[str | None] = None
+    #: words for summaries: the layer is "<base_phrase> a rigid base" ("bonded to", "lying without friction on");
+    #: None without a base
+    base_phrase: ClassVar[str | None] = None
+    #: what a one-line summary adds about the base: "" for the paper's bonded base, "frictionless base" otherwise
+    base_note: ClassVar[str] = ""
+    #: whether the two-term model (I.10) (nu -> 1/2 with m_1 > 0) is derived for this layer: a bonded base
+    has_two_term_model: ClassVar[bool] = False
+    #: whether the incompressible model (I.2)-(I.9) is derived for this layer at nu = 1/2: a bonded base
+    has_incompressible_model: ClassVar[bool] = False
+    #: whether the boundary layer (3.15)-(3.25) and its edge shift h* are derived for this layer
+    has_edge_shift: ClassVar[bool] = False
+    #: whether the kernel L(u) depends on Poisson's ratio (False: frictionless base, half-space; nu then enters
+    #: only through vartheta = mu/(1 - nu) (2.1))
+    kernel_depends_on_nu: ClassVar[bool] = True
+
+    @property
+    def base_label(self) -> str | None:
+        """The base as a key for tables, JSON and the CLI: ``"bonded"``, ``"frictionless"``, or None (no base)."""
+        return self.base
+
+    @property
+    def on_rigid_base(self) -> bool:
+        """Whether the layer lies on a rigid base (bonded or frictionless): what ``solve()`` answers for."""
+        return self.base is not None
+
+    @property
+    def kernel_key(self) -> "LayerKernel":
+        """The layer reduced to what its kernel ``L(u)`` depends on: the key of caches of kernel-only quantities
+        (a frictionless layer without its nu; every other layer itself).
+        """
+        return self
+
+    def with_nu(self, nu: Any) -> "LayerKernel":
+        """The layer of the same base at the numeric Poisson ratio ``nu`` (a bonded base at nu = 1/2 is
+        :class:`IncompressibleLayer`).
+        """
+        raise InputError(f"{self!r} has no base to put at nu = {nu!r}: with_nu needs BondedLayer, "
+                         "IncompressibleLayer or FrictionlessLayer")
+
+    def incompressible_at(self, nu: Any) -> bool:
+        """Whether this layer at Poisson's ratio ``nu`` is the incompressible layer (I.1): a bonded base at
+        nu = 1/2 (the compressible expansion (2.20) degenerates there, A = 0).
+        """
+        return False
 
     @property
     def numeric_nu(self) -> float | None:
@@ -287,6 +332,18 @@ class BondedLayer(LayerKernel):
         return sp.Float(self.nu, self.dps) if isinstance(self.nu, mpmath.mpf) else self.nu
 
     base: ClassVar[str | None] = "bonded"
+    base_phrase: ClassVar[str | None] = "bonded to"
+    has_two_term_model: ClassVar[bool] = True
+    has_incompressible_model: ClassVar[bool] = True
+    has_edge_shift: ClassVar[bool] = True
+
+    def with_nu(self, nu: Any) -> LayerKernel:
+        """``BondedLayer(nu)`` at this layer's precision (``IncompressibleLayer()`` at nu = 1/2)."""
+        return BondedLayer(nu, dps=self.dps)
+
+    def incompressible_at(self, nu: Any) -> bool:
+        """Whether ``nu`` is exactly 1/2."""
+        return _is_half(nu)
 
     @property
     def vartheta(self) -> sp.Expr:
@@ -363,6 +420,19 @@ class FrictionlessLayer(LayerKernel):
     name: str = field(default="frictionless", init=False)
     equation: str = field(default="", init=False)
     base: ClassVar[str | None] = "frictionless"
+    base_phrase: ClassVar[str | None] = "lying without friction on"
+    base_note: ClassVar[str] = "frictionless base"
+    has_edge_shift: ClassVar[bool] = True
+    kernel_depends_on_nu: ClassVar[bool] = False
+
+    @property
+    def kernel_key(self) -> LayerKernel:
+        """``FrictionlessLayer()``: the kernel does not depend on nu."""
+        return FrictionlessLayer()
+
+    def with_nu(self, nu: Any) -> LayerKernel:
+        """``FrictionlessLayer(nu)``."""
+        return FrictionlessLayer(nu)
 
     def __post_init__(self):
         if self.nu is not None:
@@ -414,6 +484,11 @@ class HalfSpace(LayerKernel):
     equation: str = field(default="2.4", init=False)
     has_thickness: ClassVar[bool] = False
     has_compressible_expansion: ClassVar[bool] = False
+    kernel_depends_on_nu: ClassVar[bool] = False
+
+    def with_nu(self, nu: Any) -> LayerKernel:
+        """Itself: the half-space kernel carries no nu (nu enters only through vartheta = mu/(1 - nu) (2.1))."""
+        return self
 
     def L(self, u: sp.Expr = S.u) -> sp.Expr:
         u = sympy_value(u, "u")
@@ -519,6 +594,17 @@ class IncompressibleLayer(LayerKernel):
     equation: str = field(default="2.3", init=False)
     has_compressible_expansion: ClassVar[bool] = False
     base: ClassVar[str | None] = "bonded"
+    base_phrase: ClassVar[str | None] = "bonded to"
+    has_two_term_model: ClassVar[bool] = True
+    has_incompressible_model: ClassVar[bool] = True
+
+    def with_nu(self, nu: Any) -> LayerKernel:
+        """Itself at nu = 1/2, ``BondedLayer(nu)`` otherwise."""
+        return self if _is_half(nu) else BondedLayer(nu)
+
+    def incompressible_at(self, nu: Any) -> bool:
+        """Whether ``nu`` is exactly 1/2."""
+        return _is_half(nu)
 
     @property
     def numeric_nu(self) -> float:

@@ -70,7 +70,7 @@ from .._checks import InputError, InputTypeError, check_bounded, positive
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..punch import Punch
+from ..punch import Punch, is_polynomial_tip
 from ._layer import GAUSS, U_MAX, numeric_layer_nu, panel_count
 from ._spectral import Discretisation, correction_displacement, pressure_function, sample_radii
 
@@ -184,7 +184,7 @@ AxisymmetricPunchContact = AxisymmetricContact
 def _as_punch(punch: Any) -> Punch:
     if isinstance(punch, (str, sp.Basic)):
         punch = Punch(punch)
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         raise InputTypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
                         f"got {punch!r} ({type(punch).__name__})")
     return punch
@@ -221,8 +221,8 @@ def radial_profile(punch: Any) -> sp.Expr:
         raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
                          f"substitute numbers first, e.g. punch.subs({{'{punch.parameters[0]}': 1.0}})")
     phi = punch.expr
-    angular = sp.expand(S.x1 * sp.diff(phi, S.x2) - S.x2 * sp.diff(phi, S.x1))
-    if angular != 0:
+    if not punch.axisymmetric:
+        angular = sp.expand(S.x1 * sp.diff(phi, S.x2) - S.x2 * sp.diff(phi, S.x1))
         raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} is not axisymmetric "
                          f"(x1 dPhi/dx2 - x2 dPhi/dx1 = {angular} is not zero): use "
                          "thinlayer.numerics.solve_2d for a general punch")
@@ -231,7 +231,7 @@ def radial_profile(punch: Any) -> sp.Expr:
 
 def _is_punch(shape: Any) -> bool:
     """A Punch, a string, or a sympy expression in the plane coordinates ``thinlayer.symbols.x1, x2``."""
-    if isinstance(shape, (Punch, str)):
+    if isinstance(shape, str) or is_polynomial_tip(shape):
         return True
     return isinstance(shape, sp.Basic) and shape.has(S.x1, S.x2)
 

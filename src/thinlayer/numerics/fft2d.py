@@ -122,11 +122,10 @@ import numpy as np
 import sympy as sp
 from scipy import optimize
 
-from .. import symbols as S
 from .._checks import ComputationError, InputError, InputTypeError, positive
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..punch import Punch
+from ..punch import Punch, is_polynomial_tip
 from ._influence import MAX_BYTES, Convolver, check_n, influence_coefficients, layer_correction_kernel, memory_estimate
 from ._layer import numeric_layer_nu
 from ._polonsky_keer import polonsky_keer
@@ -248,14 +247,14 @@ class Contact2D:
 def _numeric_punch(punch: Any) -> tuple[Punch, Callable[[np.ndarray, np.ndarray], np.ndarray]]:
     if isinstance(punch, (str, sp.Basic)):
         punch = Punch(punch)
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         raise InputTypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
                         f"got {punch!r} ({type(punch).__name__})")
     if punch.parameters:
         names = ", ".join(str(q) for q in punch.parameters)
         raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
                          f"substitute numbers first, e.g. punch.subs({{'{punch.parameters[0]}': 1.0}})")
-    coeffs = sp.Poly(punch.expr, S.x1, S.x2).coeffs()
+    coeffs = punch.polynomial.coeffs()
     if not all(c.is_real for c in coeffs):
         raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has non-real coefficients")
     f = punch.lambdify()

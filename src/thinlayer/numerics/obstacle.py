@@ -21,7 +21,7 @@ from .. import symbols as S
 from .._checks import ComputationError, InputError, InputTypeError, check_bounded, parse_nu, positive
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
-from ..punch import Punch
+from ..punch import is_polynomial_tip
 
 __all__ = ["GridContact", "solve_obstacle_grid"]
 
@@ -116,7 +116,7 @@ class GridContact:
 
 
 def _numeric_phi(punch: Any, parameters: dict | None) -> Callable:
-    if isinstance(punch, Punch):
+    if is_polynomial_tip(punch):
         pn = punch.subs(parameters) if parameters else punch
         if pn.parameters:
             raise InputError(f"the punch parameters {[q.name for q in pn.parameters]} need values (parameters=...)")
@@ -218,7 +218,7 @@ def _model_floats(layer: Any) -> tuple[float, float, float, float]:
     if not isinstance(layer, LayerKernel):
         raise InputTypeError(f"layer must be a thinlayer LayerKernel (IncompressibleLayer(), BondedLayer(nu)), "
                         f"got {layer!r}")
-    if layer.base != "bonded" or layer.symbolic_coefficients or not layer.has_thickness:
+    if not layer.has_incompressible_model or layer.symbolic_coefficients or not layer.has_thickness:
         raise InputError(f"the grid model needs BondedLayer(nu) (1/4 < nu < 1/2) or IncompressibleLayer(), "
                          f"got {layer!r}")
     nv = layer.numeric_nu

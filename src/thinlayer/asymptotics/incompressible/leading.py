@@ -23,7 +23,7 @@ from ...display import RichDisplay, fmt
 from ...layers.kernels import IncompressibleLayer
 from ...normal import normal_latex
 from ...parse import as_expr
-from ...punch import Punch, PunchError
+from ...punch import Punch, PunchError, is_polynomial_tip
 from ...results import checked_lambdify, latex_equation
 from ...symbols import laplacian
 from .operator import obstacle_problem
@@ -415,10 +415,10 @@ def incompressible_axisymmetric(punch: Punch) -> IncompressibleRadial:
     >>> sp.solve(sol.radius_equation, c_sym)
     [2*sqrt(R)*sqrt(delta_0)]
     """
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         raise InputTypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
-    ang = sp.expand(S.x1 * sp.diff(punch.expr, S.x2) - S.x2 * sp.diff(punch.expr, S.x1))
-    if ang != 0:
+    if not punch.axisymmetric:
+        ang = sp.expand(S.x1 * sp.diff(punch.expr, S.x2) - S.x2 * sp.diff(punch.expr, S.x1))
         raise PunchError(f"the punch Phi = {punch.expr} is not axisymmetric (x1 dPhi/dx2 - x2 dPhi/dx1 = {ang}); "
                          "use solve_obstacle_grid for a general punch")
     prob = obstacle_problem(IncompressibleLayer(), punch)

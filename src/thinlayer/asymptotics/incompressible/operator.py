@@ -25,7 +25,7 @@ from ...errors import boundary, boundary_methods
 from ...layers.kernels import BondedLayer, IncompressibleLayer, LayerKernel
 from ...normal import join_signed, normal_latex
 from ...parse import sympy_value
-from ...punch import Punch
+from ...punch import Punch, is_polynomial_tip
 from ...results import checked_lambdify, latex_equation
 from ...symbols import laplacian
 
@@ -251,7 +251,7 @@ def model_layer(layer: Any, call: str, numeric: bool = False) -> tuple[LayerKern
         layer = IncompressibleLayer()
     elif not isinstance(layer, LayerKernel):
         layer = layer_from_nu(layer, call, stacklevel=4)
-    if layer.base != "bonded" or layer.symbolic_coefficients or not layer.has_thickness:
+    if not layer.has_incompressible_model or layer.symbolic_coefficients or not layer.has_thickness:
         raise InputError(f"the incompressible/two-term models need a layer bonded to a rigid base, "
                          f"{call.format(layer='BondedLayer(nu)')} (1/4 < nu < 1/2) or "
                          f"{call.format(layer='IncompressibleLayer()')}; got {layer!r}")
@@ -402,13 +402,13 @@ def obstacle_problem(layer: LayerKernel, punch: Punch | None = None, nu: Any = N
     >>> sp.factor(obstacle_problem(IncompressibleLayer(), Punch.paraboloid()).source)
     3*mu*(2*R*delta_0 - x_1**2 - x_2**2)/(2*H**3*R)
     """
-    if isinstance(layer, Punch):  # deprecated: obstacle_problem(punch, nu=1/2)
+    if is_polynomial_tip(layer):  # deprecated: obstacle_problem(punch, nu=1/2)
         old = punch if punch is not None else (HALF if nu is None else nu)
         layer, punch = layer_from_nu(old, "obstacle_problem({layer}, punch)"), layer
     elif nu is not None:
         raise InputTypeError("nu= belongs to the deprecated form obstacle_problem(punch, nu); "
                         "pass the layer only: obstacle_problem(BondedLayer(nu), punch)")
-    if not isinstance(punch, Punch):
+    if not is_polynomial_tip(punch):
         raise InputTypeError(f"punch must be a thinlayer.Punch, got {type(punch).__name__}")
     layer, nv = model_layer(layer, "obstacle_problem({layer}, punch)")
     c0, c1, th = model_coefficients(layer, nv)

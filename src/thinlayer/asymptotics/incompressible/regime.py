@@ -125,7 +125,7 @@ def regime(layer: LayerKernel, H_over_a: float, tol: float = 0.05) -> Regime:
     tl = positive(tol, "tol")
     layer = _regime_layer(layer)
     nv = layer.numeric_nu
-    if nv is None or layer.base != "bonded" or not layer.has_thickness:
+    if nv is None or not layer.has_two_term_model or not layer.has_thickness:
         raise InputTypeError(f"regime needs a numeric bonded layer, BondedLayer(nu) or IncompressibleLayer(), "
                         f"got {layer!r}")
     c0, c1 = layer.taylor_coefficients(1)

@@ -8,7 +8,11 @@ from __future__ import annotations
 import re
 from typing import Any
 
-__all__ = ["cited_keys", "references_section"]
+__all__ = ["KEY", "SCHEMA", "ORDER", "parse", "applies", "render", "cited_keys", "references_section"]
+
+KEY = None
+SCHEMA: dict = {}
+ORDER = 1000  # the last section: everything the report cites
 
 _CITE = re.compile(r"\\cite\{([^{}]*)\}")
 
@@ -30,7 +34,7 @@ def cited_keys(latex: str) -> list[str]:
 
 def references_section(doc: Any) -> Any:
     """Append the references of everything ``doc`` cites so far (a ``thebibliography``, numbered by first citation)."""
-    from .. import references
+    from ... import references
 
     keys = cited_keys("\n".join(doc.parts))
     items = [references.latex_item(k) for k in keys]
@@ -43,3 +47,15 @@ def references_section(doc: Any) -> Any:
         return doc
     doc.parts.append("\n".join([rf"\begin{{thebibliography}}{{{len(items)}}}", *items, r"\end{thebibliography}"]))
     return doc
+
+
+def parse(table: Any, context: Any) -> None:
+    return None
+
+
+def applies(der: Any) -> bool:
+    return True
+
+
+def render(doc: Any, der: Any, context: Any) -> None:
+    references_section(doc)

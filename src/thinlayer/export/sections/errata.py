@@ -12,11 +12,16 @@ import re
 from collections.abc import Iterable
 from typing import Any
 
-from .._checks import InputError
-from ..display import latex_escape
+from ..._checks import InputError
+from ...display import latex_escape
+from .base import axisymmetric
 
-__all__ = ["prose", "errata_section", "errata_document", "equations_used", "punch_kinds", "layer_kinds",
-           "report_errata"]
+__all__ = ["KEY", "SCHEMA", "ORDER", "parse", "applies", "render", "prose", "errata_section", "errata_document",
+           "equations_used", "punch_kinds", "layer_kinds", "report_errata"]
+
+KEY = None
+SCHEMA: dict = {}
+ORDER = 900  # after every section whose equations it looks at
 
 _TAG = re.compile(r"\\tag\{([^{}]*)\}")
 _NUMBER = r"(?:[A-Z]{1,2}\.\d+|\d+\.\d+)"
@@ -65,26 +70,12 @@ def equations_used(latex: str) -> set[str]:
     return out
 
 
-def _axisymmetric(punch: Any) -> bool:
-    import sympy as sp
-
-    from .. import symbols as S
-
-    e = punch.expr
-    return sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0
-
-
 def punch_kinds(der: Any) -> set[str]:
     """The kinds of :data:`thinlayer.errata.PUNCHES` a derivation's punch belongs to."""
     if der.punch is None:
         return {"flat"}
-    kinds = {"smooth"}
-    name = der.punch.name
-    if name == "elliptic paraboloid":
-        kinds.add("elliptic paraboloid")
-    if name.startswith("paraboloid"):
-        kinds.add("sphere")
-    if _axisymmetric(der.punch):
+    kinds = {"smooth", *der.punch_traits}  # the catalogue punch's: "sphere", "elliptic paraboloid"
+    if axisymmetric(der.punch):
         kinds.add("axisymmetric")
     return kinds
 
@@ -100,7 +91,7 @@ def layer_kinds(der: Any) -> set[str]:
     nu = layer.numeric_nu
     if nu is None or nu > 0.25:
         kinds.add("nearly incompressible")
-    flat = getattr(der, "flat_punch", None)
+    flat = der.sections.get("flat_punch")
     if flat is not None and any(float(v) == 0.5 for v in flat.get("nu", ())):
         kinds.add("incompressible")
     return kinds
@@ -108,7 +99,7 @@ def layer_kinds(der: Any) -> set[str]:
 
 def report_errata(der: Any, body: str) -> tuple[Any, ...]:
     """The entries of :mod:`thinlayer.errata` a derivation's report carries, given the report's LaTeX so far."""
-    from .. import errata
+    from ... import errata
 
     return errata.select(equations_used(body), punch_kinds(der), layer_kinds(der))
 
@@ -187,6 +178,21 @@ def _entry(doc: Any, e: Any) -> None:
     _forms(doc, e)
 
 
+def parse(table: Any, context: Any) -> None:
+    return None
+
+
+def applies(der: Any) -> bool:
+    return True
+
+
+def render(doc: Any, der: Any, context: Any) -> None:
+    """The section Errata of a derivation's report: the entries that concern the report so far."""
+    from ... import errata
+
+    errata_section(doc, report_errata(der, "\n".join(doc.parts)), len(errata.ENTRIES))
+
+
 def errata_section(doc: Any, entries: Iterable[Any], total: int) -> Any:
     """The section Errata of a report: ``entries`` (those that concern it) out of ``total`` in the registry."""
     entries = tuple(entries)
@@ -216,8 +222,8 @@ def errata_document(doc: Any) -> str:
     """The whole errata registry written into ``doc`` (a new :class:`thinlayer.export.report.Document`), ending with
     the references: the document ``thinlayer report errata``.
     """
-    from .. import errata
-    from ._references_section import references_section
+    from ... import errata
+    from .references import references_section
 
     doc.text(r"Every entry of the registry \texttt{thinlayer.errata}: where a publication's printed formula or value "
              r"differs from thinlayer's derivation, with the evidence and an independent check that confirms the "

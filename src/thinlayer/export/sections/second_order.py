@@ -17,11 +17,60 @@ from typing import Any
 
 import sympy as sp
 
-from .. import symbols as S
-from ._normal import float_latex, normal_latex
-from .units import unit_power
+from ... import symbols as S
+from .._normal import float_latex, normal_latex
+from ..units import unit_power
+from .base import DerivationFileError, compressible_bonded, short
 
-__all__ = ["second_order_part"]
+__all__ = ["KEY", "SCHEMA", "ORDER", "parse", "applies", "render", "SECOND_ORDER_NUS", "SECOND_ORDER_MOST"]
+
+KEY = "second_order"
+SCHEMA = {"nu": ((list,), "a list of 1 to 12 Poisson ratios in (-1, 1/2) (numbers, or exact strings like '3/10') "
+                          "or 'frictionless' (the rows of the table of r_3)")}
+ORDER = 70
+#: the default rows of the table of [second_order]: nu from 0 to nearly incompressible, and the frictionless base
+SECOND_ORDER_NUS = ("0", "1/4", "3/10", "2/5", "9/20", "frictionless")
+#: the most rows of that table (each r_3 by three factorisations, ~0.2 s)
+SECOND_ORDER_MOST = 12
+_EXACT_NU = re.compile(r"[-+]?[0-9]{1,6}(\.[0-9]{1,6})?(/[0-9]{1,6})?")
+
+
+def parse(st: Any, context: Any) -> dict | None:
+    """``[second_order]``: the section of (SO.1)-(SO.10) and the nu values of its table of ``r_3``.
+
+    Each value is a number or an exact string (``"3/10"``, parsed by :class:`fractions.Fraction`, never
+    evaluated) with ``-1 < nu < 1/2``, or ``"frictionless"`` (the layer on a frictionless base).
+    """
+    if st is None:
+        return None
+    layer, punch = context.layer, context.punch
+    if punch is None or not (layer.base == "frictionless" or compressible_bonded(layer)):
+        raise DerivationFileError("[second_order] is for the compressible expansion of a polynomial punch (a bonded "
+                                  "layer with nu < 1/2 or the frictionless base), not the flat punch or nu = 1/2")
+    vals = st.get("nu", list(SECOND_ORDER_NUS))
+    what = (f"a list of 1 to {SECOND_ORDER_MOST} Poisson ratios in (-1, 1/2) (numbers, or exact strings like "
+            "'3/10') or 'frictionless'")
+    if not 0 < len(vals) <= SECOND_ORDER_MOST:
+        raise DerivationFileError(f"[second_order] nu = {short(vals)}: {what}")
+    out = []
+    for v in vals:
+        if v == "frictionless":
+            out.append(v)
+            continue
+        if isinstance(v, str) and _EXACT_NU.fullmatch(v.strip()):
+            num: Any = Fraction(v.strip())
+        elif isinstance(v, (int, float)) and not isinstance(v, bool):
+            num = float(v)
+        else:
+            raise DerivationFileError(f"[second_order] nu: {short(v)} is invalid: {what}")
+        if not -1 < num < Fraction(1, 2):
+            raise DerivationFileError(f"[second_order] nu: {short(v)} is outside (-1, 1/2): {what}")
+        out.append(num)
+    return {"nu": out}
+
+
+def applies(der: Any) -> bool:
+    return der.sections.get(KEY) is not None
 
 #: significant digits of the constants h^*, m_1, r_3 and 12 r_3 in the report
 DIGITS = 10
@@ -41,7 +90,7 @@ def _nl(expr: Any) -> str:
 
 
 def _layer_of(value: Any) -> Any:
-    from ..layers.kernels import BondedLayer, FrictionlessLayer
+    from ...layers.kernels import BondedLayer, FrictionlessLayer
 
     if value == "frictionless":
         return FrictionlessLayer()
@@ -64,7 +113,7 @@ def _numeric_layer(layer: Any) -> bool:
 
 
 def _boundary_layer(doc: Any) -> None:
-    from ..asymptotics import second_order as so
+    from ...asymptotics import second_order as so
 
     bl = so.second_order_boundary_layer()
     sub = {so.h0_: _H_STAR}
@@ -93,7 +142,7 @@ def _boundary_layer(doc: Any) -> None:
 
 
 def _constants(doc: Any, layer: Any) -> None:
-    from ..asymptotics.second_order import edge_constants
+    from ...asymptotics.second_order import edge_constants
 
     if not _numeric_layer(layer):
         doc.text(r"The constants $h^*$, $m_1$ and $r_3$ are numbers for each Poisson ratio: this derivation's "
@@ -108,8 +157,8 @@ def _constants(doc: Any, layer: Any) -> None:
 
 
 def _laws(doc: Any, der: Any) -> None:
-    from ..asymptotics.force_law import h_star
-    from ..asymptotics.second_order import edge_constants, r_3, second_order_law
+    from ...asymptotics.force_law import h_star
+    from ...asymptotics.second_order import edge_constants, r_3, second_order_law
 
     layer, punch = der.layer, der.punch
     law = second_order_law(layer, punch)
@@ -179,9 +228,9 @@ def _signed(x: float, factor: str) -> str:
 
 def _numbers(doc: Any, der: Any, law: Any) -> None:
     """The second-order force and area at the numbers of ``[contact]`` next to the first-order ones."""
-    from ..asymptotics.second_order import second_order_law
+    from ...asymptotics.second_order import second_order_law
 
-    c = der.contact
+    c = der.sections.get("contact")
     if c is None or "delta0" not in c:
         return
     layer = c.get("layer", der.layer)
@@ -205,7 +254,7 @@ def _numbers(doc: Any, der: Any, law: Any) -> None:
 
 
 def _table(doc: Any, nus: list) -> None:
-    from ..asymptotics.second_order import edge_constants
+    from ...asymptotics.second_order import edge_constants
 
     rows = []
     for value in nus:
@@ -219,9 +268,9 @@ def _table(doc: Any, nus: list) -> None:
               [r"$\nu$", "$h^*$", "$m_1$", "$r_3$", "$12 r_3$", "check"], rows, label="tab:r3")
 
 
-def second_order_part(doc: Any, der: Any) -> None:
+def render(doc: Any, der: Any, context: Any) -> None:
     """Append the second-order sections to ``doc`` (a :class:`thinlayer.export.report.Document`)."""
     _boundary_layer(doc)
     _constants(doc, der.layer)
     _laws(doc, der)
-    _table(doc, der.second_order["nu"])
+    _table(doc, der.sections[KEY]["nu"])

@@ -12,22 +12,22 @@ Lambda stays visible in Phi^*.
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import ClassVar
+from functools import lru_cache
+from typing import Any, ClassVar
 
+import mpmath
+import numpy as np
 import sympy as sp
 
-from . import symbols as S
-from .display import RichDisplay, fmt
-from .errors import InputError, InputTypeError, WorkLimitError, boundary_methods
-from .normal import normal_latex
-from .parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, expression_cost, parse_expression, sympy_value
-from .symbols import laplacian
-
-
-class PunchError(InputError):
-    """The punch is not a polynomial in (x1, x2) or is otherwise inadmissible."""
+from .. import symbols as S
+from ..display import fmt
+from ..errors import InputTypeError, WorkLimitError, boundary_methods
+from ..normal import normal_latex
+from ..parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, expression_cost, parse_expression, sympy_value
+from .base import LevelSet, PunchError, Tip, TipKind, TipParameter, points, positive_depth, register_tip
 
 
 class PunchTooLargeError(PunchError, WorkLimitError):
@@ -61,7 +61,7 @@ def _degree_bound(expr: sp.Expr) -> int:
 
 @boundary_methods
 @dataclass(frozen=True)
-class Punch(RichDisplay):
+class Punch(Tip):
     """A rigid punch ``x3 = -Phi(x1, x2)`` with polynomial Phi (1.1).
 
     Parameters
@@ -179,11 +179,13 @@ class Punch(RichDisplay):
         return cls((S.x1**2 + S.x2**2) / (2 * r), scaling=scaling, name="paraboloid of revolution")
 
     @classmethod
-    def flat(cls, a) -> "FlatPunch":
-        """Flat-ended cylinder of radius ``a`` (not a polynomial: a :class:`FlatPunch`), (F.1).
+    def flat(cls, a) -> Tip:
+        """Flat-ended cylinder of radius ``a`` (not a polynomial: a :class:`~thinlayer.punch.FlatPunch`), (F.1).
 
         ``thinlayer.solve`` answers it by the flat-punch models of :mod:`thinlayer.contact.flat_punch`.
         """
+        from .flat import FlatPunch
+
         return FlatPunch(a)
 
     @classmethod
@@ -261,12 +263,94 @@ class Punch(RichDisplay):
         e = self.expr.xreplace({S.x1: Hs * v1, S.x2: Hs * v2}).xreplace(dict(self.scaling))
         return sp.expand(S.Lambda * e)
 
+    # ---- the tip protocol (thinlayer.punch.base.Tip) --------------------------------------
+    @property
+    def kind(self) -> str:
+        """The catalogue entry the punch was built from (:data:`~thinlayer.punch.TIPS` key), else ``"polynomial"``."""
+        return _KIND_OF_NAME.get(self.name, "polynomial")
+
+    @property
+    def description(self) -> str:
+        """One phrase for result summaries: the name and Phi."""
+        return f"{self.name} Phi = {self.expr}"
+
+    @property
+    def polynomial(self) -> sp.Poly:
+        """Phi as a ``sympy.Poly`` in ``(x1, x2)``; its coefficients hold the parameters."""
+        return self._poly
+
+    @property
+    def axisymmetric(self) -> bool:
+        """Whether ``x1 dPhi/dx2 - x2 dPhi/dx1 = 0`` identically (Phi depends on ``r`` only); the one place the
+        axisymmetry of a polynomial punch is decided.
+        """
+        return _axisymmetric(self.expr)
+
+    @property
+    def smoothness(self) -> str:
+        """``"smooth"``: a polynomial."""
+        return "smooth"
+
+    @property
+    def max_inner_order(self) -> None:
+        """None: the inner series (2.26) of a polynomial terminates, every order exists."""
+        return None
+
+    @property
+    def fixed_contact(self) -> bool:
+        """False: the contact grows with the depth."""
+        return False
+
+    @property
+    def quadric(self) -> tuple[float, float, float] | None:
+        """``(k1, k2, angle)`` with ``k1 <= k2`` the eigenvalues of K in ``Phi = x.Kx/2`` (``1/R1``, ``1/R2``) and the
+        angle of the eigenvector of ``k1``, when Phi is a numeric positive-definite quadratic form; else None.
+        """
+        return _quadric(self.expr) if self.is_numeric else None
+
+    @property
+    def sphere_radius(self) -> float | None:
+        """``R`` when ``Phi = (x1^2 + x2^2)/(2R)`` exactly (numeric ``R > 0``); else None."""
+        if not self.is_numeric:
+            return None
+        terms = dict(self._poly.terms())
+        if set(terms) != {(2, 0), (0, 2)} or terms[(2, 0)] != terms[(0, 2)] or not terms[(2, 0)] > 0:
+            return None
+        return 1.0 / (2.0 * float(terms[(2, 0)]))
+
+    def profile(self, x1: Any, x2: Any) -> np.ndarray:
+        """Phi at the points ``(x1, x2)`` (numpy, broadcast); needs a numeric punch."""
+        self._need_numbers("its profile")
+        x1, x2 = points(x1, "x1"), points(x2, "x2")
+        out = _compiled(self.expr)(x1, x2)
+        return np.asarray(out, dtype=float) + np.zeros(np.broadcast(x1, x2).shape)
+
+    def level_set(self, delta0: Any) -> LevelSet | None:
+        """The integrals of the force law over ``{Phi < delta0}`` (:class:`~thinlayer.punch.LevelSet`): closed form
+        for a positive-definite quadric (an ellipse of semi-axes ``sqrt(2 delta0/k_i)``), exact integration of the
+        radial polynomial for an axisymmetric punch, None for a general non-axisymmetric polynomial (the contour
+        stages compute those).  Needs a numeric punch.
+        """
+        self._need_numbers("its level set")
+        d = positive_depth(delta0)
+        q = self.quadric
+        if q is not None:
+            return _quadric_level_set(q[0], q[1], d)
+        if self.axisymmetric:
+            return _radial_level_set(self.expr, d)
+        return None
+
+    def _need_numbers(self, what: str) -> None:
+        if not self.is_numeric:
+            raise PunchError(f"{what} needs numbers for the parameters {', '.join(q.name for q in self.parameters)} "
+                             "of the punch: use Punch.subs({...})")
+
     def latex(self) -> str:
         return rf"\Phi(x_1, x_2) = {normal_latex(self.expr)} \tag{{1.1}}"
 
     def lambdify(self, args=None, backend: str = "numpy"):
         """Numeric Phi; default argument order ``(x1, x2, *parameters)``."""
-        from .results import checked_lambdify
+        from ..results import checked_lambdify
 
         args = (S.x1, S.x2, *self.parameters) if args is None else args
         return checked_lambdify(args, self.expr, backend)
@@ -282,51 +366,110 @@ class Punch(RichDisplay):
                 f"  degree {self.degree}, parameters: {pars}"]
 
 
-@boundary_methods
-@dataclass(frozen=True, init=False)
-class FlatPunch(RichDisplay):
-    """A rigid flat-ended cylinder of radius ``a``: ``u3 = w0`` on the disc ``r < a``, a fixed contact (F.1).
 
-    Not a polynomial punch: the contact is the disc whatever the depth, and the pressure is singular at its
-    edge like ``(a^2 - r^2)^(-1/2)`` (F.8).  ``radius`` is a positive finite float; a string is read by the
-    restricted grammar (``"1/2"``, ``"2.5e-3"``), never evaluated.
 
-    Examples
-    --------
-    >>> from thinlayer import Punch
-    >>> Punch.flat("3/2")
-    FlatPunch: flat-ended cylinder of radius a = 1.5   (F.1)
+# =============================================================================================
+# shape questions, cached by Phi
+# =============================================================================================
+#: the kind of the catalogue punches, by the name the catalogue gives them
+_KIND_OF_NAME = {"paraboloid of revolution": "paraboloid", "elliptic paraboloid": "elliptic_paraboloid",
+                 "fourth-degree paraboloid": "fourth_degree"}
+
+
+@lru_cache(maxsize=512)
+def _axisymmetric(expr: sp.Expr) -> bool:
+    e = sp.expand(expr)
+    return bool(sp.expand(S.x1 * sp.diff(e, S.x2) - S.x2 * sp.diff(e, S.x1)) == 0)
+
+
+@lru_cache(maxsize=512)
+def _quadric(expr: sp.Expr) -> tuple[float, float, float] | None:
+    poly = sp.Poly(sp.expand(expr), S.x1, S.x2)
+    if poly.total_degree() != 2 or not all(sum(m) == 2 for m in poly.monoms()):
+        return None
+    a11 = float(poly.coeff_monomial(S.x1**2)) * 2
+    a22 = float(poly.coeff_monomial(S.x2**2)) * 2
+    a12 = float(poly.coeff_monomial(S.x1 * S.x2))
+    lam, vec = np.linalg.eigh(np.array([[a11, a12], [a12, a22]]))
+    if not lam.min() > 0:
+        return None
+    return float(lam[0]), float(lam[1]), float(math.atan2(vec[1, 0], vec[0, 0]))
+
+
+@lru_cache(maxsize=64)
+def _compiled(expr: sp.Expr):
+    return sp.lambdify((S.x1, S.x2), expr, "numpy")
+
+
+def _quadric_level_set(k1: float, k2: float, d: float) -> LevelSet:
+    """The ellipse ``k1 y1^2/2 + k2 y2^2/2 < d``: semi-axes ``A = sqrt(2d/k1) >= B = sqrt(2d/k2)`` (3.1)."""
+    A, B = math.sqrt(2 * d / k1), math.sqrt(2 * d / k2)
+    area = math.pi * A * B
+    volume = area * d / 2  # iint (d - Phi) over the ellipse: the mean of d - Phi is d/2
+    if k1 == k2:
+        perimeter, radius, second = 2 * math.pi * A, A, 3 * k1 * 2 * math.pi * A  # Laplacian + Phi_nn = 3k
+    else:
+        perimeter, radius, second = float(4 * A * mpmath.ellipe(1 - (B / A) ** 2)), None, None
+    flux = (k1 + k2) * area  # iint Laplacian Phi
+    return LevelSet(area, volume, perimeter, flux, 2 * area / perimeter, radius, second)
+
+
+def _radial_level_set(expr: sp.Expr, d: float) -> LevelSet:
+    """``{g(t) < d}``, ``t = r^2``, ``g(t) = Phi(sqrt t, 0)``: a union of annuli bounded by the real roots of
+    ``g - d`` (mpmath at 30 digits); area, volume, flux and the second-order flux integrate the polynomial ``g``
+    exactly over them (``dx = pi dt``).
     """
+    t = sp.Symbol("t", nonnegative=True)
+    g = sp.Poly(sp.expand(expr.xreplace({S.x2: 0})).xreplace({S.x1: sp.sqrt(t)}), t)
+    with mpmath.workdps(30):
+        co = [mpmath.mpf(str(sp.N(c, 35))) for c in g.all_coeffs()]  # highest power first
+        n = len(co) - 1
 
-    radius: float
-    name: ClassVar[str] = "flat-ended cylinder"
-    axisymmetric: ClassVar[bool] = True
-    #: the pressure is unbounded at the edge r = a (F.8)
-    singular_edge: ClassVar[bool] = True
+        def value(x, k=0):  # the k-th derivative of g at x
+            return mpmath.polyval([c * mpmath.ff(n - i, k) for i, c in enumerate(co[: n + 1 - k])], x)
 
-    def __init__(self, a) -> None:
-        from .parse import parse_number
-
-        try:
-            value = float(parse_number(a, "the radius a of the flat punch"))
-        except (ValueError, TypeError) as exc:
-            raise PunchError(str(exc)) from None
-        if not (value > 0 and value < float("inf")):
-            raise PunchError(f"the radius a of the flat punch must be a positive finite number, got {a!r}")
-        object.__setattr__(self, "radius", value)
-
-    @property
-    def description(self) -> str:
-        """One phrase for result summaries."""
-        return f"flat-ended cylinder, radius a = {self.radius:.8g}"
-
-    def latex(self) -> str:
-        return rf"u_3 = w_0 \ 	ext{{on}}\ r < a,\quad a = {self.radius:.8g} 	ag{{F.1}}"
-
-    def text_lines(self) -> list[str]:
-        """The lines of ``str(self)``."""
-        return [f"FlatPunch: flat-ended cylinder of radius a = {self.radius:.8g}   (F.1)"]
+        if co[0] < 0:
+            raise PunchError(f"the level set {{Phi < {d:g}}} of Phi = {expr} is unbounded: the tip falls away")
+        roots = mpmath.polyroots(co[:-1] + [co[-1] - d], maxsteps=200, extraprec=120)
+        cuts = sorted({mpmath.re(z) for z in roots if abs(mpmath.im(z)) <= 1e-20 * (1 + abs(z)) and mpmath.re(z) > 0})
+        edges = [mpmath.mpf(0), *cuts]
+        ivals = [(lo, hi) for lo, hi in zip(edges, cuts) if value((lo + hi) / 2) < d]
+        prim = [c / (n - i + 1) for i, c in enumerate(co)] + [mpmath.mpf(0)]  # the antiderivative of g
+        area = volume = perimeter = flux = second = mpmath.mpf(0)
+        for lo, hi in ivals:
+            area += mpmath.pi * (hi - lo)
+            volume += mpmath.pi * (d * (hi - lo) - (mpmath.polyval(prim, hi) - mpmath.polyval(prim, lo)))
+            for x in (lo, hi):
+                if x > 0:
+                    r = mpmath.sqrt(x)
+                    perimeter += 2 * mpmath.pi * r
+                    flux += 4 * mpmath.pi * x * abs(value(x, 1))  # 2 pi r |dPhi/dr|, dPhi/dr = 2 r g'(t)
+                    second += 2 * mpmath.pi * r * (6 * value(x, 1) + 8 * x * value(x, 2))  # Laplacian + Phi_nn
+        radius = float(mpmath.sqrt(ivals[0][1])) if len(ivals) == 1 and ivals[0][0] == 0 else None
+        half = float(2 * area / perimeter) if perimeter > 0 else 0.0
+        return LevelSet(float(area), float(volume), float(perimeter), float(flux), half, radius, float(second))
 
 
-# re-exported helper, used by the inner expansion
-__all__ = ["FlatPunch", "Punch", "PunchError", "PunchTooLargeError", "laplacian"]
+# =============================================================================================
+# registry rows
+# =============================================================================================
+def _polynomial(expr) -> Punch:
+    """A polynomial punch from its formula (read by the restricted grammar)."""
+    return Punch(expr)
+
+
+_LENGTH = "length"
+register_tip(TipKind("paraboloid", Punch.paraboloid, (
+    TipParameter("R", _LENGTH, "radius of curvature at the apex", ("radius",)),),
+    "paraboloid of revolution Phi = (x1^2 + x2^2)/(2R) (1.1)"))
+register_tip(TipKind("elliptic_paraboloid", Punch.elliptic_paraboloid, (
+    TipParameter("R1", _LENGTH, "radius of curvature along x1", ("R_1",)),
+    TipParameter("R2", _LENGTH, "radius of curvature along x2", ("R_2",))),
+    "elliptic paraboloid Phi = x1^2/(2 R1) + x2^2/(2 R2) (1.1)"))
+register_tip(TipKind("fourth_degree", Punch.fourth_degree, (
+    TipParameter("R", _LENGTH, "radius of curvature at the apex", ("radius",)),
+    TipParameter("K", _LENGTH, "length of the quartic term (x1^2 + x2^2)^2/K^3")),
+    "fourth-degree paraboloid Phi = r^2/(2R) + r^4/K^3 (section 5)"))
+register_tip(TipKind("polynomial", _polynomial, (
+    TipParameter("expr", "expression", "formula Phi(x_1, x_2)", ("Phi",), required=True),),
+    "any polynomial Phi(x1, x2), read by the restricted grammar (1.1)"))

@@ -11,19 +11,51 @@ from typing import Any
 
 import sympy as sp
 
-from ._normal import float_latex, normal_latex
+from .._normal import float_latex, normal_latex
+from .base import DerivationFileError, short
 
-__all__ = ["flat_punch_part"]
+__all__ = ["KEY", "SCHEMA", "ORDER", "parse", "applies", "render", "FLAT_DEFAULT"]
+
+KEY = "flat_punch"
+SCHEMA = {"a_over_H": ((list,), "a list of punch radius over thickness values in (0, 200]"),
+          "nu": ((list,), "a list of Poisson ratios in (-1, 1/2] (columns of the table)")}
+ORDER = 100
+#: the default table of [flat_punch]: a/H from thick to thin, nu from 0 to incompressible
+FLAT_DEFAULT = {"a_over_H": [0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0], "nu": [0.0, 0.3, 0.45, 0.5]}
 
 #: the thick series shown through this power of a/H (its coefficients in the moments b_k of 1 - L)
 SHOWN_ORDER = 4
 
 
-def flat_punch_part(doc: Any, layer: Any, table: dict) -> None:
+def parse(ft: Any, context: Any) -> dict | None:
+    """``[flat_punch]``: the a/H values (<= 30, in (0, 200]) and the nu values (<= 8, in (-1, 1/2]) of the table.
+
+    A flat punch (``[punch] kind = "flat"``) without the table gets :data:`FLAT_DEFAULT`.
+    """
+    if ft is None:
+        return dict(FLAT_DEFAULT) if context.punch is None else None
+    out = {}
+    for key, lo, hi, most in (("a_over_H", 0.0, 200.0, 30), ("nu", -1.0, 0.5, 8)):
+        vals = ft.get(key, FLAT_DEFAULT[key])
+        ok = (0 < len(vals) <= most and all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                                and lo < v <= hi for v in vals))
+        if not ok:
+            raise DerivationFileError(f"[flat_punch] {key} = {short(vals)}: a list of 1 to {most} numbers in "
+                                      f"({lo:g}, {hi:g}]")
+        out[key] = [float(v) for v in vals]
+    return out
+
+
+def applies(der: Any) -> bool:
+    return der.sections.get(KEY) is not None
+
+
+def render(doc: Any, der: Any, context: Any) -> None:
     """Append the flat-punch section to ``doc`` (a :class:`thinlayer.export.report.Document`)."""
-    from ..asymptotics.flat_punch import thick_flat_punch_coefficients, thin_flat_punch_derivation
-    from ..contact.flat_punch import stiffness_table
-    from ..layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer
+    layer, table = der.layer, der.sections[KEY]
+    from ...asymptotics.flat_punch import thick_flat_punch_coefficients, thin_flat_punch_derivation
+    from ...contact.flat_punch import stiffness_table
+    from ...layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer
 
     d = thin_flat_punch_derivation()
     h_star = sp.Symbol("h^*", real=True)  # the edge shift of (3.25): one symbol with the other sections

@@ -1,0 +1,106 @@
+r"""The any-thickness model (preference 60): the sphere at any ``H/a`` by the law (T.7), another axisymmetric
+punch by the thick-layer series (T.5) where its estimate (T.8) is within ``tol``
+(:mod:`thinlayer.contact.any_thickness`).  ``model="auto"`` tries it for axisymmetric punches after the
+thin-layer models and before the direct solver.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...asymptotics.solution import ValidityError
+from ..any_thickness import NotTabulatedError, any_thickness_fields, any_thickness_law, sphere_radius
+from ..indentation import Indentation
+from ..problem import Problem
+from .base import ForceCurve, Model, register_model
+
+__all__ = ["AnyThicknessModel", "sphere_curve"]
+
+
+def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float) -> ForceCurve:
+    r"""The law (T.7) at ``mu = 1``: ``P = (8/3) R^{1/2} delta^{3/2} Pi(chi)/(1 - nu)``, ``c = sqrt(R delta) C(chi)``,
+    ``chi = sqrt(R delta)/H``; the depth for a contact radius by inverting ``c/H = chi C(chi)`` (monotone).
+    """
+    law = any_thickness_law(nu, base)
+    K = 8.0 / 3.0 / (1.0 - nu) * math.sqrt(R)
+
+    def parts(d):
+        chi = np.sqrt(R * d) / H
+        Pr, cr = law.ratios(chi)
+        eP, ec = law.error_estimate(chi)
+        return chi, Pr, cr, eP, ec
+
+    def f(d):
+        _, Pr, cr, eP, ec = parts(d)
+        c = np.sqrt(R * d) * cr
+        return K * d**1.5 * Pr, math.pi * c * c, np.maximum(eP, 2 * ec)
+
+    def radius(d):
+        _, _, cr, _, _ = parts(d)
+        return np.sqrt(R * d) * cr
+
+    def slopes(d):
+        _, dlp = law.log_force_ratio(np.log(np.sqrt(R * d) / H))
+        return 1.5 + 0.5 * dlp, -dlp
+
+    grid = np.geomspace(1e-8, 1e8, 4001)
+
+    def inverse(c):
+        lg = np.log(grid * law.ratios(grid)[1])  # log(c/H) against log chi: increasing
+        t = np.log(np.asarray(c, dtype=float) / H)
+        x = np.interp(t, lg, np.log(grid))
+        for _ in range(3):  # Newton steps in log chi on log(chi C(chi)) = t, the slope from the grid
+            y = x + np.log(law.ratios(np.exp(x))[1])
+            s = np.interp(x, np.log(grid), np.gradient(lg, np.log(grid)))
+            x = x - (y - t) / s
+        return (np.exp(x) * H) ** 2 / R
+
+    return ForceCurve(name, tol, f, radius_law=radius, inverse_radius=inverse, slopes=slopes)
+
+
+class AnyThicknessModel(Model):
+    """The sphere at any thickness (T.7); other axisymmetric punches on thick layers (T.5)."""
+
+    name = "any-thickness"
+    preference = 60
+    equations = ("T.7", "T.7")
+    fits = True
+    declines = (NotTabulatedError, ValidityError)
+
+    def refuses(self, problem: Problem) -> str | None:
+        if problem.tip.fixed_contact:
+            return "the any-thickness law covers the sphere and axisymmetric smooth punches"
+        return None
+
+    def skips(self, problem: Problem) -> bool:
+        """``model="auto"`` tries the law for axisymmetric smooth punches only."""
+        return self.refuses(problem) is not None or not problem.tip.axisymmetric
+
+    def applies(self, problem: Problem) -> str | None:
+        return None
+
+    def run(self, problem: Problem) -> Indentation:
+        tol = problem.tol
+        try:
+            fields = any_thickness_fields(problem.layer, problem.tip, delta0=problem.delta0, force=problem.force,
+                                          H=problem.H, mu=problem.mu, nu=problem.nu, tol=tol)
+        except NotTabulatedError:
+            raise
+        except ValidityError as exc:
+            if exc.model == "other units":  # the law holds, its numbers leave the double range: the true reason
+                raise ValidityError(f"solve(): {exc}", exc.quantity, exc.estimate, exc.tol, exc.model) from None
+            raise
+        except ValueError as exc:  # the estimate exceeds tol
+            raise ValidityError(f"solve(): {exc}", "force", math.inf, tol, "direct") from None
+        return Indentation(**fields)
+
+    def force_curve(self, problem: Problem) -> ForceCurve | None:
+        """The law (T.7) for the sphere; None for other punches (the thick series is evaluated per depth)."""
+        R = sphere_radius(problem.tip)
+        if R is None:
+            return None
+        return sphere_curve(self.name, R, problem.H, problem.nu, problem.layer.base_label, problem.tol)
+
+
+register_model(AnyThicknessModel)
