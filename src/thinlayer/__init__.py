@@ -46,7 +46,7 @@ _PUBLIC = {
     **dict.fromkeys(["solve_2d", "solve_axisymmetric"], "thinlayer.numerics"),
     **dict.fromkeys(["MissingArgumentError", "checked_lambdify"], "thinlayer.results"),
     **dict.fromkeys(["ThinlayerError", "InputError", "InputTypeError", "WorkLimitError", "NotDerivedError",
-                     "ComputationError"], "thinlayer.errors"),
+                     "ComputationError", "ValidityWarning"], "thinlayer.errors"),
     "ExpressionError": "thinlayer.parse",
     "ValidityError": "thinlayer.asymptotics.solution",
 }
