@@ -6,11 +6,38 @@ that share any such fixture or explicit group end up in one group), so that all 
 worker and the fixture is built once, not once per worker.
 """
 import os
+import shutil
+import tempfile
 
 import mpmath
 import pytest
 
 TESTS = os.path.dirname(os.path.abspath(__file__))
+_CACHE_ENV = "THINLAYER_CACHE_DIR"
+
+
+def pytest_configure(config):
+    """One disk cache of per-nu constants (thinlayer._cache) for the whole run, shared by the xdist workers and
+    the CLI processes the tests start: each h*, r_3 and boundary-layer table is computed once per run.  The folder
+    is new for each run (a run measures a cold start) and removed at the end; the user's own cache is not touched.
+    """
+    if hasattr(config, "workerinput"):  # an xdist worker: inherits the controller's folder through the environment
+        return
+    folder = tempfile.mkdtemp(prefix="thinlayer-test-cache-")
+    config._thinlayer_cache = (folder, os.environ.get(_CACHE_ENV))
+    os.environ[_CACHE_ENV] = folder
+
+
+def pytest_unconfigure(config):
+    state = getattr(config, "_thinlayer_cache", None)
+    if state is None:
+        return
+    folder, before = state
+    if before is None:
+        os.environ.pop(_CACHE_ENV, None)
+    else:
+        os.environ[_CACHE_ENV] = before
+    shutil.rmtree(folder, ignore_errors=True)
 #: shared fixtures that join a named group: tests that build the same things without the fixture join it too
 FIXTURE_GROUPS = {"catalogue_report": "catalogue-reports", "sphere_latex": "catalogue-reports"}
 

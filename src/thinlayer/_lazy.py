@@ -30,3 +30,26 @@ def lazy_exports(namespace: dict, exports: Mapping[str, str]) -> tuple[Callable[
         return sorted(set(namespace) | set(exports))
 
     return __getattr__, __dir__
+
+
+class _LazyModule:
+    """A module imported on first attribute access: ``special = lazy_module("scipy.special")``."""
+
+    def __init__(self, name: str):
+        self._name = name
+
+    def __getattr__(self, attr: str) -> Any:
+        module = importlib.import_module(self._name)
+        return getattr(module, attr)
+
+    def __repr__(self) -> str:
+        return f"<module {self._name!r}, imported on first use>"
+
+
+def lazy_module(name: str) -> Any:
+    """``name`` (e.g. ``"scipy.special"``) imported on first use: a module-level name that costs nothing at import.
+
+    The direct solvers keep scipy this way, so that a path which never calls them (``thinlayer solve`` with the
+    asymptotic model) does not pay scipy's import.
+    """
+    return _LazyModule(name)

@@ -84,6 +84,7 @@ import mpmath
 import sympy as sp
 
 from .. import symbols as S
+from .._cache import cached
 from .._checks import InputError, InputTypeError, check_bounded, parse_nu
 from .._checks import positive as _positive
 from ..display import RichDisplay, fmt
@@ -132,6 +133,22 @@ def boundary_layer_force_defect() -> sp.Expr:
     and ``C`` by (3.21) leaves a function of ``m_1`` alone.  Returns ``m_1/2`` in the symbol
     ``m_1`` (as an expression in ``thinlayer.layers.kernels`` naming, ``Symbol('m_1')``).
     """
+    m1 = sp.Symbol("m_1", real=True)
+
+    def coefficients() -> tuple:
+        D = _derived_force_defect()
+        if not D.is_polynomial(m1):  # never so far: the expression itself, not kept on disk
+            return (D,)
+        return ("polynomial", *sp.Poly(D, m1).all_coeffs())
+
+    # the derivation (a series and a simplify, ~1 s) is kept on disk as the exact coefficients in m_1
+    # (thinlayer._cache); a value that is not a polynomial with rational coefficients is not kept
+    c = cached("boundary_layer_force_defect", (), coefficients)
+    return sp.Poly(c[1:], m1).as_expr() if c[0] == "polynomial" else c[0]
+
+
+def _derived_force_defect() -> sp.Expr:
+    """The derivation of :func:`boundary_layer_force_defect`."""
     B, C, p = sp.symbols("B C p", positive=True)
     m1 = sp.Symbol("m_1", real=True)
     A = B / C  # (3.20)

@@ -85,6 +85,7 @@ from sympy.polys.domains import QQ
 from sympy.polys.rings import ring
 
 from .. import symbols as S
+from .._cache import cached
 from .._checks import InputError, InputTypeError, check_bounded, check_order, positive
 from ..display import RichDisplay, fmt
 from ..layers.kernels import LayerKernel
@@ -157,6 +158,15 @@ def _check_layer(layer: Any) -> LayerKernel:
 
 @lru_cache(maxsize=64)
 def _moments_cached(layer: LayerKernel, order: int, dps: int) -> tuple[mpmath.mpf, ...]:
+    """The moments (T.2), kept on disk per layer, order and precision (thinlayer._cache): seconds per nu."""
+    nu = getattr(layer, "nu", None)
+    if isinstance(nu, mpmath.mpf):  # a float nu: its exact binary value
+        nu = ("mpf", *(int(v) for v in nu.man_exp))
+    key = (repr(layer), layer.base, nu, getattr(layer, "dps", None), order, dps)
+    return cached("thick_moments", key, lambda: _moments_computed(layer, order, dps))
+
+
+def _moments_computed(layer: LayerKernel, order: int, dps: int) -> tuple[mpmath.mpf, ...]:
     """All ``b_k`` from one composite Gauss-Legendre rule (``1 - L`` evaluated once per node).
 
     ``L`` is analytic in the strip ``|Im u| < 0.79`` at least (the nearest pole of (2.3), at nu = 1/2, sits near

@@ -88,8 +88,8 @@ from typing import Any, ClassVar
 import mpmath
 import numpy as np
 import sympy as sp
-from scipy import optimize, special
 
+from .._cache import cached
 from .._checks import InputError, InputTypeError, parse_nu
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
@@ -174,7 +174,13 @@ class _Layer:
         k = float(self.kappa)
         if k - 1 < 1e-6:  # sin x/x ~ 1 - x^2/6
             return 0.5 * math.sqrt(6 * (k - 1) / k)
-        return 0.5 * optimize.brentq(lambda x: math.sin(x) / x - 1 / k, 1e-12, math.pi, xtol=1e-15)
+
+        def root() -> float:
+            from scipy import optimize  # imported on a cache miss only: a cached nu needs no scipy
+
+            return 0.5 * optimize.brentq(lambda x: math.sin(x) / x - 1 / k, 1e-12, math.pi, xtol=1e-15)
+
+        return cached("zero_rate", (self.nu,), root)
 
     def pole_rate(self) -> float:
         """Y > 0 with 1/F(i y) = 0: 2 kappa cos 2y + 1 + kappa^2 - 4 y^2 = 0 (smallest root).
@@ -186,7 +192,13 @@ class _Layer:
             return 1.0
         k = float(self.kappa)
         g = lambda y: 2 * k * math.cos(2 * y) + 1 + k * k - 4 * y * y
-        return optimize.brentq(g, 0.0, (k + 1) / 2 + 1e-9, xtol=1e-15)
+
+        def root() -> float:
+            from scipy import optimize  # imported on a cache miss only: a cached nu needs no scipy
+
+            return optimize.brentq(g, 0.0, (k + 1) / 2 + 1e-9, xtol=1e-15)
+
+        return cached("pole_rate", (self.nu,), root)
 
 
 @lru_cache(maxsize=256)
@@ -293,6 +305,8 @@ class _Normaliser:
         if self.kind == "alexandrov":
             return np.log1p(p / B) / 2 - np.log1p(p / math.sqrt(C))
         z = A * p / math.pi
+        from scipy import special  # imported on first use
+
         return special.loggamma(z + 0.5) - special.loggamma(z + 1) - 0.5 * math.log(math.pi)
 
 
@@ -325,6 +339,9 @@ def _breakpoints(kern: _Kernel, norm: _Normaliser) -> list:
 
 # ----------------------------------------------------------------------------- edge shift
 def _edge_shift(lay: _Layer, kernel: str, normaliser: str, dps: int, error: bool = False):
+    if not error:  # h* (3.18) is kept on disk per nu (thinlayer._cache): seconds of quadrature per process
+        return cached("edge_shift", (lay.nu, kernel, normaliser, dps),
+                      lambda: _edge_shift(lay, kernel, normaliser, dps, error=True)[0])
     with mpmath.workdps(dps):
         kern = _Kernel(lay, kernel, 3 * dps + 20)
         norm = _Normaliser(kern, normaliser)
@@ -381,6 +398,11 @@ def _phi0_cubic(norm: _Normaliser):
 
 
 def _edge_cubic(lay: _Layer, kernel: str, normaliser: str, dps: int) -> mpmath.mpf:
+    return cached("edge_cubic", (lay.nu, kernel, normaliser, dps), lambda: _edge_cubic_computed(lay, kernel, normaliser,
+                                                                                               dps))
+
+
+def _edge_cubic_computed(lay: _Layer, kernel: str, normaliser: str, dps: int) -> mpmath.mpf:
     with mpmath.workdps(dps):
         kern = _Kernel(lay, kernel, 3 * dps + 20)
         norm = _Normaliser(kern, normaliser)
@@ -757,15 +779,19 @@ def _solution(nu: sp.Rational, kernel: str, normaliser: str, dps: int, n: int | 
         norm = _Normaliser(kern, normaliser)
     tau_max = 36.0 / kern.sigma
     tr = _Transform(kern, norm, tau_max)
-    if n:
-        cheb = _build_table(tr, tau_max, n)
-    else:  # double n until the Chebyshev tail is below 2e-11 (scale: 1 + |h|)
-        n = 64 if tau_max <= 64 else 128
+
+    def table() -> np.ndarray:
+        if n:
+            return _build_table(tr, tau_max, n)
+        m = 64 if tau_max <= 64 else 128  # double m until the Chebyshev tail is below 2e-11 (scale: 1 + |h|)
         while True:
-            cheb = _build_table(tr, tau_max, n)
-            if np.max(np.abs(cheb[-8:])) < 2e-11 * (1 + abs(float(h))) or n >= 512:
-                break
-            n *= 2
+            cheb = _build_table(tr, tau_max, m)
+            if np.max(np.abs(cheb[-8:])) < 2e-11 * (1 + abs(float(h))) or m >= 512:
+                return cheb
+            m *= 2
+
+    # the table (seconds of de Hoog inversions) is kept on disk per argument set (thinlayer._cache)
+    cheb = cached("wiener_hopf_table", (nu, kernel, normaliser, dps, n), table)
     with mpmath.workdps(dps):
         ha = edge_shift_alexandrov(nu)
         A, m1 = _mp(lay.A), _mp(lay.m1)

@@ -13,13 +13,14 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
-import scipy.fft as sfft
-from scipy import interpolate, special
 
 from .._checks import InputError, InputTypeError, check_bounded, positive
+from .._lazy import lazy_module
 from ..errors import boundary
 from ..layers.kernels import LayerKernel
 from ._layer import U_MAX, gauss_panels, numeric_layer_nu, panel_count
+
+sfft, interpolate, special = (lazy_module(f"scipy.{m}") for m in ("fft", "interpolate", "special"))  # on first use
 
 _R_CUT = 50.0  # in units of H: the layer kernel 1/(2 pi r) + g_c(r) is below 1e-15/H beyond
 _TABLE_STEP = 1.0 / 40.0  # spacing of the g_c table, in units of H

@@ -12,10 +12,12 @@ from typing import Any
 
 import numpy as np
 import sympy as sp
-from scipy import special
 
 from .._checks import InputError, InputTypeError
+from .._lazy import lazy_module
 from ..layers.kernels import LayerKernel
+
+special = lazy_module("scipy.special")  # scipy imported on first use
 
 __all__ = ["GAUSS", "U_MAX", "gauss_panels", "numeric_layer_nu", "panel_count"]
 

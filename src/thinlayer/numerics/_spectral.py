@@ -14,10 +14,12 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 import numpy as np
-from scipy import special
 
+from .._lazy import lazy_module
 from ..layers.kernels import LayerKernel
 from ._layer import GAUSS, U_MAX, gauss_panels, panel_count
+
+special = lazy_module("scipy.special")  # scipy imported on first use
 
 __all__ = ["Discretisation", "RadialLoad", "basis_transform", "beta", "correction_displacement", "half_space_diagonal",
            "pressure_function", "sample_radii", "spherical_jn_even"]

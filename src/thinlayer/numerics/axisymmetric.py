@@ -66,16 +66,18 @@ from typing import Any
 
 import numpy as np
 import sympy as sp
-from scipy import integrate, optimize, special
 
 from .. import symbols as S
 from .._checks import InputError, InputTypeError, check_bounded, positive
+from .._lazy import lazy_module
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch, PunchError, Tip, is_polynomial_tip
 from ._layer import GAUSS, U_MAX, numeric_layer_nu, panel_count
 from ._spectral import Discretisation, RadialLoad, correction_displacement, pressure_function, sample_radii
+
+integrate, optimize, special = (lazy_module(f"scipy.{m}") for m in ("integrate", "optimize", "special"))  # on first use
 
 __all__ = ["AxisymmetricContact", "AxisymmetricPunchContact", "contact_for_radius", "radial_profile",
            "solve_axisymmetric", "surface_displacement"]

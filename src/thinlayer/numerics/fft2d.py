@@ -120,15 +120,17 @@ from typing import Any
 import contourpy
 import numpy as np
 import sympy as sp
-from scipy import optimize
 
 from .._checks import ComputationError, InputError, InputTypeError, positive
+from .._lazy import lazy_module
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
 from ..punch import Punch, is_polynomial_tip
 from ._influence import MAX_BYTES, Convolver, check_n, influence_coefficients, layer_correction_kernel, memory_estimate
 from ._layer import numeric_layer_nu
 from ._polonsky_keer import polonsky_keer
+
+optimize = lazy_module("scipy.optimize")  # scipy imported on first use
 
 __all__ = [
     "CoarseGridWarning",

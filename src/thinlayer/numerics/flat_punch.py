@@ -95,12 +95,14 @@ from functools import lru_cache
 from typing import Any
 
 import numpy as np
-from scipy import special
 
 from .._checks import InputError, InputTypeError, check_bounded, check_choice, check_int, positive
+from .._lazy import lazy_module
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
 from ._layer import U_MAX, numeric_layer_nu
+
+special = lazy_module("scipy.special")  # scipy imported on first use
 
 __all__ = ["MAX_A_OVER_H", "METHODS", "FlatPunchContact", "FlatPunchStiffness", "check_numeric_layer",
            "default_nodes", "even_bessel_transforms", "flat_punch_kappa", "solve_flat_punch"]

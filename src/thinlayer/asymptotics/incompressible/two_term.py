@@ -19,6 +19,7 @@ import numpy as np
 import sympy as sp
 
 from ... import symbols as S
+from ..._cache import cached
 from ..._checks import InputError, InputTypeError, positive
 from ..._series import quotient_field
 from ...display import RichDisplay, fmt
@@ -53,6 +54,11 @@ def _mp(x: Any) -> mpmath.mpf:
 
 @lru_cache(maxsize=64)
 def _edge_shift_cached(nu_key: str, dps: int) -> mpmath.mpf:
+    # h(nu) (I.12) is kept on disk per nu and precision (thinlayer._cache): a quadrature of seconds
+    return cached("two_term_edge_shift", (nu_key, dps), lambda: _edge_shift_computed(nu_key, dps))
+
+
+def _edge_shift_computed(nu_key: str, dps: int) -> mpmath.mpf:
     with mpmath.workdps(dps + 30):
         if nu_key == "1/2":
             layer: LayerKernel = IncompressibleLayer()
