@@ -2,7 +2,7 @@
 
 Every ``tests/acceptance/cases_*.py`` module contributes inputs tried as an attacker or a careless user would,
 through the Python API, the command line and derivation files (the contract and the outcomes are in
-``tests/acceptance/__init__.py``).  Each input runs under a 10 s alarm (past it: a hang), and each outcome is
+``tests/acceptance/__init__.py``).  Each input is a hang past 10 s of CPU (60 s wall at most), and each outcome is
 classified by an independent check, never by the engine's own word:
 
 * **clear** -- a documented one-line error (a thinlayer ``ValueError``/``TypeError``, exit 2 from the CLI), or,

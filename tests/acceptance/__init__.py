@@ -12,7 +12,8 @@ The outcome of an input is decided by an independent check, never by the engine'
 ``"clear"``   a documented one-line error (a thinlayer ``ValueError``/``TypeError`` subclass, exit 2 from
               the CLI), or, for a valid input, a correct answer;
 ``"crash"``   any other exception, a traceback, a second line of error, a wrong exit code;
-``"hang"``    more than 10 s (wall) or the CPU limit of the case;
+``"hang"``    more than 10 s of CPU (the input's work, not the machine's load; 60 s wall at most) or the case's
+              CPU limit;
 ``"wrong"``   an answer that is not positive and finite, or outside its stated estimate of an independent
               reference, or a raw LaTeX command in the output;
 ``"loss"``    a file that existed before the run changed, or a file was created outside the output folder;

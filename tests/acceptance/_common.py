@@ -1,6 +1,7 @@
 """Helpers of the trust issues' ``cases_*`` modules: each input runs once, time-limited, its outcome classified.
 
-:func:`attempt` runs one input under a 10 s alarm (``signal.setitimer``): past it the input counts as ``"hang"``,
+:func:`attempt` runs one input and counts it as ``"hang"`` past 10 s of CPU (its own and its children's; a 60 s wall
+alarm, ``signal.setitimer``, is the backstop),
 an exception the case did not classify as ``"crash"``.  :func:`api` and :func:`cli_refused` are the two common
 checks: a Python call that must answer or raise a thinlayer ``ValueError``/``TypeError`` in one line, and a
 command line that must exit 2 with one line on stderr; a marker file appearing is ``"code"``.
@@ -16,8 +17,20 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-#: an input running longer than this (wall) is a hang
+#: an input working longer than this (CPU seconds of this process and its children) is a hang
 HANG_SECONDS = 10.0
+#: the alarm's wall-clock backstop: on a machine at load 6 with 2 cores an input gets about a third of a core, so
+#: a wall-clock limit of 10 s counted the machine's load, not the input's work (two inputs of 2.4 s and 11 s wall
+#: at load 9 were counted as hangs); a run still going after this much wall time is a hang whatever its CPU
+WALL_BACKSTOP = 60.0
+
+
+def cpu_seconds() -> float:
+    """CPU time (user + sys) of this process and of its finished children: the work an input caused."""
+    import resource
+
+    ch = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return time.process_time() + ch.ru_utime + ch.ru_stime
 
 #: payloads that would run code if a string were evaluated; {m} is the marker file
 PAYLOADS = [
@@ -41,7 +54,7 @@ class Hang(BaseException):
 
 
 @contextlib.contextmanager
-def alarm(seconds: float = HANG_SECONDS):
+def alarm(seconds: float = WALL_BACKSTOP):
     def ring(signum, frame):
         raise Hang()
 
@@ -62,30 +75,30 @@ def unlimited():
     """Stop the input's clock while an independent reference is computed (the input is what is timed)."""
     left, _ = signal.getitimer(signal.ITIMER_REAL)
     signal.setitimer(signal.ITIMER_REAL, 0)
-    t0 = time.monotonic()
+    t0 = cpu_seconds()
     try:
         yield
     finally:
-        _PAUSED[0] += time.monotonic() - t0
+        _PAUSED[0] += cpu_seconds() - t0
         if left > 0:
             signal.setitimer(signal.ITIMER_REAL, left)
 
 
 def attempt(t, category: str, fn: Callable[[], tuple[str, str]], note: str = "") -> str:
-    """Run one input: ``fn()`` returns ``(outcome, note)``; over :data:`HANG_SECONDS` it is a hang.  Returns the
-    outcome recorded."""
-    t0 = time.monotonic()
+    """Run one input: ``fn()`` returns ``(outcome, note)``; over :data:`HANG_SECONDS` of CPU (or
+    :data:`WALL_BACKSTOP` of wall time) it is a hang.  Returns the outcome recorded."""
+    t0 = cpu_seconds()
     _PAUSED[0] = 0.0
     try:
         with alarm():
             outcome, detail = fn()
     except Hang:
-        outcome, detail = "hang", f"over {HANG_SECONDS:g} s"
+        outcome, detail = "hang", f"over {WALL_BACKSTOP:g} s of wall time"
     except Exception as exc:  # noqa: BLE001 - an exception the case did not classify
         outcome, detail = "crash", f"{type(exc).__name__}: {exc}"[:300]
-    took = time.monotonic() - t0 - _PAUSED[0]
+    took = cpu_seconds() - t0 - _PAUSED[0]
     if outcome != "hang" and took > HANG_SECONDS:
-        outcome, detail = "hang", f"{took:.1f} s"
+        outcome, detail = "hang", f"{took:.1f} s of CPU"
     t.add(category, outcome, f"{note}: {detail}" if note else detail)
     return outcome
 
