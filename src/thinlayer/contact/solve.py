@@ -143,6 +143,9 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     if isinstance(punch, Tip) and not is_polynomial_tip(punch):  # flat punch, tips of revolution: no options
         if options:
             raise InputTypeError(f"the {punch.name} takes no model options, got {sorted(options)}")
+        if parameters and not punch.parameters:
+            raise InputTypeError(f"the {punch.name} takes no parameters (its sizes are numbers), got "
+                                 f"{sorted(map(str, parameters))}")
         tip = punch.subs(parameters) if parameters else punch
         if not tip.is_numeric:
             names = ", ".join(q.name for q in tip.parameters)
