@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import os
 import signal
 import sys
@@ -27,6 +26,7 @@ from .cli_args import (  # noqa: F401 - BadInput and the shared helpers, importa
     BadInput,
     add_punch_args,
     base_arg,
+    finite,
     nonfinite,
     print_text,
     punch_from_args,
@@ -48,17 +48,6 @@ class _Parser(argparse.ArgumentParser):
 
     def error(self, message: str):
         self.exit(EXIT_BAD_INPUT, f"{self.prog}: {message.splitlines()[0]} (see {self.prog} --help)\n")
-
-
-def _finite(text: str) -> float:
-    """An argparse type: a finite float."""
-    try:
-        val = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-    if not math.isfinite(val):
-        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
-    return val
 
 
 def _order(text: str) -> int:
@@ -553,9 +542,9 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("--nu", default=None, help="Poisson ratio: 'symbolic' (default), a fraction or a number")
     g.add_argument("--order", type=_order, default=None,
                    help="inner terms / number of coefficients; force: 1 (default) or 2 (second order)")
-    g.add_argument("--delta0", type=_finite, help="indentation (composite)")
-    g.add_argument("--H", type=_finite, help="layer thickness (composite)")
-    g.add_argument("--mu", type=_finite, default=1.0, help="shear modulus (composite, default 1)")
+    g.add_argument("--delta0", type=finite, help="indentation (composite)")
+    g.add_argument("--H", type=finite, help="layer thickness (composite)")
+    g.add_argument("--mu", type=finite, default=1.0, help="shear modulus (composite, default 1)")
     add_punch_args(g)
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from .cli_args import finite
 
 __all__ = ["add_fit_parser", "cmd_fit", "read_curve"]
 
@@ -30,16 +31,6 @@ __all__ = ["add_fit_parser", "cmd_fit", "read_curve"]
 MAX_BYTES = 200 * 2**20
 
 _SPLIT = re.compile(r"[,;\t ]+")
-
-
-def _finite(text: str) -> float:
-    try:
-        val = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-    if not math.isfinite(val):
-        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
-    return val
 
 
 def _number(cell: str, row: int, col: int, path: str) -> float:
@@ -124,9 +115,9 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
         epilog="examples:\n  thinlayer fit curve.csv --R 5e-6 --H 3e-6 --nu 0.5 --json\n"
                "  thinlayer fit curve.csv --columns depth,force --R 10 --H 2 --nu 0.3 --fit-offset --model hertz")
     s.add_argument("csv", help="CSV file: a depth column and a force column (same length units as --R, --H)")
-    s.add_argument("--R", type=_finite, required=True, help="sphere radius (> 0)")
-    s.add_argument("--H", type=_finite, required=True, help="layer thickness (> 0; the starting value with --fit-H)")
-    s.add_argument("--nu", type=_finite, required=True, help="Poisson ratio in (-1, 1/2]")
+    s.add_argument("--R", type=finite, required=True, help="sphere radius (> 0)")
+    s.add_argument("--H", type=finite, required=True, help="layer thickness (> 0; the starting value with --fit-H)")
+    s.add_argument("--nu", type=finite, required=True, help="Poisson ratio in (-1, 1/2]")
     s.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
                    help="the base under the layer (default bonded)")
     s.add_argument("--model", choices=("any-thickness", "hertz", "dimitriadis2002", "garcia2018"),
