@@ -127,6 +127,7 @@ Modules
 -------
 * :mod:`.operator` -- (I.2) :func:`thin_layer_operator`; (I.3)-(I.5), (I.10) :func:`obstacle_problem`;
 * :mod:`.leading` -- (I.6)-(I.8) :func:`incompressible_ellipse`, (I.9) :func:`incompressible_axisymmetric`;
+* :mod:`.tips` -- (I.9a)-(I.9c) :func:`incompressible_tip` for tips of revolution (cone, exact sphere, ...);
 * :mod:`.two_term` -- (I.10)-(I.12) :func:`two_term_sphere`, :func:`two_term_edge_shift`,
   :func:`two_term_edge_layer`;
 * :mod:`.regime` -- (I.13) :func:`regime`.
@@ -152,6 +153,7 @@ from .leading import (
 )
 from .operator import ObstacleProblem, ThinLayerOperator, obstacle_problem, p_fun, thin_layer_operator
 from .regime import Regime, regime
+from .tips import IncompressibleTip, TipValues, incompressible_tip
 from .two_term import (
     SphereValues,
     TwoTermEdgeLayer,
@@ -168,17 +170,20 @@ __all__ = [
     "IncompressibleEllipse",
     "IncompressibleLayer",
     "IncompressibleRadial",
+    "IncompressibleTip",
     "ObstacleProblem",
     "RadialValues",
     "Regime",
     "SphereValues",
     "ThinLayerOperator",
+    "TipValues",
     "TwoTermEdgeLayer",
     "TwoTermSphere",
     "c_sym",
     "incompressible_axisymmetric",
     "incompressible_coefficients",
     "incompressible_ellipse",
+    "incompressible_tip",
     "k_sym",
     "obstacle_problem",
     "p_fun",

@@ -1,5 +1,6 @@
 r"""The incompressible model, nu = 1/2 on a bonded base (I.3)-(I.4) (preference 30): the sphere (I.11), the
-elliptic paraboloid (I.6)-(I.8) and any axisymmetric polynomial punch (I.9); the edge layer (I.12) as in
+elliptic paraboloid (I.6)-(I.8), any axisymmetric polynomial punch (I.9) and any tip of revolution (cone, exact sphere,
+blunted cone, power law: (I.9a)-(I.9c), :mod:`thinlayer.asymptotics.incompressible.tips`); the edge layer (I.12) as in
 :mod:`thinlayer.contact.models.two_term`.
 """
 from __future__ import annotations
@@ -26,7 +27,10 @@ class IncompressibleModel(Model):
         return SMOOTH_ONLY.format(name=self.name) if problem.tip.fixed_contact else None
 
     def applies(self, problem: Problem) -> str | None:
-        why = base_nu_reason(problem, self.name, incompressible=True) or polynomial_reason(problem.tip)
+        tip = problem.tip
+        why = base_nu_reason(problem, self.name, incompressible=True)
+        if why is None and not (tip.axisymmetric and tip.polynomial is None):  # tips of revolution: (I.9a)-(I.9c)
+            why = polynomial_reason(tip)
         if why is None and not (problem.tip.axisymmetric or problem.tip.quadric is not None):
             return ("the incompressible model is closed-form for axisymmetric punches and the elliptic paraboloid; "
                     "this punch needs the direct solver")

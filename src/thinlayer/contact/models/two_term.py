@@ -19,11 +19,13 @@ from ... import symbols as S
 from ...asymptotics.incompressible import (
     incompressible_axisymmetric,
     incompressible_ellipse,
+    incompressible_tip,
     two_term_edge_shift,
     two_term_sphere,
 )
 from ...asymptotics.solution import ValidityError
 from ...layers.kernels import LayerKernel
+from ...punch import is_polynomial_tip
 from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
@@ -148,7 +150,8 @@ def _nearly_incompressible(problem: Problem, name: str) -> Indentation:
         return Indentation(**common, delta0=d0, force=v.force, contact_area=math.pi * axes[0] * axes[1],
                            contact_radius=None, semi_axes=axes, error_estimate=est, detail=v, _pressure=p,
                            _extent=1.2 * max(a, b))
-    model = incompressible_axisymmetric(punch)  # any axisymmetric polynomial punch (I.9)
+    # any axisymmetric polynomial punch (I.9); a tip of revolution (cone, exact sphere, ...) (I.9a)-(I.9c)
+    model = incompressible_axisymmetric(punch) if is_polynomial_tip(punch) else incompressible_tip(punch)
 
     def at(d0):
         return model.evaluate(d0, H, mu)
