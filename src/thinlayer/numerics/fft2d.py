@@ -125,7 +125,7 @@ from .._checks import ComputationError, InputError, InputTypeError, positive
 from .._lazy import lazy_module
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..punch import Punch, is_polynomial_tip
+from ..punch import Punch, Tip, is_polynomial_tip
 from ._influence import MAX_BYTES, Convolver, check_n, influence_coefficients, layer_correction_kernel, memory_estimate
 from ._layer import numeric_layer_nu
 from ._polonsky_keer import polonsky_keer
@@ -249,17 +249,21 @@ class Contact2D:
 def _numeric_punch(punch: Any) -> tuple[Punch, Callable[[np.ndarray, np.ndarray], np.ndarray]]:
     if isinstance(punch, (str, sp.Basic)):
         punch = Punch(punch)
-    if not is_polynomial_tip(punch):
-        raise InputTypeError(f"punch must be a thinlayer Punch (or a polynomial expression in x1, x2), "
-                        f"got {punch!r} ({type(punch).__name__})")
+    if not isinstance(punch, Tip) or punch.fixed_contact:
+        raise InputTypeError(f"punch must be a thinlayer tip (a Punch, a polynomial expression in x1, x2, or a tip "
+                             f"such as Punch.pyramid(35)) whose contact grows with the depth, got {punch!r:.80} "
+                             f"({type(punch).__name__})")
     if punch.parameters:
         names = ", ".join(str(q) for q in punch.parameters)
         raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has free parameter(s) {names}: "
                          f"substitute numbers first, e.g. punch.subs({{'{punch.parameters[0]}': 1.0}})")
-    coeffs = punch.polynomial.coeffs()
-    if not all(c.is_real for c in coeffs):
-        raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has non-real coefficients")
-    f = punch.lambdify()
+    if not is_polynomial_tip(punch):  # any other tip: its own vectorised profile (a pyramid, a cone, ...)
+        f = punch.profile
+    else:
+        coeffs = punch.polynomial.coeffs()
+        if not all(c.is_real for c in coeffs):
+            raise InputError(f"the punch '{punch.name}' Phi = {punch.expr} has non-real coefficients")
+        f = punch.lambdify()
 
     def phi(X: np.ndarray, Y: np.ndarray) -> np.ndarray:
         return np.broadcast_to(np.asarray(f(X, Y), dtype=float), np.broadcast(X, Y).shape)
