@@ -119,6 +119,18 @@ def _linear_planes(expr: sp.Expr) -> list[tuple[sp.Expr, sp.Expr]]:
 
 
 @lru_cache(maxsize=128)
+def _float_planes(planes: tuple) -> tuple[tuple[float, float], ...]:
+    """The plane gradients as floats (evaluated once per tip: sympy's evalf is slow)."""
+    out = []
+    for a, b in planes:
+        fa, fb = float(a), float(b)
+        if not (math.isfinite(fa) and math.isfinite(fb)):
+            raise PunchError(f"the plane gradient ({a}, {b}) of a polyhedral tip is not finite")
+        out.append((fa, fb))
+    return tuple(out)
+
+
+@lru_cache(maxsize=128)
 def _polygon(grads: tuple[tuple[float, float], ...]) -> tuple[np.ndarray, np.ndarray]:
     """``(vertices, active)`` of the unit level set ``{max_k g_k . x < 1}``: its vertices counter-clockwise and, for
     the edge from vertex i to i+1, the index of its plane.  The polygon is the polar dual of the convex hull of the
@@ -250,13 +262,7 @@ class Polyhedral(Tip):
                              f"of the {self.name}: use .subs({{...}})")
 
     def _numeric_gradients(self) -> tuple[tuple[float, float], ...]:
-        out = []
-        for a, b in self.planes:
-            fa, fb = float(a), float(b)
-            if not (math.isfinite(fa) and math.isfinite(fb)):
-                raise PunchError(f"the plane gradient ({a}, {b}) of the {self.name} is not finite")
-            out.append((fa, fb))
-        return tuple(out)
+        return _float_planes(self.planes)
 
     # ---- numbers ----------------------------------------------------------------------------------
     def profile(self, x1: Any, x2: Any) -> np.ndarray:
