@@ -2,8 +2,8 @@
 
 The problem: ``Punch.pyramid(35, sides=4)`` at delta0 = 1 on ``BondedLayer(0.3)``, H = a/10 (a = the inradius of
 the level-set square), the square ``[-1.25 a, 1.25 a]^2``, tol = 1e-10.  Solved at n = 256, 512, 1024 cells per side;
-the accuracy of each grid (``err`` in the row's name) is its force's distance to the Richardson extrapolation of the three (order from the
-last two differences).  The time rows: the best of 3 wall times at 512^2 (target 2 s,
+the accuracy of each grid (``err`` in the row's name) is its force's distance to the Richardson extrapolation of
+the three (order from the last two differences).  The time rows: the best of 3 wall times at 512^2 (target 2 s,
 issue 24 item 7) and one at 1024^2, each with its process CPU time (all threads) beside it: on a shared machine the
 wall time is the CPU time plus the wait for a core (``uptime`` is printed in the table's header).
 """

@@ -9,8 +9,8 @@ expansion (``A != 0``).  The tips of revolution are the other ``"tip-law"`` entr
 
 Estimate.  The remainder is ``O(P0 (H/a)^3)`` (pyramid_law.py), measured against
 :func:`thinlayer.numerics.solve_2d` (4-sided pyramid, face angle 35, and Berkovich; H/a = 0.05 .. 0.3):
-``|P - P0 - P1|/P0 / (H/a)^3`` = 0.39-0.51 (bonded nu = 0.3), 0.14-0.22 (frictionless), 12.9-17.7 (bonded nu = 0.45).  The tips of
-revolution's estimate (:func:`~thinlayer.contact.models.tip_law.tip_law_estimate`,
+``|P - P0 - P1|/P0 / (H/a)^3`` = 0.39-0.51 (bonded nu = 0.3), 0.14-0.22 (frictionless), 12.9-17.7 (bonded
+nu = 0.45).  The tips of revolution's estimate (:func:`~thinlayer.contact.models.tip_law.tip_law_estimate`,
 ``3 (|P1/P0| (H/a) + (P1/P0)^2 + 0.2 (H/a)^3)``) covers each of these points by a factor 1.6 or more; it is used as is
 for the force.  The area: ``|A - A_direct|/A`` measured at most ``0.35 (H/a)^2 + 0.45 |P1/P0|`` (the corners' H x H
 squares and the edge shift's O(H^2); 4-sided 35 and Berkovich, the three layers, H/a = 0.05 .. 0.3), so
