@@ -61,7 +61,8 @@ def run(t, tmp: Path) -> None:
         "max(" * 120 + "x1" + ", -x1)" * 120, "max(x1, -x1, x2, -x2)*1e999999", "max(x1, -x1, x2, -x2)*1e-999999",
         "max(x1, -x1, x2, -x2)*(9**1000)**1000", "max(x1, -x1, x2, -x2)**1000", "max(x1**1000, x2)",
         "max(x1*(a+b+c+d)**1000, -x1, x2, -x2)", "max(x1, -x1, x2, -x2)/0", "min(x1, -x1, x2, -x2)",
-        "max(" + "9" * 3001 + "*x1, -x1, x2, -x2)", "max(x1, -x1, x2, -x2) + " + " + ".join(f"p{k}" for k in range(251)),
+        "max(" + "9" * 3001 + "*x1, -x1, x2, -x2)",
+        "max(x1, -x1, x2, -x2) + " + " + ".join(f"p{k}" for k in range(251)),
         "max(1e308*x1, -1e308*x1, 1e308*x2, -1e308*x2)*1e308",
     ]
     for f in polyhedral:
