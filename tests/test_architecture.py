@@ -48,7 +48,7 @@ RANK = {
 #: asymptotic stages in the paper's order: each imports only earlier ones
 STAGES = [
     "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "tip_law", "composite",
-    "second_order",
+    "pyramid_law", "second_order",
     "incompressible", "thick_layer", "flat_punch", "solution",
 ]
 

@@ -189,6 +189,9 @@ INVENTORY: dict[str, list] = {
     "thinlayer.Punch.blunted_cone": [lambda s: tl.Punch.blunted_cone(s, 70), lambda s: tl.Punch.blunted_cone(1, s)],
     "thinlayer.Punch.power_law": [lambda s: tl.Punch.power_law(s, 2), lambda s: tl.Punch.power_law(1, s)],
     "thinlayer.Punch.revolution": [lambda s: tl.Punch.revolution(s)],
+    # the polyhedral tips (issue 24)
+    "thinlayer.Punch.pyramid": [lambda s: tl.Punch.pyramid(s), lambda s: tl.Punch.pyramid(35, s)],
+    "thinlayer.Punch.from_expr": [lambda s: tl.Punch.from_expr(s)],
     "thinlayer.Punch.fourth_degree": [lambda s: tl.Punch.fourth_degree(s), lambda s: tl.Punch.fourth_degree(1, s)],
     "thinlayer.Punch.general": [lambda s: tl.Punch.general(s), lambda s: tl.Punch.general(2, prefix=s)],
     "thinlayer.Punch.lambdify": [lambda s: F().P.lambdify(args=[s]), lambda s: F().P.lambdify(backend=s)],
@@ -501,6 +504,8 @@ NO_USER_VALUES: dict[str, str] = {
     **{f"thinlayer.{k}.{m}": "prints the object" for k in ("Punch", "FlatPunch", "Indentation") for m in ("latex",
                                                                                                           "text_lines")},
     "thinlayer.Punch.codegen_expressions": "returns the punch's own expressions",
+    "thinlayer.Punch.berkovich": "takes no argument: the nominal Berkovich pyramid",
+    "thinlayer.Punch.vickers": "takes no argument: the nominal Vickers pyramid",
     **{f"thinlayer.asymptotics.{m}.codegen_constants": "returns the law's layer constants (h*, r_3): no argument"
        for m in ("force_law.ForceLaw", "second_order.SecondOrderLaw")},
     "thinlayer.LayerKernel": "the abstract base of the layers: no constructor (Python refuses to instantiate it)",

@@ -17,6 +17,14 @@ name a plain sympy Symbol of that name -- ``E``, ``I``, ``S``, ``N``, ``Q``, ``b
 (a call, an attribute, a string, ``^``, ``[``, ``=``, ...) is an :class:`ExpressionError` naming the token
 and its position.
 
+A formula in the coordinates may also take the maximum or minimum of linear forms (a polyhedral tip,
+:meth:`thinlayer.Punch.from_expr`)::
+
+    atom  := ... | ("max" | "min") "(" expr ("," expr)* ")"
+
+each argument a linear form ``a*x1 + b*x2 + c`` in the coordinates (coefficients numbers or parameters) or a
+max/min/sum/multiple of such, at most :data:`MAX_ARGUMENTS` arguments per call; the same bounds as every formula.
+
 A radial profile ``Phi(r)`` of a tip of revolution (``parse_expression(text, radial=True)``,
 :meth:`thinlayer.Punch.revolution`) is read by the same grammar with three additions and the same bounds::
 
@@ -89,13 +97,17 @@ MAX_TERMS = 2000
 MAX_PARAMETERS = 250
 
 _ALLOWED = "numbers, the coordinates x_1, x_2, parameter names, + - * / ** and parentheses"
+#: most arguments of one max(...) or min(...)
+MAX_ARGUMENTS = 64
+#: the piecewise-linear calls of a formula in x1, x2: max/min of linear forms (polyhedral tips)
+_PIECEWISE_FUNCTIONS = {"max": sp.Max, "min": sp.Min}
 _ALLOWED_RADIAL = "numbers, the radius r, parameter names, + - * / **, parentheses, sqrt(...) and abs(...)"
 #: the radius of a radial profile Phi(r) read with ``radial=True``
 RADIUS = sp.Symbol("r", nonnegative=True)
 #: the calls a radial profile may make, and what they build
 _RADIAL_FUNCTIONS = {"sqrt": sp.sqrt, "abs": sp.Abs}
 _TOKEN = re.compile(r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*)"
-                    r"|(?P<op>\*\*|[-+*/()]))")
+                    r"|(?P<op>\*\*|[-+*/(),]))")
 
 
 class ExpressionError(InputError):
@@ -238,6 +250,21 @@ def check_cost(expr: sp.Basic, what: str = "formula", *, cost: Cost | None = Non
 
 
 _COORDINATE_NAMES = frozenset({"x_1", "x_2", "x1", "x2"})
+
+
+def _piecewise_linear(e: sp.Expr) -> bool:
+    """Whether ``e`` is a linear form in the coordinates x1, x2 or a max/min/sum/multiple of such."""
+    coords = (S.x1, S.x2)
+    if not e.has(*coords):
+        return True
+    if e in coords:
+        return True
+    if isinstance(e, (sp.Max, sp.Min, sp.Add)):
+        return all(_piecewise_linear(a) for a in e.args)
+    if isinstance(e, sp.Mul):
+        moving = [f for f in e.args if f.has(*coords)]
+        return len(moving) == 1 and _piecewise_linear(moving[0])
+    return False
 _DECIMAL = re.compile(r"(\d*)\.?(\d*)(?:[eE]([+-]?\d+))?")
 
 
@@ -358,12 +385,33 @@ class _Parser:
             return base**exp
         return base
 
+    def piecewise_linear(self, value: str, pos: int) -> sp.Expr:
+        """``max(f_1, ..., f_m)`` / ``min(...)`` of linear forms in x1, x2 (the ``(`` is next)."""
+        self.take("(")
+        self.deeper()
+        args = [self.expr()]
+        while (tok := self.peek()) is not None and tok[1] == ",":
+            self.take()
+            args.append(self.expr())
+            if len(args) > MAX_ARGUMENTS:
+                raise FormulaTooLargeError(f"{value}(...) at position {pos} has more than {MAX_ARGUMENTS} arguments")
+        self.depth -= 1
+        self.take(")")
+        for k, a in enumerate(args):
+            if not _piecewise_linear(a):
+                raise ExpressionError(f"argument {k + 1} of {value}(...) at position {pos}, {sp.sstr(a):.60}, is not "
+                                      "a linear form in x1, x2 (a*x1 + b*x2 + c, or max/min of such)")
+        # unevaluated: sympy's Max compares its arguments pairwise under assumptions (slow for 64 symbolic forms)
+        return _PIECEWISE_FUNCTIONS[value](*args, evaluate=False)
+
     def atom(self) -> sp.Expr:
         kind, value, pos = self.take()
         if kind == "num":
             return _number(value, pos)
         if kind == "name":
             nxt = self.peek()
+            if nxt is not None and nxt[1] == "(" and not self.radial and value in _PIECEWISE_FUNCTIONS:
+                return self.piecewise_linear(value, pos)
             if nxt is not None and nxt[1] == "(" and self.radial and value in _RADIAL_FUNCTIONS:
                 self.take("(")
                 self.deeper()
@@ -376,7 +424,8 @@ class _Parser:
                                       f"sqrt(...) and abs(...) ({_ALLOWED_RADIAL})")
             if nxt is not None and nxt[1] == "(":
                 raise ExpressionError(f"{value}(...) at position {pos} is a function call, not a polynomial term: "
-                                      f"a formula here is a polynomial with parameters ({_ALLOWED})")
+                                      f"a formula here is a polynomial with parameters ({_ALLOWED}), or max(...)/"
+                                      "min(...) of linear forms")
             if value in self.names:
                 return self.names[value]
             if self.radial and value in _COORDINATE_NAMES:

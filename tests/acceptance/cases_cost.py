@@ -55,6 +55,19 @@ def run(t, tmp: Path) -> None:
     ]
     for f in formulas:
         attempt(t, cat, lambda f=f: _refused_fast(lambda: tl.Punch(f)), f[:50])
+    # issue 24: max/min of linear forms -- many arguments, deep nesting, huge or tiny numbers, powers of a max
+    polyhedral = [
+        "max(" + ", ".join(["x1"] * 65) + ")", "max(" + ", ".join(f"{k}*x1 - x2" for k in range(5000)) + ")",
+        "max(" * 120 + "x1" + ", -x1)" * 120, "max(x1, -x1, x2, -x2)*1e999999", "max(x1, -x1, x2, -x2)*1e-999999",
+        "max(x1, -x1, x2, -x2)*(9**1000)**1000", "max(x1, -x1, x2, -x2)**1000", "max(x1**1000, x2)",
+        "max(x1*(a+b+c+d)**1000, -x1, x2, -x2)", "max(x1, -x1, x2, -x2)/0", "min(x1, -x1, x2, -x2)",
+        "max(" + "9" * 3001 + "*x1, -x1, x2, -x2)",
+        "max(x1, -x1, x2, -x2) + " + " + ".join(f"p{k}" for k in range(251)),
+        "max(1e308*x1, -1e308*x1, 1e308*x2, -1e308*x2)*1e308",
+    ]
+    for f in polyhedral:
+        attempt(t, cat, lambda f=f: _refused_fast(lambda: tl.Punch.from_expr(f)), f"from_expr {f[:40]}")
+        attempt(t, cat, lambda f=f: _refused_fast(lambda: tl.Punch(f)), f"Punch {f[:45]}")
     for f in formulas[:6]:
         cli_refused(t, cat, ["inner", "--punch", f], tmp)
         g = tmp / "cost.toml"

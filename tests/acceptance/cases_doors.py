@@ -120,6 +120,12 @@ def run(t, tmp: Path) -> None:
         "Punch.scaled(Hs)": lambda s: tl.Punch.paraboloid().scaled(s),
         "checked_lambdify(exprs)": lambda s: tl.checked_lambdify([sp.Symbol("x")], s),
         "ellipse_contour(R1)": lambda s: tl.ellipse_contour(s),
+        # issue 24: max/min of linear forms (polyhedral tips) -- each argument read by the grammar, never evaluated
+        "Punch.from_expr(max(x1, s))": lambda s: tl.Punch.from_expr(f"max(x1, -x1, x2, {s})"),
+        "Punch.from_expr(min(s, x2))": lambda s: tl.Punch.from_expr(f"max(x1, -x1, min({s}, x2), -x2)"),
+        "Punch.pyramid(angle)": lambda s: tl.Punch.pyramid(s),
+        "Punch.pyramid(sides=)": lambda s: tl.Punch.pyramid(35, s),
+        "tip_from_spec(polyhedral)": lambda s: tl.punch.tip_from_spec(f"polyhedral:expr=max(x_1,-x_1,x_2,{s})"),
     }
     for name, door in doors.items():
         for s in (payloads[0], "x_1**2 + " + payloads[1]):

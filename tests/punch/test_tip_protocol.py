@@ -33,7 +33,8 @@ from thinlayer.punch import (
 EXAMPLE = {"length": "3/2", "angle": "70", "number": "1/2", "expression": "x_1**2 + 2*x_2**2 + x_1**4",
            "profile": "2*r**(3/2) + r**2"}
 #: values where the kind's range excludes the generic example (issue 24: the power law needs n >= 1)
-EXAMPLE_OF = {("power_law", "n"): "3/2"}
+EXAMPLE_OF = {("power_law", "n"): "3/2", ("pyramid", "sides"): "3",
+              ("polyhedral", "expr"): "max(x_1, -x_1/2 + x_2, -x_2 - x_1/3)"}
 
 
 def _spec(row: TipKind) -> str:
@@ -87,9 +88,10 @@ def test_every_registered_kind_answers_the_protocol(kind):
 def test_the_registry_rows_of_today():
     """The five kinds the design names (paraboloid, elliptic paraboloid, fourth degree, flat, polynomial)."""
     assert set(TIPS) >= {"paraboloid", "elliptic_paraboloid", "fourth_degree", "flat", "polynomial"}
-    # issue 24 adds the tips of revolution (tests/punch/test_radial_tips.py)
+    # issue 24 adds the tips of revolution (tests/punch/test_radial_tips.py) and the polyhedral tips
+    # (tests/punch/test_pyramid.py)
     assert set(TIPS) - {"paraboloid", "elliptic_paraboloid", "fourth_degree", "flat", "polynomial"} == {
-        "cone", "sphere", "blunted_cone", "power_law", "revolution"}
+        "cone", "sphere", "blunted_cone", "power_law", "revolution", "pyramid", "polyhedral"}
     assert TIPS["flat"].form == "flat:a=<length>"
     assert [p.name for p in TIPS["elliptic_paraboloid"].parameters] == ["R1", "R2"]
 
@@ -119,7 +121,8 @@ def test_spec_never_runs_a_payload(spec, tmp_path):
 
 
 @pytest.mark.parametrize("spec, words", [
-    ("pyramid:angle=35", ["unknown tip kind 'pyramid'", "paraboloid:R=<length>", "flat:a=<length>"]),
+    # (was "pyramid:angle=35" before issue 24 registered the pyramid: an unknown kind still)
+    ("wedge:angle=35", ["unknown tip kind 'wedge'", "paraboloid:R=<length>", "flat:a=<length>"]),
     ("paraboloid:Q=1", ["unknown key 'Q'", "paraboloid:R=<length>"]),
     ("paraboloid:R", ["is not key=value", "paraboloid:R=<length>"]),
     ("paraboloid:R=1,radius=2", ["given twice"]),

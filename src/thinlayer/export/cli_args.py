@@ -52,7 +52,7 @@ KINDS = ("elliptic_paraboloid", "paraboloid", "fourth_degree")
 #: the kinds of ``--tip``: the keys of :data:`thinlayer.punch.TIPS`, written out so that building the parser imports
 #: no sympy (``thinlayer --help`` stays fast); a test keeps them equal to the registry's keys
 TIP_KINDS = ("blunted_cone", "cone", "flat", "paraboloid", "elliptic_paraboloid", "fourth_degree", "polynomial",
-             "power_law", "revolution", "sphere")
+             "power_law", "revolution", "sphere", "pyramid", "polyhedral")
 #: the attribute of the parsed arguments holding the deprecation note of ``--kind``/``--flat`` (printed by
 #: :func:`thinlayer.export.cli.main` on stderr after a command that succeeded)
 NOTE = "deprecation_note"

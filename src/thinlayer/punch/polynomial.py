@@ -224,6 +224,42 @@ class Punch(Tip):
         return Revolution(expr)
 
     @classmethod
+    def pyramid(cls, half_angle=None, sides=4) -> Tip:
+        """Regular pyramid of 3 or 4 faces, face angle (axis to face) in degrees (:class:`~thinlayer.punch.Pyramid`)."""
+        from .pyramid import Pyramid
+
+        return Pyramid(half_angle, sides)
+
+    @classmethod
+    def berkovich(cls) -> Tip:
+        """The modified Berkovich pyramid: 3 faces at 65.27 degrees from the axis (projected area 24.5 delta0^2; the
+        original Berkovich angle 65.03 is ``Punch.pyramid(65.03, sides=3)``).
+        """
+        from .pyramid import BERKOVICH_ANGLE, Pyramid
+
+        return Pyramid(BERKOVICH_ANGLE, 3)
+
+    @classmethod
+    def vickers(cls) -> Tip:
+        """The Vickers pyramid: 4 faces, 136 degrees between opposite faces, i.e. 68 degrees from the axis to a face."""
+        from .pyramid import VICKERS_ANGLE, Pyramid
+
+        return Pyramid(VICKERS_ANGLE, 4)
+
+    @classmethod
+    def from_expr(cls, text) -> Tip:
+        """A tip from a formula in ``x1, x2`` read by the restricted grammar: a polynomial punch, or a polyhedral tip
+        (:class:`~thinlayer.punch.Polyhedral`) when the formula takes ``max(...)`` of linear forms.
+        """
+        from ..parse import parse_expression
+        from .pyramid import Polyhedral
+
+        expr = parse_expression(text, what="tip") if isinstance(text, str) else text
+        if isinstance(expr, sp.Basic) and expr.has(sp.Max, sp.Min):
+            return Polyhedral(expr)
+        return cls(expr)
+
+    @classmethod
     def fourth_degree(cls, R=None, K=None) -> "Punch":
         """Fourth-degree paraboloid ``Phi = (x1^2 + x2^2)/(2R) + (x1^2 + x2^2)^2/K^3`` (section 5)."""
         r = sp.Symbol("R", positive=True) if R is None else as_expr(R)
