@@ -142,8 +142,9 @@ GAVARA_2012 = PublishedCorrection(
     "gavara2012-becc", "gavara2012", (PYAF, PYFMRHEO),
     r"1 + 1.7795\,\frac{2\tan\theta}{\pi^2}\,\frac{\delta}{h} + 16\,(1.7795)^2\tan^2\theta\,\frac{\delta^2}{h^2}",
     (2 * _A0 / math.pi**2, 16 * _A0**2), 0.5,
-    "not read (the publication's text was not available); its figure 2 is titled that indentations above 10 % of "
-    "the thickness overestimate the modulus with Sneddon's model")
+    "not read (the publication's text was not available); the title of its figure 2 on the publisher's page reads "
+    "'Indentations larger than 10% of the sample thickness result in a very large overestimaton of the elastic "
+    "modulus' (sic)")
 
 #: Garcia & Garcia (2018), conical tip on a bonded layer, as quoted in PyFMRheo (``conical_model_factors``) and
 #: in pyAF (the current "Sneddon (Cone and Pyramid)" correction): ``1 + 0.721 X + 0.650 X^2 + 0.491 X^3 + 0.225 X^4``.
