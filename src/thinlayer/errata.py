@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import sympy as sp
 
@@ -24,7 +25,7 @@ from .parse import as_expr
 #: the layers an erratum can concern (see :class:`Concern`)
 LAYERS = ("compressible", "frictionless", "incompressible", "nearly incompressible")
 #: the punches an erratum can concern
-PUNCHES = ("smooth", "axisymmetric", "sphere", "elliptic paraboloid", "flat")
+PUNCHES = ("smooth", "axisymmetric", "sphere", "elliptic paraboloid", "flat", "cone")
 
 
 @dataclass(frozen=True)
@@ -357,6 +358,70 @@ def _check_garcia_flat() -> bool:
             and abs(printed[1] - q * q) > 0.01)
 
 
+# --------------------------------------------------------------------------- published cone corrections
+#: the cone's thick-layer series (PT.3) of thinlayer.validation.published_tips, P/P_S = 1 + sum_n beta_n X^n,
+#: X = delta tan(theta)/h, in the kernel moments b_0, b_1 (T.2); derived there by sympy, confirmed here against the
+#: direct solver
+def _cone_beta(b0: float, b1: float) -> tuple[float, float, float, float]:
+    pi = 3.141592653589793
+    return (4 * b0 / pi**2, 20 * b0**2 / pi**4, 4 * (28 * b0**3 - pi**2 * b1) / pi**6,
+            56 * b0 * (12 * b0**3 - pi**2 * b1) / pi**8)
+
+
+@lru_cache(maxsize=8)
+def _cone_direct_ratio(X: float) -> float:
+    """``P/P_S`` of a 45-degree cone on the incompressible bonded layer at ``X = delta/h`` (direct solver, H = 1)."""
+    from .layers.kernels import IncompressibleLayer
+    from .numerics import solve_axisymmetric
+    from .punch import Punch
+
+    res = solve_axisymmetric(IncompressibleLayer(), Punch.cone(45), X, H=1.0, mu=1.0, error_estimate=False)
+    return res.force / (4 * 2.0 * X * X / 3.141592653589793)  # P_S = 4 vartheta tan(theta) delta^2/pi, vartheta = 2
+
+
+def _cone_derived_beta() -> tuple[float, float, float, float]:
+    from .asymptotics.thick_layer import thick_moments
+    from .layers.kernels import IncompressibleLayer
+
+    b = thick_moments(IncompressibleLayer(), 1)
+    return _cone_beta(float(b[0]), float(b[1]))
+
+
+def _series(coefficients, X: float) -> float:
+    return 1 + sum(c * X ** (n + 1) for n, c in enumerate(coefficients))
+
+
+#: the quoted coefficients (thinlayer.validation.published_tips.GAVARA_2012, GARCIA_2018_CONE)
+_GAVARA_QUOTED = (2 * 1.7795 / 3.141592653589793**2, 16 * 1.7795**2)
+_GARCIA_CONE_QUOTED = (0.721, 0.650, 0.491, 0.225)
+
+
+def _check_gavara() -> bool:
+    """Direct solver at X = 0.05: the derived four terms leave < 1e-6; the quoted two terms are 10 % off; the
+    quoted first coefficient is half the slope of P/P_S at X -> 0 (4 b_0/pi^2, b_0 by scipy quadrature).
+    """
+    beta = _cone_derived_beta()
+    X = 0.05
+    direct = _cone_direct_ratio(X)
+    b0 = _b0_scipy(0.5)
+    return (abs(_series(beta, X) - direct) < 1e-6 and abs(_series(_GAVARA_QUOTED, X) / direct - 1) > 0.05
+            and abs(beta[0] - 4 * b0 / 3.141592653589793**2) < 1e-9 and abs(_GAVARA_QUOTED[0] / beta[0] - 0.5) < 0.01)
+
+
+def _check_garcia_cone() -> bool:
+    """Direct solver at X = 0.05 and 0.1: the derived four terms leave < 1e-6 and their remainder falls like X^5;
+    the quoted four terms leave more than 1e-4 at X = 0.1; the quoted c_1..c_3 are the derived forms with
+    Dimitriadis's alpha_0 = 1.7795, beta_0 = 1.0079 put in for b_0, b_1/4, the quoted c_4 is not.
+    """
+    beta = _cone_derived_beta()
+    r1, r2 = (_cone_direct_ratio(X) - _series(beta, X) for X in (0.05, 0.1))
+    with_theirs = _cone_beta(1.7795, 4 * 1.0079)
+    printed_off = abs(_series(_GARCIA_CONE_QUOTED, 0.1) - _cone_direct_ratio(0.1))
+    return (abs(r1) < 1e-6 and abs(r2) < 3e-6 and printed_off > 1e-4
+            and all(abs(a - round(b, 3)) < 1e-12 for a, b in zip(_GARCIA_CONE_QUOTED[:3], with_theirs))
+            and abs(_GARCIA_CONE_QUOTED[3] - with_theirs[3]) > 0.05 and abs(_GARCIA_CONE_QUOTED[3] - beta[3]) > 0.05)
+
+
 #: where the printed coefficients of the published series come from: thinlayer's own record, transcribed without
 #: the publication's equation number and not checked against the publication (a secondary source until it is)
 _RECORDED = "{}, transcribed in thinlayer without the equation number of the publication"
@@ -622,6 +687,64 @@ def _hayes_entry(source: str, nu: str, rows: tuple) -> Erratum:
 
 
 ENTRIES = ENTRIES + tuple(_hayes_entry(*t) for t in HAYES_1972_TABLES)
+
+
+# --------------------------------------------------------------------------- published cone corrections (issue 24)
+_PYAF = "sebastienjanel/pyAF, file src/compute_tools/stiffness_correction.py"
+_PYFMRHEO = "jlopezalo/PyFMRheo, file src/pyfmrheo/models/correction_factors.py"
+_CONE_DERIVED = (r"\frac{P}{P_S} = 1 + \frac{4 b_0}{\pi^2}X + \frac{20 b_0^2}{\pi^4}X^2 + \dots = 1 + 0.7174X "
+                 r"+ 0.6434X^2 + 0.4889X^3 + 0.3004X^4,\ X = \frac{\delta\tan\theta}{h}")
+
+ENTRIES = ENTRIES + (
+    Erratum(
+        "Gavara 2012",
+        r"bottom-effect cone correction on a bonded layer, $\nu = 1/2$, as quoted in sebastienjanel/pyAF and "
+        r"jlopezalo/PyFMRheo",
+        r"\frac{P}{P_S} = 1 + 1.7795\,\frac{2\tan\theta}{\pi^2}\,\frac{\delta}{h} + 16\,(1.7795)^2\tan^2\theta\,"
+        r"\frac{\delta^2}{h^2}",
+        _CONE_DERIVED,
+        r"The publication's own equation could not be read (only its abstract); both repositories write the form "
+        r"above ($P_S = 8E\tan\theta\,\delta^2/(3\pi)$, Sneddon's cone). Derived in "
+        r"thinlayer.validation.published_tips (PT.1)--(PT.3): the regular kernel of (T.2) through $b_1$ turns the "
+        r"layer into a half-space problem for the punch $r\cot\theta + q r^2$, solved by Sneddon's integrals; "
+        r"$b_0 = 1.770217$, $b_1 = 3.831077$ at $\nu = 1/2$. The same route gives the engine's sphere series (T.7) "
+        r"term by term, and the direct axisymmetric solver confirms the four terms: their remainder is "
+        r"$-1.0 \cdot 10^{-11}$, $-3.0 \cdot 10^{-8}$, $-8.8 \cdot 10^{-7}$ at $X = 0.01$, $0.05$, $0.1$ "
+        r"(falling like $X^5$). The quoted first coefficient $2 \cdot 1.7795/\pi^2 = 0.3606$ is half the slope "
+        r"$4 b_0/\pi^2 = 0.7174$, and the quoted second one $16 \cdot 1.7795^2 = 50.67$ has no $\pi^4$: against the "
+        r"direct solver the quoted force is $+10\,\%$ at $X = 0.05$, $+43\,\%$ at $X = 0.1$ and 17 times too "
+        r"large at $X = 1$. Read with $\pi^4$ under the second term ($0.5201$), it is still $-1.8\,\%$, $-3.5\,\%$ "
+        r"and $-38\,\%$ off. Whether the misprint is the publication's or the repositories' is open until the "
+        r"publication is read. The form $1 + 4CX' + 20C^2X'^2$, $C = 1.7795\tan\theta/\pi^2$, $X' = \delta/h$, "
+        r"that PyFMRheo attributes to Managuli et al. (2018) is the derived one with $1.7795$ for $b_0$.",
+        _check_gavara, "secondary",
+        concerns=Concern(("PT.3",), ("cone",), ("incompressible",)), source="gavara2012",
+        quoted_from=f"{_PYAF} (commented out as the old correction) and {_PYFMRHEO}, function bec_gavara_cone",
+    ),
+    Erratum(
+        "Garcia 2018",
+        r"bottom-effect series of a cone on a bonded layer, $\nu = 1/2$, as quoted in jlopezalo/PyFMRheo and "
+        r"sebastienjanel/pyAF: approximation error over its range",
+        r"\frac{P}{P_S} = 1 + 0.721X + 0.650X^2 + 0.491X^3 + 0.225X^4,\ X = \frac{\delta\tan\theta}{h}",
+        _CONE_DERIVED,
+        r"The publication's own equation and its stated range could not be read. The first three quoted "
+        r"coefficients are the derived $4 b_0/\pi^2$, $20 b_0^2/\pi^4$, $4(28 b_0^3 - \pi^2 b_1)/\pi^6$ of (PT.3) "
+        r"with Dimitriadis's $\alpha_0 = -1.7795$ and $\beta_0 = 1.0079$ put in for $-b_0$ and $b_1/4$ "
+        r"($0.7212$, $0.6502$, $0.4909$, rounded as quoted): the $0.5\,\%$ error of $\alpha_0$ carries over. The "
+        r"fourth, $0.225$, is neither the derived $56 b_0(12 b_0^3 - \pi^2 b_1)/\pi^8 = 0.3004$ nor its value with "
+        r"their inputs ($0.2923$). Against the direct axisymmetric solver (force of a $45^\circ$ cone on the "
+        r"incompressible layer; the ratio depends on $X$ only) the quoted series is off by $+3.6 \cdot 10^{-5}$, "
+        r"$+1.9 \cdot 10^{-4}$, $+3.9 \cdot 10^{-4}$, $+7.3 \cdot 10^{-4}$, $-1.1 \cdot 10^{-3}$, "
+        r"$-2.5 \cdot 10^{-3}$, $+1.4 \cdot 10^{-2}$ at $X = 0.01$, $0.05$, $0.1$, $0.3$, $0.5$, $0.75$, $1$ "
+        r"(contact radius up to $0.94 h$); the four derived terms leave $-8.8 \cdot 10^{-7}$ at $X = 0.1$ and "
+        r"$-4.7 \cdot 10^{-4}$, $+5.1 \cdot 10^{-3}$, $+3.5 \cdot 10^{-2}$ at $X = 0.5$, $0.75$, $1$: beyond "
+        r"$X = 0.5$ the quoted fourth coefficient compensates the truncation better than the exact one. An "
+        r"approximation error over the range, not a misprint: none is shown.",
+        _check_garcia_cone, "secondary",
+        concerns=Concern(("PT.3",), ("cone",), ("incompressible",)), source="garcia2018",
+        quoted_from=f"{_PYFMRHEO}, list conical_model_factors, and {_PYAF}",
+    ),
+)
 
 
 def get(equation: str) -> tuple[Erratum, ...]:

@@ -103,6 +103,24 @@ ENTRIES: tuple[Reference, ...] = (
         note="Cited as thinlayer records it; title, initials, last page and DOI could not be checked against a "
              "record of the publication"),
     Reference(
+        "gavara2012", authors=("N. Gavara", "R. S. Chadwick"),
+        title="Determination of the elastic moduli of thin samples and adherent cells using conical atomic force "
+              "microscope tips",
+        journal="Nature Nanotechnology", year=2012, volume="7", issue="11", pages="733-736",
+        doi="10.1038/nnano.2012.163",
+        record="the publisher's page of the article (nature.com, title, abstract and figure titles) and the first "
+               "page of its author manuscript in PubMed Central, PMC3492504 (authors, journal, volume, issue, pages, "
+               "DOI)",
+        note="Only the title page and abstract could be read; the article's equations were not"),
+    Reference(
+        "sneddon1965", authors=("I. N. Sneddon",),
+        title="The relation between load and penetration in the axisymmetric Boussinesq problem for a punch of "
+              "arbitrary profile",
+        journal="International Journal of Engineering Science", year=1965, volume="3", pages="47-57",
+        publisher="Pergamon Press",
+        record="the first page of a scan of the article (Int. J. Engng Sci. Vol. 3, pp. 47-57, Pergamon Press 1965)",
+        note="Only its first page (title, abstract, introduction) could be read; DOI not confirmed by a record"),
+    Reference(
         "boussinesq1885", authors=("J. Boussinesq",),
         title="Application des potentiels \u00e0 l'\u00e9tude de l'\u00e9quilibre et du mouvement des solides "
               "\u00e9lastiques", publisher="Gauthier-Villars, Paris", year=1885,

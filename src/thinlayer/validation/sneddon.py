@@ -45,7 +45,10 @@ and with the direct solver, independently):
   ``P = 4 vartheta c delta0 n/(n + 1)`` (Sneddon 1965's punch ``C r^n``; Galin 1946).
 
 Equation numbers of Sneddon's paper are not quoted: the formulas here are derived, not transcribed, and each is
-checked against quadrature and the direct solver.
+checked against quadrature and the direct solver.  Only the first page of Sneddon (1965) could be read by this
+project; :data:`QUOTED` holds the closed forms as a secondary source (nanite's models) writes them, and
+:func:`sneddon_symbolic` derives (S1), (S2) with sympy for the comparison
+(``tests/validation/test_sneddon_printed.py``).
 """
 from __future__ import annotations
 
@@ -56,7 +59,17 @@ from dataclasses import dataclass
 import mpmath
 
 __all__ = ["HalfSpaceIndentation", "half_space_by_quadrature", "sneddon_cone", "sneddon_power_law",
-           "sneddon_sphere"]
+           "sneddon_sphere", "sneddon_symbolic", "QUOTED"]
+
+#: Sneddon's half-space closed forms as a secondary source writes them (the publication's own pages with these
+#: formulas could not be read): ``(file, formula)``, with ``E/(1 - nu^2) = 2 vartheta``, ``a`` the contact radius.
+#: Nothing is quoted for the power law ``C r^n``: no source read prints it.
+QUOTED = {
+    "sphere": ("AFM-analysis/nanite, file nanite/model/model_sneddon_spherical.pyx (docstring of hertz_spherical)",
+               "F = E/(1-nu**2)*((R^2+a^2)/2*ln((R+a)/(R-a))-a*R);  delta = a/2*ln((R+a)/(R-a))"),
+    "cone": ("AFM-analysis/nanite, file nanite/model/model_conical_indenter.py (docstring of hertz_conical)",
+             "F = 2*tan(alpha)/pi * E/(1-nu**2) * delta^2"),
+}
 
 
 @dataclass(frozen=True)
@@ -106,3 +119,18 @@ def half_space_by_quadrature(slope: Callable, c: float, vartheta: float = 1.0, b
         d = mpmath.quad(lambda t: c * slope(c * mpmath.sin(t)), cuts)
         p = mpmath.quad(lambda t: mpmath.sin(t) ** 2 * c * slope(c * mpmath.sin(t)), cuts)
         return HalfSpaceIndentation(c, float(d), float(4 * vartheta * c * p), "quadrature of (S1), (S2)")
+
+
+def sneddon_symbolic(slope, r, c):
+    """(S1), (S2) by sympy: ``(delta0(c), P(c))`` for ``Phi'(r) = slope`` (a sympy expression in ``r``), vartheta = 1.
+
+    ``delta0 = int_0^1 c Phi'(c x)/sqrt(1 - x^2) dx``, ``P = 4 c int_0^1 x^2 c Phi'(c x)/sqrt(1 - x^2) dx``: the
+    general axisymmetric solution of the module docstring, integrated by sympy (not by hand) after ``x = sin t``.
+    """
+    import sympy as sp
+
+    t = sp.Symbol("t", positive=True)
+    f = sp.expand(c * slope.subs(r, c * sp.sin(t)))
+    d = sp.integrate(f, (t, 0, sp.pi / 2))
+    p = 4 * c * sp.integrate(sp.expand(sp.sin(t) ** 2 * f), (t, 0, sp.pi / 2))
+    return sp.simplify(d), sp.simplify(p)

@@ -215,7 +215,8 @@ def errata_section(doc: Any, entries: Iterable[Any], total: int) -> Any:
 
 #: the publications of the registry in the errata document's order, with their headings
 _GROUPS = (("argatov", "The seed paper"), ("dimitriadis2002", "Dimitriadis et al. (2002)"),
-           ("garcia2018", "Garcia and Garcia (2018)"), ("hayes1972", "Hayes et al. (1972)"))
+           ("garcia2018", "Garcia and Garcia (2018)"), ("gavara2012", "Gavara and Chadwick (2012)"),
+           ("hayes1972", "Hayes et al. (1972)"))
 
 
 def errata_document(doc: Any) -> str:
