@@ -65,6 +65,26 @@ and ``P = (8 vartheta c^3/(3R)) F(eps)``, ``chi = eps sqrt(D)`` is reverted (Lag
 The flat punch of radius ``c`` (no edge condition, ``w_1(c) != 0``) gives
 ``P = 4 vartheta c delta0 (1 + sum_n f_n eps^n)`` (:func:`thick_flat_punch_series`).
 
+(T.9) *Any tip of revolution: the shape enters through its half-space moments.*  In (T.5) the punch appears at
+order 0 only: the orders m >= 1 are the half-space answers to the polynomial displacements of the regular kernel,
+and those are linear in the order-0 moments ``M_j^(0)``.  For a profile ``Phi(r)`` the order 0 is Sneddon's
+half-space solution, ``w_1(x) = delta0 - g(x)``, ``g(x) = x int_0^1 Phi'(x t) (1 - t^2)^{-1/2} dt``; the edge
+condition gives ``delta0 = g(c)`` and (T.4) the moments ``M_j^(0) = 4 (2j + 1) B_j int_0^c (g(c) - g(x)) x^{2j} dx``
+(in units of ``c^{2j+2}``).  So ``delta0 = c sum_m eps^m (delta~^(0) [m = 0] + sum_j M_j^(0) D_j^(m))`` and
+``P = vartheta c^2 sum_m eps^m (M_0^(0) [m = 0] + sum_j M_j^(0) P_j^(m))`` with the shape-free responses
+``D_j^(m), P_j^(m)`` of the unit seed ``M_j^(0) = 1`` (:func:`seed_response`).  The power law ``C r^n``
+(cone: ``n = 1``, ``C = cot alpha``) is self-similar: ``g = C k_n x^n``, ``k_n = sqrt(pi) n Gamma(n/2)/(2
+Gamma((n+1)/2))`` (:func:`power_law_half_space`; ``k_1 = pi/2``, ``k_2 = 2``), and in units of ``C k_n c^{n-1}``
+the seed is ``delta~^(0) = 1``, ``M_j^(0) = 4 B_j n/(n + 2j + 1)``: exact rationals for every rational n.  With
+``c_0`` the half-space radius at the same depth (``delta0 = C k_n c_0^n``) and ``chi = c_0/H``, (T.7) becomes
+
+    P/P_0 = F/D^{(n+1)/n},   c/c_0 = D^{-1/n},   chi = eps D^{1/n},
+    P_0 = 4 vartheta C k_n c_0^{n+1} n/(n + 1)
+
+(:func:`thick_power_law_series`; ``n = 2`` is the sphere's (T.7) unchanged).  The exact sphere and the blunted cone are
+not self-similar: their moments depend on ``c/R`` and are computed by quadrature per contact radius
+(:mod:`thinlayer.asymptotics.thick_tips`).
+
 (T.8) *Error estimate.*  The terms of a series truncated after ``eps^N`` (or ``chi^N``) are summed up to the
 last one; the estimate is ``|t_N| + |t_{N-1}|`` relative (the next term of a series that converges at least
 geometrically is below the larger of the last two; the sum of both covers a ratio up to 1/2 and the
@@ -104,7 +124,10 @@ __all__ = [
     "regular_kernel",
     "thick_flat_punch_series",
     "thick_layer_expansion",
+    "power_law_half_space",
+    "seed_response",
     "thick_moments",
+    "thick_power_law_series",
     "thick_sphere_series",
 ]
 
@@ -309,6 +332,62 @@ def _recursion(n: int, order: int, edge: bool) -> tuple[tuple, tuple, tuple]:
         Ms.append(Mm)
         Ps.append(Mm[0])
     return tuple(ds), tuple(Ps), tuple(ws)
+
+
+@lru_cache(maxsize=64)
+def _seed_response(order: int) -> tuple[tuple[tuple, tuple], ...]:
+    """``((D_j^(m), P_j^(m)) for j = 0..K)``, m = 0..order: (T.5) for the unit seed ``M_j^(0) = 1`` (T.9).
+
+    The order-0 entries are 0 (the shape's own order 0 is added by the caller).
+    """
+    K = max((order - 1) // 2, 0)
+    Rg, *g = _poly_ring(K + 1)
+    zero = Rg(0)
+    J = K + 1
+    out = []
+    for j0 in range(J):
+        Ms = [[Rg(1) if j == j0 else zero for j in range(J)]]
+        ds, Ps = [zero], [zero]
+        for m in range(1, order + 1):
+            w: dict[int, Any] = {}
+            for k in range(K + 1):
+                if 2 * k + 1 > m:
+                    break
+                fac = QQ((-1) ** k, 2 * 4**k * math.factorial(k) ** 2) * g[k]
+                Mp = Ms[m - 2 * k - 1]
+                for (i, j), a in _ring_average(k).items():
+                    w[i] = w.get(i, zero) + fac * a * Mp[j]
+            d = -sum((_kappa(i) * wi for i, wi in w.items()), zero)
+            w[0] = w.get(0, zero) + d
+            Mm = [4 * (2 * j + 1) * _B(j) * sum((_kappa(i) * wi * QQ(1, 2 * i + 2 * j + 1) for i, wi in w.items()),
+                                                 zero) for j in range(J)]
+            ds.append(d)
+            Ps.append(Mm[0])
+            Ms.append(Mm)
+        out.append((tuple(ds), tuple(Ps)))
+    return tuple(out)
+
+
+def seed_response(order: int, layer: LayerKernel) -> tuple[np.ndarray, np.ndarray]:
+    r"""``(D, P)``, arrays ``[j, m]`` of the responses of (T.9) for one layer: the depth and force terms of order
+    ``m`` (units ``c`` and ``vartheta c^2``) produced by a unit half-space moment ``M_j^(0) = 1`` (``j <= K``,
+    ``2K + 1 <= order``).  Exact in ``b_k/pi`` (:func:`thick_moments`), rounded to floats at the end.
+    """
+    n = _check_thick_order(order)
+    return _numeric_response(n, layer)
+
+
+@lru_cache(maxsize=64)
+def _numeric_response(order: int, layer: LayerKernel) -> tuple[np.ndarray, np.ndarray]:
+    K = max((order - 1) // 2, 0)
+    resp = _seed_response(order)
+    with mpmath.workdps(25):
+        gv = [b / mpmath.pi for b in thick_moments(layer, K, dps=20)]
+        D = np.array([[float(_to_number(p, gv)) for p in ds] for ds, _ in resp])
+        P = np.array([[float(_to_number(p, gv)) for p in ps] for _, ps in resp])
+    D.setflags(write=False)
+    P.setflags(write=False)
+    return D, P
 
 
 def _to_expr(p: Any, b: tuple[sp.Symbol, ...]) -> sp.Expr:
@@ -615,7 +694,8 @@ class ThickSeries(RichDisplay):
     Attributes
     ----------
     shape : str
-        ``"sphere"`` or ``"flat"``.
+        ``"sphere"``, ``"flat"`` or ``"power law n = ..."`` (T.9; ``x = chi = c_0/H``, ``c_0`` and ``P_0`` the
+        half-space radius and force at the same depth).
     order : int
     force, radius : tuple of sympy.Expr
         Coefficients (index 0 is 1), polynomials in ``b_k/pi``.
@@ -652,18 +732,18 @@ class ThickSeries(RichDisplay):
         return ef, er
 
     def latex(self) -> str:
-        x = chi_sym if self.shape == "sphere" else sp.Symbol("c") / S.H
+        x = sp.Symbol("c") / S.H if self.shape == "flat" else chi_sym
         def series(coefficients: tuple) -> str:  # ascending powers of the variable, each term in the normal form
             return join_signed([normal_latex(t * x**n) for n, t in enumerate(coefficients)])
 
         lines = [latex_equation(r"P/P_0", series(self.force), "T.7")]
-        if self.shape == "sphere":
+        if self.shape != "flat":
             lines.append(latex_equation("c/c_0", series(self.radius), "T.7"))
         return " \\\\\n".join(lines)
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        var = "χ = √(R δ₀)/H" if self.shape == "sphere" else "c/H"
+        var = "χ = √(R δ₀)/H" if self.shape == "sphere" else "c/H" if self.shape == "flat" else "χ = c₀/H"
         lines = [f"ThickSeries ({self.shape}) in {var}, through order {self.order}   (T.7)"]
         for n in range(1, min(self.order, 4) + 1):
             lines.append(f"  P: [{n}] {fmt(self.force[n])}")
@@ -697,6 +777,67 @@ def _sphere_series(order: int) -> ThickSeries:
     b = moment_symbols(max((N - 1) // 2, 0))
     return ThickSeries("sphere", N, tuple(sp.expand(_to_expr(p, b)) for p in fo),
                        tuple(sp.expand(_to_expr(p, b)) for p in ro), tuple(fo), tuple(ro))
+
+
+def power_law_half_space(n: Any) -> sp.Expr:
+    r"""``k_n`` of the half-space power law (T.9): ``delta0 = C k_n c^n`` for ``Phi = C r^n``.
+
+    ``g(x) = x int_0^1 Phi'(x t)(1 - t^2)^{-1/2} dt = C n x^n int_0^1 t^{n-1} (1 - t^2)^{-1/2} dt = C k_n x^n``,
+    the integral ``B(n/2, 1/2)/2`` (derived here by sympy).
+
+    Examples
+    --------
+    >>> power_law_half_space(1), power_law_half_space(2)
+    (pi/2, 2)
+    """
+    t = sp.Symbol("t", positive=True)
+    nn = sp.nsimplify(n) if isinstance(n, (int, sp.Rational)) else sp.sympify(n)  # a Rational or int from the Tip
+    integral = sp.integrate(t ** (nn - 1) / sp.sqrt(1 - t**2), (t, 0, 1))
+    return sp.simplify(sp.gammasimp(nn * integral))
+
+
+@lru_cache(maxsize=32)
+def _power_law_series(n: sp.Rational, order: int) -> ThickSeries:
+    N = order
+    q = QQ(int(n.p), int(n.q))
+    resp = _seed_response(N)
+    Rg = _poly_ring(max((N - 1) // 2, 0) + 1)[0]
+    seed = [4 * _B(j) * q / (q + 2 * j + 1) for j in range(len(resp))]  # M_j^(0), units C k_n c^{n-1}
+    D = [Rg(1)] + [sum((seed[j] * resp[j][0][m] for j in range(len(resp))), Rg(0)) for m in range(1, N + 1)]
+    F = [Rg(1)] + [sum((seed[j] * resp[j][1][m] for j in range(len(resp))), Rg(0)) * (1 / seed[0])
+                   for m in range(1, N + 1)]
+    one = D[0]
+    e = _revert(_pow_series(D, 1 / q, N, one), N)  # chi = eps D^{1/n}
+    fo = _compose(_mul(F, _pow_series(D, -(q + 1) / q, N, one), N), e, N)
+    ro = _compose(_pow_series(D, -1 / q, N, one), e, N)
+    b = moment_symbols(max((N - 1) // 2, 0))
+    return ThickSeries(f"power law n = {n}", N, tuple(sp.expand(_to_expr(p, b)) for p in fo),
+                       tuple(sp.expand(_to_expr(p, b)) for p in ro), tuple(fo), tuple(ro))
+
+
+def thick_power_law_series(n: Any, order: int = 12) -> ThickSeries:
+    r"""The power-law tip ``C r^n`` (the cone: ``n = 1``) on a thick layer (T.9): ``P/P_0`` and ``c/c_0`` in powers of
+    ``chi = c_0/H``, ``c_0 = (delta0/(C k_n))^{1/n}`` the half-space radius, ``P_0 = 4 vartheta C k_n c_0^{n+1}
+    n/(n + 1)`` (Sneddon).  ``n = 2`` is :func:`thick_sphere_series`.
+
+    Examples
+    --------
+    >>> s = thick_power_law_series(1, 3)
+    >>> s.force[1], s.radius[1]
+    (2*b_0/pi, b_0/pi)
+    """
+    v = sp.Rational(sp.sympify(n)) if isinstance(n, (int, sp.Rational)) else None
+    if isinstance(n, str):
+        from ..parse import parse_number
+
+        v = sp.Rational(parse_number(n, "the exponent n"))
+    if v is None or not 1 <= v <= 1000:
+        raise InputError(f"n must be a rational number with 1 <= n <= 1000 (an int, a sympy Rational or a string "
+                         f"such as '3/2'), got {n!r}")
+    N = _check_thick_order(order)
+    if N < 2:
+        raise InputError(f"order must be at least 2 (the estimate (T.8) needs two terms), got {order}")
+    return _power_law_series(v, N)
 
 
 def thick_sphere_series(order: int = 12) -> ThickSeries:

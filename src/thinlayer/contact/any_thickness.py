@@ -40,6 +40,7 @@ import numpy as np
 
 from .._checks import InputError, InputTypeError, check_array_size, check_choice, positive
 from ..errors import boundary, boundary_methods
+from .any_thickness_tips import NotTabulatedError, numeric_tip, tip_fields
 
 __all__ = ["AnyThicknessLaw", "AnyThicknessValues", "CHI_HI", "CHI_LO", "NotTabulatedError", "TABLE_PATH",
            "anchor", "any_thickness_fields", "any_thickness_law", "any_thickness_source", "build_law",
@@ -557,10 +558,6 @@ def force_any_thickness(delta0: Any, R: float, H: float, mu: float | None = None
     return P.reshape(d0.shape)
 
 
-class NotTabulatedError(InputError):
-    """The any-thickness law does not cover this punch here (the message says why and what would)."""
-
-
 @dataclass(frozen=True)
 class AnyThicknessValues:
     """What the any-thickness model found: ``chi``, the regime, the ratios to Hertz and their estimates."""
@@ -653,8 +650,6 @@ def any_thickness_fields(layer: Any, punch: Any, delta0: Any = None, force: Any 
     ValueError
         When the estimate exceeds ``tol`` (one line, with the estimate).
     """
-    from ..asymptotics.solution import numeric_punch
-
     layer, nv, base = _layer_nu(layer, nu)
     mm = _shear_modulus(mu, E, nv)
     if H is None:
@@ -662,9 +657,14 @@ def any_thickness_fields(layer: Any, punch: Any, delta0: Any = None, force: Any 
     HH = positive(H, "H")
     if (delta0 is None) == (force is None):
         raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
-    pn = numeric_punch(punch, parameters)
+    pn = numeric_tip(punch, parameters)
     R = sphere_radius(pn)
     vt = mm / (1.0 - nv)
+    if R is None and pn.polynomial is None:  # a tip of revolution: the cone's law or the series (T.9)
+        f = tip_fields(layer, pn, delta0, force, HH, mm, nv, base, tol,
+                       lambda d, P, c: _DirectPressure(layer, pn, d, HH, mm, nv, P, c))
+        return dict(layer=layer, punch=pn, H=HH, mu=mm, nu=nv, semi_axes=None, model="any-thickness", tol=tol,
+                    detail=None, **f)
     if R is None:
         return _thick_fields(layer, pn, delta0, force, HH, mm, nv, tol)
     law = any_thickness_law(nv, base)

@@ -1,5 +1,7 @@
-r"""The any-thickness model (preference 60): the sphere at any ``H/a`` by the law (T.7), another axisymmetric
-punch by the thick-layer series (T.5) where its estimate (T.8) is within ``tol``
+r"""The any-thickness model (preference 60): the sphere at any ``H/a`` by the law (T.7), the cone by its law (T.9)
+(:mod:`thinlayer.contact.any_thickness_tips`; bonded ``0.3 <= nu <= 1/2`` or frictionless, ``chi = c_0/H`` up to the
+table's end), another axisymmetric punch or tip of revolution by the thick-layer series (T.5), (T.9) where its
+estimate (T.8) is within ``tol``
 (:mod:`thinlayer.contact.any_thickness`).  ``model="auto"`` tries it for axisymmetric punches after the
 thin-layer models and before the direct solver.
 """
@@ -79,7 +81,10 @@ class AnyThicknessModel(Model):
         return self.refuses(problem) is not None or not problem.tip.axisymmetric
 
     def applies(self, problem: Problem) -> str | None:
-        return polynomial_reason(problem.tip)
+        tip = problem.tip
+        if tip.polynomial is None and tip.axisymmetric and hasattr(tip, "radial_slope"):
+            return None  # a tip of revolution: the cone's law, the thick-layer series (T.9) of the others
+        return polynomial_reason(tip)
 
     def run(self, problem: Problem) -> Indentation:
         tol = problem.tol
