@@ -37,18 +37,21 @@ from typing import Any, ClassVar
 
 import mpmath
 import numpy as np
-import sympy as sp
 
 from .. import symbols as S
 from .._checks import InputError, InputTypeError, NotDerivedError, check_array_size, check_bounded, parse_nu
 from .._checks import positive as _positive
+from .._lazy import lazy_function, lazy_module
 from ..display import RichDisplay
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..normal import float_latex, normal_latex
 from ..punch import Punch, PunchError, is_polynomial_tip
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, error_estimate_arrays, force_law
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+float_latex = lazy_function("thinlayer.normal", "float_latex")
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
 
 __all__ = ["ContactSolution", "ForceArrays", "ValidityError", "compressible_solution", "force_arrays", "numeric_punch",
            "MAX_FORCE_ORDER", "DEFAULT_TOL"]

@@ -9,17 +9,21 @@ delta0), and :data:`TIPS` lists the kinds a user can name (``tip_from_spec("para
 """
 from __future__ import annotations
 
+import importlib
 import math
+import sys
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
-import sympy as sp
 
+from .._lazy import lazy_module
 from ..display import RichDisplay
 from ..errors import InputError, boundary_methods
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 class PunchError(InputError):
@@ -268,8 +272,26 @@ class TipKind:
         return f"{self.kind}:{keys}" if keys else self.kind
 
 
-#: tip kinds by key, in registration order
+#: tip kinds by key, in the order of :data:`CATALOGUE` (:func:`catalogue` imports them all)
 TIPS: dict[str, TipKind] = {}
+#: the modules of the tip kinds, in the order the registry lists them; :func:`catalogue` imports them on first use
+CATALOGUE = ("blunted_cone", "cone", "flat", "polynomial", "power_law", "revolution", "sphere")
+
+
+def catalogue() -> dict[str, TipKind]:
+    """:data:`TIPS` with every kind of :data:`CATALOGUE` registered (their modules imported on first use).
+
+    ``import thinlayer.punch`` loads the polynomial punch and the flat punch only: the tips of revolution build
+    sympy constants at import, which a numeric ``solve()`` of a paraboloid does not need (issue 28 item 6).
+    """
+    if not all(f"{__package__}.{m}" in sys.modules for m in CATALOGUE):
+        for m in CATALOGUE:
+            importlib.import_module(f"{__package__}.{m}")
+        order = {f"{__package__}.{m}": i for i, m in enumerate(CATALOGUE)}
+        rows = sorted(TIPS.values(), key=lambda row: order.get(getattr(row.constructor, "__module__", ""), len(order)))
+        TIPS.clear()
+        TIPS.update((row.kind, row) for row in rows)
+    return TIPS
 
 
 def register_tip(row: TipKind) -> TipKind:
