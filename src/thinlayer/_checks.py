@@ -160,8 +160,8 @@ MAX_NU_DIGITS = 6
 def as_fraction(x: Any) -> Fraction:
     """A rational, a float or an mpmath float as the exact Fraction it is (no sympy needed for a float)."""
     if isinstance(x, mpmath.mpf):
-        man, exp = x.man_exp
-        return Fraction(int(man)) * Fraction(2) ** int(exp)
+        sign, man, exp, _ = x._mpf_
+        return Fraction(-int(man) if sign else int(man)) * Fraction(2) ** int(exp)
     if isinstance(x, float):
         return Fraction(*x.as_integer_ratio())
     if isinstance(x, (int, Fraction)):

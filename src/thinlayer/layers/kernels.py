@@ -28,7 +28,7 @@ import numpy as np
 from .. import symbols as S
 from .._checks import InputError, as_fraction, check_bounded, parse_nu
 from .._checks import check_order as _check_order
-from .._lazy import lazy_function, lazy_module
+from .._lazy import lazy_function, lazy_module, loaded_types
 from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
 from ..display import RichDisplay, fmt, latex_escape
 from ..errors import boundary_methods
@@ -211,6 +211,13 @@ class LayerKernel(RichDisplay, ABC):
         """What the edge shift h* (3.18), (3.25) of this layer depends on: its exact nu, or the base name."""
         raise InputError(f"the edge shift needs a numeric layer with a finite thickness, got {self!r}")
 
+    @property
+    def constants_key(self) -> tuple | None:
+        """A key of the layer's per-nu numbers in the disk cache (:mod:`thinlayer._cache`): plain strings and ints,
+        made without sympy (a float nu by its exact binary value); None when the layer has no such numbers.
+        """
+        return None
+
     def taylor_coefficients(self, order: int) -> tuple:
         """``c_n`` of ``L(s)/s = sum_n c_n s^{2n}`` (n <= order): ``c_n = A m_n`` (2.20), or (I.1) at nu = 1/2.
 
@@ -321,12 +328,13 @@ class BondedLayer(LayerKernel):
         object.__setattr__(self, "dps", dps)
         object.__setattr__(self, "name", "bonded")
         object.__setattr__(self, "equation", "2.3")
-        kind = "symbolic" if isinstance(val, sp.Symbol) else "float" if isinstance(val, mpmath.mpf) else "exact"
+        symbol = loaded_types("sympy", "Symbol")  # a float nu never needs sympy
+        kind = "symbolic" if isinstance(val, symbol) else "float" if isinstance(val, mpmath.mpf) else "exact"
         object.__setattr__(self, "kind", kind)
 
     @property
     def parameter(self) -> sp.Symbol | None:
-        if isinstance(self.nu, sp.Symbol):
+        if isinstance(self.nu, loaded_types("sympy", "Symbol")):
             return S.kappa if self.parameter_name == "kappa" else self.nu
         return None
 
@@ -378,6 +386,18 @@ class BondedLayer(LayerKernel):
             raise InputError("the Wiener-Hopf solution needs a numeric layer; got a symbolic BondedLayer "
                              "(give BondedLayer(0.3), BondedLayer('3/10') or a number)")
         return parse_nu(self.nu, floats="exact")
+
+    @property
+    def constants_key(self) -> tuple | None:
+        """``("bonded", kind, nu, dps)``: a float nu by its exact binary value (mantissa, exponent), an exact one as
+        ``p/q``; None for a symbolic layer.
+        """
+        if self.kind == "float":
+            sign, man, exp, _ = self.nu._mpf_  # the exact binary value, signed
+            return ("bonded", "float", -int(man) if sign else int(man), int(exp), self.dps)
+        if self.kind == "exact":
+            return ("bonded", "exact", f"{int(self.nu.p)}/{int(self.nu.q)}", self.dps)
+        return None
 
     def _kappa_expr(self) -> sp.Expr:
         k = self.kappa
@@ -465,6 +485,11 @@ class FrictionlessLayer(LayerKernel):
     def edge_shift_key(self) -> str:
         """``"frictionless"``: the kernel, hence h*, does not depend on nu."""
         return "frictionless"
+
+    @property
+    def constants_key(self) -> tuple:
+        """``("frictionless",)``: the kernel's numbers do not depend on nu."""
+        return ("frictionless",)
 
     def L(self, u: sp.Expr | None = None) -> sp.Expr:
         u = S.u if u is None else sympy_value(u, "u")

@@ -118,6 +118,13 @@ class Tip(RichDisplay, ABC):
         """Whether Phi depends on ``r = |x|`` only: decided by the tip, in one place."""
 
     @property
+    def is_polynomial(self) -> bool:
+        """Whether Phi is a polynomial (:attr:`polynomial` is not None); a tip that knows it without building the
+        polynomial (the punch with numbers, issue 28 item 6) answers here.
+        """
+        return self.polynomial is not None
+
+    @property
     def polynomial(self) -> sp.Poly | None:
         """Phi as a ``sympy.Poly`` in ``(x1, x2)`` (coefficients may hold parameters), or None if not a polynomial."""
         return None
@@ -199,7 +206,7 @@ def is_polynomial_tip(obj: Any) -> bool:
     """Whether ``obj`` is a tip whose Phi is a polynomial (:attr:`Tip.polynomial`): what the symbolic stages
     (2.26)-(3.25) and the polynomial solvers take.  Callers ask this instead of checking a tip's class.
     """
-    return isinstance(obj, Tip) and obj.polynomial is not None
+    return isinstance(obj, Tip) and obj.is_polynomial
 
 
 def points(x: Any, what: str) -> np.ndarray:
@@ -214,12 +221,15 @@ def points(x: Any, what: str) -> np.ndarray:
 
 def positive_depth(delta0: Any) -> float:
     """``delta0`` as a positive finite float, or a :class:`PunchError` naming it."""
-    from ..parse import parse_number
+    if isinstance(delta0, (int, float)) and not isinstance(delta0, bool) and abs(delta0) < 2**1000:
+        value = float(delta0)  # a plain number: the float the grammar route gives, without sympy
+    else:
+        from ..parse import parse_number
 
-    try:
-        value = float(parse_number(delta0, "the depth delta0"))
-    except (TypeError, ValueError) as exc:
-        raise PunchError(str(exc)) from None
+        try:
+            value = float(parse_number(delta0, "the depth delta0"))
+        except (TypeError, ValueError) as exc:
+            raise PunchError(str(exc)) from None
     if not (value > 0 and math.isfinite(value)):
         raise PunchError(f"the depth delta0 must be a positive finite number, got {delta0!r}")
     return value

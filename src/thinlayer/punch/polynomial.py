@@ -367,6 +367,11 @@ class Punch(Tip):
         return f"{self.name} Phi = {self.expr}"
 
     @property
+    def is_polynomial(self) -> bool:
+        """True: Phi is a polynomial (answered without building it)."""
+        return True
+
+    @property
     def polynomial(self) -> sp.Poly:
         """Phi as a ``sympy.Poly`` in ``(x1, x2)``; its coefficients hold the parameters."""
         if self._poly is None:
