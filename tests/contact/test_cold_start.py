@@ -145,3 +145,38 @@ def test_a_catalogue_punch_with_numbers_answers_as_the_symbolic_one():
         assert fast == slow and hash(fast) == hash(slow)  # Phi built on first use: the same expression
         assert fast.degree == 2 and fast.polynomial == slow.polynomial
         assert str(fast) == str(slow)
+
+
+CLI = ("import sys\n"
+       "from thinlayer.export.cli import main\n"
+       "rc = main(['solve', '--nu', '0.3', '--kind', 'paraboloid', '--param', 'R=10', '--delta0', '0.1', '--H', '0.05',"
+       " '--mu', '1'])\n"
+       "print('MODULES', rc, 'sympy' in sys.modules, 'scipy' in sys.modules)\n")
+
+
+def test_thinlayer_solve_of_the_sphere_imports_neither_sympy_nor_scipy(tmp_path):
+    env = {**os.environ, "THINLAYER_CACHE_DIR": str(tmp_path)}
+    env.pop("THINLAYER_CACHE", None)
+    first = subprocess.run([sys.executable, "-c", CLI], capture_output=True, text=True, env=env, timeout=600,
+                           stdin=subprocess.DEVNULL)
+    again = subprocess.run([sys.executable, "-c", CLI], capture_output=True, text=True, env=env, timeout=600,
+                           stdin=subprocess.DEVNULL)
+    assert first.returncode == again.returncode == 0, again.stderr
+    assert again.stdout.splitlines()[-1] == "MODULES 0 False False", again.stdout
+    assert again.stdout == first.stdout.replace(first.stdout.splitlines()[-1], again.stdout.splitlines()[-1])
+    lines = again.stdout.splitlines()
+    assert lines[0] == "paraboloid of revolution, Φ = (x₁² + x₂²)/(2R), R = 10"
+    assert "P = 21.983295" in again.stdout and "model: compressible" in again.stdout
+
+
+def test_the_printed_catalogue_formulas_are_the_printers():
+    from thinlayer.export.solve_cli import RADIUS_TEXT
+    from thinlayer.normal import normal_text, symbol_text
+    from thinlayer.punch.polynomial import CATALOGUE_TEXT
+
+    assert CATALOGUE_TEXT["paraboloid"] == normal_text(tl.Punch.paraboloid().expr)
+    assert CATALOGUE_TEXT["elliptic"] == normal_text(tl.Punch.elliptic_paraboloid().expr)
+    assert tl.Punch.paraboloid(3).formula_text == CATALOGUE_TEXT["paraboloid"]
+    assert tl.Punch.paraboloid().formula_text is None
+    for name in ("R1", "R_1", "R2", "R_2", "R", "radius"):
+        assert RADIUS_TEXT.get(name, name) == symbol_text(name)

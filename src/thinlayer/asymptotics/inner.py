@@ -174,7 +174,7 @@ def _combine(parts: list[tuple[Any, dict[Mono, Any]]]) -> dict[Mono, Any]:
 
 def _gap_dicts(punch: Punch) -> tuple[dict[Mono, Any], dict[Mono, Any]]:
     """``delta_0 - Phi(x)`` and ``delta_0^* - Phi^*(xi)`` (2.25) as coefficient dictionaries."""
-    phi = punch._poly.as_dict()
+    phi = punch.polynomial.as_dict()
     sc = dict(punch.scaling)
     gap = {k: -c for k, c in phi.items()}
     gap[(0, 0)] = S.delta0 + gap.get((0, 0), 0)

@@ -25,6 +25,7 @@ from .base import (
     catalogue,
     is_polynomial_tip,
     register_tip,
+    tip_kind,
 )
 from .flat import FlatPunch
 from .polynomial import MAX_DEGREE, MAX_TERMS, MAX_TOTAL_DEGREE, Punch, PunchTooLargeError
@@ -51,4 +52,4 @@ def __getattr__(name: str) -> Any:
 __all__ = ["MAX_DEGREE", "MAX_TERMS", "MAX_TOTAL_DEGREE", "SMOOTHNESS", "TIPS", "BluntedCone", "Cone", "FlatPunch",
            "LevelSet", "PowerLaw", "Punch", "PunchError", "PunchTooLargeError", "Revolution", "Sphere", "Tip",
            "TipKind", "TipParameter", "TipSpecError", "is_polynomial_tip", "laplacian", "register_tip", "tip_from_spec",
-           "valid_forms"]
+           "tip_kind", "valid_forms"]

@@ -288,6 +288,12 @@ TIPS: dict[str, TipKind] = {}
 CATALOGUE = ("blunted_cone", "cone", "flat", "polynomial", "power_law", "revolution", "sphere")
 
 
+def tip_kind(kind: str) -> TipKind | None:
+    """The registry row of ``kind`` (None if there is none), importing the tip modules only if it is not loaded."""
+    row = TIPS.get(kind)
+    return row if row is not None else catalogue().get(kind)
+
+
 def catalogue() -> dict[str, TipKind]:
     """:data:`TIPS` with every kind of :data:`CATALOGUE` registered (their modules imported on first use).
 

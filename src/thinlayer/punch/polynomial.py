@@ -201,6 +201,14 @@ class Punch(Tip):
         object.__setattr__(self, "_poly", built.polynomial)
         return built.expr
 
+    @property
+    def formula_text(self) -> str | None:
+        """Phi of the catalogue kind in Unicode maths with its symbolic radii (``(x₁² + x₂²)/(2R)``), as
+        :func:`thinlayer.normal.normal_text` prints it (a test holds them equal), for a catalogue punch with numbers;
+        None otherwise.  ``thinlayer solve`` prints it beside the values without loading the printer.
+        """
+        return None if self._spec is None else CATALOGUE_TEXT[self._spec[0]]
+
     def _spec_coefficients(self) -> tuple[float, float] | None:
         """``(c1, c2)`` of ``Phi = c1 x1^2 + c2 x2^2`` of a catalogue punch with numbers (``c = 1/(2R)``), else None."""
         spec = self._spec
@@ -480,6 +488,9 @@ class Punch(Tip):
 # =============================================================================================
 # shape questions, cached by Phi
 # =============================================================================================
+#: Phi of the catalogue punches with symbolic radii as :func:`thinlayer.normal.normal_text` prints it
+#: (tests/contact/test_cold_start.py holds them equal to the printer's output)
+CATALOGUE_TEXT = {"paraboloid": "(x₁² + x₂²)/(2R)", "elliptic": "x₂²/(2R₂) + x₁²/(2R₁)"}
 #: the kind of the catalogue punches, by the name the catalogue gives them
 _KIND_OF_NAME = {"paraboloid of revolution": "paraboloid", "elliptic paraboloid": "elliptic_paraboloid",
                  "fourth-degree paraboloid": "fourth_degree"}
