@@ -180,3 +180,15 @@ def test_the_printed_catalogue_formulas_are_the_printers():
     assert tl.Punch.paraboloid().formula_text is None
     for name in ("R1", "R_1", "R2", "R_2", "R", "radius"):
         assert RADIUS_TEXT.get(name, name) == symbol_text(name)
+
+
+def test_the_cache_folder_version_is_the_installed_version():
+    """The cache folder's version is read off the dist-info folder's name (no import of importlib.metadata); it is
+    the version importlib.metadata reports."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        installed = version("thinlayer")
+    except PackageNotFoundError:
+        installed = "source"
+    assert (_cache._dist_info_version() or _cache._metadata_version()) == installed
