@@ -39,7 +39,7 @@ import numbers
 from typing import Any
 
 from .._checks import InputError, InputTypeError, check_choice, parse_nu, positive
-from .._lazy import lazy_module, loaded_types
+from .._lazy import loaded_types
 from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import boundary
 from ..layers.kernels import LayerKernel
@@ -49,8 +49,6 @@ from .indentation import tex_num as _tex_num  # noqa: F401 - the name tests and 
 from .models import model_names, walk
 from .models.direct import MAX_CELLS_2D  # noqa: F401 - kept importable from here
 from .problem import ELASTIC_HINT, Depth, Elastic, Force, Frictionless, Problem
-
-sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 __all__ = ["Indentation", "DirectComparison", "MODELS", "solve", "ELASTIC_HINT"]
 
