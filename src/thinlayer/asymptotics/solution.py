@@ -565,6 +565,8 @@ def _derived_constants(layer: LayerKernel) -> tuple[float, ...]:
 #: the numeric route keeps to numbers far from the ends of the double range; the symbolic route (mpmath at 20
 #: digits) answers, and words its refusals, beyond
 _SAFE = (1e-280, 1e280)
+#: the curvatures, depth, thickness and modulus the numeric route takes (their products stay inside _SAFE)
+_MODERATE = (1e-60, 1e60)
 
 
 def _quadric_solution(layer: LayerKernel, punch: Punch, delta0: Any, force: Any, H: float, mu: float, nu: float,
@@ -577,7 +579,7 @@ def _quadric_solution(layer: LayerKernel, punch: Punch, delta0: Any, force: Any,
     if not NUMERIC_QUADRIC or order not in (0, 1) or layer.constants_key is None:
         return None
     q = punch.quadric
-    if q is None:
+    if q is None or not all(_MODERATE[0] < v < _MODERATE[1] for v in (q[0], q[1], H, mu)):
         return None
     k = compressible_constants(layer)
     th = 1.0 / (1.0 - nu)  # vartheta per unit mu (2.1)
@@ -593,7 +595,7 @@ def _quadric_solution(layer: LayerKernel, punch: Punch, delta0: Any, force: Any,
         d0 = (-a1 + math.sqrt(disc)) / (2 * a2) if a1 < 0 else (-2 * a0) / (a1 + math.sqrt(disc))
     else:
         d0 = _positive(delta0, "delta0")
-    if not _SAFE[0] < d0 < _SAFE[1]:
+    if not _MODERATE[0] < d0 < _MODERATE[1]:
         return None
     ls = punch.level_set(d0)
     vals = ForceValues(d0, H, th / (k["A"] * H) * ls.volume, th * H * k["c1"] * ls.flux, ls.area, ls.perimeter,
