@@ -46,13 +46,36 @@ _state: dict[str, Any] = {}
 
 def _version() -> str:
     if "version" not in _state:
-        from importlib.metadata import PackageNotFoundError, version
-
-        try:
-            _state["version"] = version("thinlayer")
-        except PackageNotFoundError:  # running from the sources: the fingerprint tells versions apart
-            _state["version"] = "source"
+        _state["version"] = _dist_info_version() or _metadata_version()
     return _state["version"]
+
+
+def _dist_info_version() -> str | None:
+    """The installed version read off the name of its ``thinlayer-<version>.dist-info`` folder on ``sys.path``
+    (the name the wheel and packaging standards give it): no import of :mod:`importlib.metadata`, whose import
+    alone costs a fresh process about as much as the rest of a numeric solve (issue 28 item 6).  None if there is
+    not exactly one such folder.
+    """
+    import sys
+
+    found = set()
+    for entry in sys.path:
+        try:
+            names = os.listdir(entry or ".")
+        except OSError:
+            continue
+        found.update(n[len("thinlayer-"):-len(".dist-info")] for n in names
+                     if n.startswith("thinlayer-") and n.endswith(".dist-info"))
+    return found.pop() if len(found) == 1 else None
+
+
+def _metadata_version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("thinlayer")
+    except PackageNotFoundError:  # running from the sources: the fingerprint tells versions apart
+        return "source"
 
 
 def _fingerprint() -> str:

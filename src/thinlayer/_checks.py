@@ -15,8 +15,8 @@ from fractions import Fraction
 from typing import Any
 
 import mpmath
-import sympy as sp
 
+from ._lazy import lazy_module, loaded_types
 from .errors import (
     ComputationError,
     InputError,
@@ -27,12 +27,13 @@ from .errors import (
     boundary,
 )
 
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+
 __all__ = ["ComputationError", "InputError", "InputTypeError", "NotDerivedError", "ThinlayerError", "WorkLimitError",
            "array_size", "boundary", "check_array_size", "check_bounded", "check_choice", "check_int", "check_list",
            "check_order", "parse_nu",
            "positive"]
 
-HALF = sp.Rational(1, 2)
 
 
 def check_order(n: Any, name: str) -> int:
@@ -106,7 +107,7 @@ def positive(value: Any, name: str) -> float:
     >>> positive(2, "H")
     2.0
     """
-    if isinstance(value, bool) or not isinstance(value, (numbers.Real, sp.Number, mpmath.mpf)):
+    if isinstance(value, bool) or not isinstance(value, (numbers.Real, mpmath.mpf, *loaded_types("sympy", "Number"))):
         raise InputTypeError(f"{name} must be a positive real number, got {value!r} ({type(value).__name__})")
     v = float(value)
     if not (math.isfinite(v) and v > 0):
@@ -156,6 +157,20 @@ _NU_TEXT = re.compile(r"(?P<sign>[+-]?)(?P<int>\d*)(?:\.(?P<frac>\d*))?(?:[eE](?
 MAX_NU_DIGITS = 6
 
 
+def as_fraction(x: Any) -> Fraction:
+    """A rational, a float or an mpmath float as the exact Fraction it is (no sympy needed for a float)."""
+    if isinstance(x, mpmath.mpf):
+        sign, man, exp, _ = x._mpf_
+        return Fraction(-int(man) if sign else int(man)) * Fraction(2) ** int(exp)
+    if isinstance(x, float):
+        return Fraction(*x.as_integer_ratio())
+    if isinstance(x, (int, Fraction)):
+        return Fraction(x)
+    if getattr(x, "is_Rational", False):  # a sympy Rational or Integer
+        return Fraction(int(x.p), int(x.q))
+    return Fraction(*float(x).as_integer_ratio())  # a sympy Float (17 digits of a float)
+
+
 def _exact_nu(text: str, example: str) -> sp.Rational:
     """The exact rational of a Poisson ratio written as text, its size checked before any big number is built.
 
@@ -189,7 +204,7 @@ def parse_nu(
     *,
     floats: str = "mpf",
     lower: Any = -1,
-    upper: Any = HALF,
+    upper: Any = Fraction(1, 2),
     upper_closed: bool = False,
     symbols: bool = True,
     example: str = "'3/10', 0.3",
@@ -225,35 +240,37 @@ def parse_nu(
     >>> parse_nu("3/10"), parse_nu(0.5, floats="Float", upper_closed=True)
     (3/10, 1/2)
     """
-    if isinstance(nu, sp.Symbol):
+    # the sympy classes, if sympy is loaded: a sympy object cannot exist otherwise (a float nu needs no sympy)
+    Symbol, Basic, Rational, Float = loaded_types("sympy", "Symbol", "Basic", "Rational", "Float") or ((),) * 4
+    if isinstance(nu, Symbol):
         if not symbols:
             raise InputTypeError(f"a numeric Poisson ratio is needed here (e.g. nu={example.split(',')[-1].strip()}), "
                             f"got the symbol {nu}")
         return nu
     if isinstance(nu, bool):
         raise InputTypeError("nu must be a number, got a bool")
-    if isinstance(nu, sp.Basic) and not nu.is_number:
+    if isinstance(nu, Basic) and not nu.is_number:
         raise InputTypeError(f"nu must be None, a Symbol or a number, got the expression {nu!r}")
-    if isinstance(nu, (sp.Rational, numbers.Integral, Fraction)):
+    if isinstance(nu, (Rational, numbers.Integral, Fraction)):
         val: Any = sp.Rational(nu)
     elif isinstance(nu, str):
         val = _exact_nu(nu, example)
-    elif isinstance(nu, (float, sp.Float, mpmath.mpf, numbers.Real)):
-        f = mpmath.mpf(str(nu)) if isinstance(nu, sp.Float) else mpmath.mpf(nu)
+    elif isinstance(nu, (float, Float, mpmath.mpf, numbers.Real)):
+        f = mpmath.mpf(str(nu)) if isinstance(nu, Float) else mpmath.mpf(nu)
         if not mpmath.isfinite(f):
             raise InputError(f"nu must be finite, got {nu!r}")
         if floats == "exact":
             val = _exact_binary(f)
         elif floats == "Float":
-            val = HALF if f == 0.5 else sp.Float(float(f), 17)
+            val = sp.Rational(1, 2) if f == 0.5 else sp.Float(float(f), 17)
         elif floats == "float":
             val = float(f)
         else:
             val = f
     else:
         raise InputTypeError(f"nu must be a Symbol, a rational or a float, got {type(nu).__name__}")
-    lo, hi = sp.Rational(lower), sp.Rational(upper)
-    v = sp.Rational(val) if isinstance(val, sp.Rational) else val
+    lo, hi = as_fraction(lower), as_fraction(upper)  # exact, like the value: a binary float is an exact rational
+    v = as_fraction(val)
     inside = (lo < v <= hi) if upper_closed else (lo < v < hi)
     if not inside:
         rel = "<=" if upper_closed else "<"

@@ -52,10 +52,11 @@ from dataclasses import dataclass
 from typing import Any
 
 import mpmath
-import sympy as sp
 
+from ._lazy import lazy_module, loaded_types
 from .errors import InputError
-from .normal import normal_text, to_ascii
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 __all__ = ["RichDisplay", "Table", "display_math", "fmt", "latex_escape", "table"]
 
@@ -86,9 +87,12 @@ def fmt(x: Any, digits: int = 12) -> str:
         return mpmath.nstr(x, digits)
     if isinstance(x, float):
         return f"{x:.{digits}g}"
-    if isinstance(x, sp.Float):
+    Float, Basic = loaded_types("sympy", "Float", "Basic") or ((), ())  # no sympy object without sympy
+    if isinstance(x, Float):
         return mpmath.nstr(mpmath.mpf(x), digits)
-    if isinstance(x, sp.Basic):
+    if isinstance(x, Basic):
+        from .normal import normal_text
+
         return normal_text(x, digits=digits)
     return str(x)
 
@@ -173,7 +177,11 @@ class RichDisplay:
     def _latex(self, printer: Any = None) -> str:
         """``sympy.latex(result)``: the result's own LaTeX (sympy's printer hook)."""
         tex = self._display_tex()
-        return tex if tex is not None else r"\text{" + latex_escape(to_ascii(str(self))) + "}"
+        if tex is not None:
+            return tex
+        from .normal import to_ascii
+
+        return r"\text{" + latex_escape(to_ascii(str(self))) + "}"
 
     def _display_tex(self) -> str | None:
         """The LaTeX Jupyter shows: ``latex()`` when the class has one, else None (plain text)."""
@@ -190,7 +198,11 @@ class RichDisplay:
         if not callable(lines):
             return repr(self)
         text = "\n".join(lines())
-        return text if _unicode_ok(text) else to_ascii(text)
+        if _unicode_ok(text):
+            return text
+        from .normal import to_ascii
+
+        return to_ascii(text)
 
 
 @dataclass(frozen=True)

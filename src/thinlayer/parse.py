@@ -66,12 +66,14 @@ from fractions import Fraction
 from typing import Any
 
 import mpmath
-import sympy as sp
 
 from . import symbols as S
+from ._lazy import lazy_module
 from .errors import InputError, InputTypeError, WorkLimitError, boundary, boundary_methods
 
-__all__ = ["Cost", "ExpressionError", "MAX_BITS", "MAX_DIGITS", "MAX_EXPONENT", "MAX_FLOAT_DIGITS", "MAX_LENGTH",
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+
+__all__ = ["Cost", "ExpressionError", "MAX_BITS", "MAX_DIGITS", "MAX_EXPONENT", "MAX_FLOAT_DIGITS", "MAX_LENGTH",  # noqa: F822
            "MAX_PARAMETERS", "MAX_TERMS", "MAX_TOTAL_DEGREE", "RADIUS", "as_expr", "check_cost", "expression_cost",
            "parse_expression", "parse_number", "sympy_value"]
 
@@ -103,9 +105,19 @@ MAX_ARGUMENTS = 64
 _PIECEWISE_FUNCTIONS = {"max": sp.Max, "min": sp.Min}
 _ALLOWED_RADIAL = "numbers, the radius r, parameter names, + - * / **, parentheses, sqrt(...) and abs(...)"
 #: the radius of a radial profile Phi(r) read with ``radial=True``
-RADIUS = sp.Symbol("r", nonnegative=True)
+_LAZY_SYMBOLS = {"RADIUS": ("r", {"nonnegative": True})}  # RADIUS: a nonnegative Symbol, made on first use
+
+
+def __getattr__(name: str) -> Any:
+    """``RADIUS`` (the radius ``r`` of a radial profile), a sympy Symbol made on first use (PEP 562)."""
+    if name in _LAZY_SYMBOLS:
+        text, assumptions = _LAZY_SYMBOLS[name]
+        return sp.Symbol(text, **assumptions)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
 #: the calls a radial profile may make, and what they build
-_RADIAL_FUNCTIONS = {"sqrt": sp.sqrt, "abs": sp.Abs}
+_RADIAL_FUNCTIONS = {"sqrt": "sqrt", "abs": "Abs"}  # name -> the sympy function's name
 _TOKEN = re.compile(r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)|(?P<name>[A-Za-z][A-Za-z0-9_]*)"
                     r"|(?P<op>\*\*|[-+*/(),]))")
 
@@ -418,7 +430,7 @@ class _Parser:
                 inner = self.expr()
                 self.depth -= 1
                 self.take(")")
-                return _RADIAL_FUNCTIONS[value](inner)
+                return getattr(sp, _RADIAL_FUNCTIONS[value])(inner)
             if nxt is not None and nxt[1] == "(" and self.radial:
                 raise ExpressionError(f"{value}(...) at position {pos} is a call: a radial profile may call only "
                                       f"sqrt(...) and abs(...) ({_ALLOWED_RADIAL})")
@@ -507,7 +519,7 @@ def parse_expression(text: str, *, coordinates: bool = True, names: Iterable[str
         raise ExpressionError(f"cannot read the {what}: it has {len(text)} characters, more than {MAX_LENGTH}")
     coords = {"x_1": S.x1, "x_2": S.x2, "x1": S.x1, "x2": S.x2} if coordinates and not radial else {}
     if radial:
-        coords = {"r": RADIUS}
+        coords = {"r": __getattr__("RADIUS")}
     allowed = None if names is None else frozenset(names)
     try:
         parser = _Parser(text, coords, allowed, radial)

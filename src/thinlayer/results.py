@@ -15,10 +15,11 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Protocol, runtime_checkable
 
-import sympy as sp
-
+from ._lazy import lazy_function, lazy_module
 from .errors import InputError, InputTypeError, boundary
-from .normal import normal_latex
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
 
 BACKENDS = ("numpy", "mpmath", "math", "sympy")
 

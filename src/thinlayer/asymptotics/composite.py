@@ -35,16 +35,18 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
 from .. import symbols as S
 from .._checks import InputError, NotDerivedError, parse_nu, positive
+from .._lazy import lazy_function, lazy_module
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..normal import normal_latex
 from ..punch import Punch
 from .inner import InnerPressure, inner_pressure
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
 
 __all__ = ["CompositePressure", "composite_pressure", "BOUNDARY_LAYERS"]
 

@@ -81,38 +81,51 @@ from functools import lru_cache
 from typing import Any
 
 import mpmath
-import sympy as sp
 
 from .. import symbols as S
 from .._cache import cached
 from .._checks import InputError, InputTypeError, check_bounded, parse_nu
 from .._checks import positive as _positive
+from .._lazy import lazy_function, lazy_module
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..normal import join_signed, normal_latex
 from ..parse import parse_number
 from ..punch import Punch, PunchError, is_polynomial_tip
 from ..results import checked_lambdify, latex_equation
 from .inner import inner_pressure
 
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+join_signed = lazy_function("thinlayer.normal", "join_signed")
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
+
 __all__ = [
     "ForceLaw",
     "ForceValues",
-    "P",
-    "h_star",
+    "P",  # noqa: F822 - made on first use (module __getattr__)
+    "h_star",  # noqa: F822 - made on first use (module __getattr__)
     "boundary_layer_force_defect",
     "error_estimate",
     "error_estimate_arrays",
     "force_law",
 ]
 
-#: total force on the punch (1.8)
-P = sp.Symbol("P", positive=True)
-#: the edge shift (3.25) as a symbol in the contact-area law (its value is numeric, per nu)
-h_star = sp.Symbol("h^*", real=True)
+@lru_cache(maxsize=1)
+def _symbols() -> dict[str, Any]:
+    """The symbols of the laws, made on first use (importing this module needs no sympy)."""
+    V, J, A0, L0 = sp.symbols(r"V J |\omega_0| |\Gamma_0|", positive=True)
+    return {"P": sp.Symbol("P", positive=True), "h_star": sp.Symbol("h^*", real=True), "V": V, "J": J,
+            "A0": A0, "L0": L0}
 
-_V, _J, _A0, _L0 = sp.symbols(r"V J |\omega_0| |\Gamma_0|", positive=True)
+
+def __getattr__(name: str) -> Any:
+    """``P`` (the total force (1.8)) and ``h_star`` (the edge shift (3.25) as a symbol in the contact-area law; its
+    value is numeric, per nu): sympy symbols made on first use (PEP 562).
+    """
+    if name in ("P", "h_star"):
+        return _symbols()[name]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 #: order of accuracy of each result, as (exponent of H/a, statement)
 ORDERS = {
@@ -376,13 +389,13 @@ class ForceLaw(RichDisplay):
     @property
     def contact_area(self) -> sp.Expr | None:
         """``|omega_0| - h^* H |Gamma_0|`` in the symbol ``h^*`` (None without a closed form)."""
-        return None if self.area0 is None else self.area0 - h_star * S.H * self.perimeter
+        return None if self.area0 is None else self.area0 - _symbols()["h_star"] * S.H * self.perimeter
 
     @property
     def general(self) -> sp.Expr:
         """The law in terms of the integrals ``V``, ``J`` (any punch)."""
         th = self.layer.vartheta
-        return th / (self.layer.A * S.H) * _V + self.coefficient * _J
+        return th / (self.layer.A * S.H) * _symbols()["V"] + self.coefficient * _symbols()["J"]
 
     @property
     def arguments(self) -> tuple[sp.Symbol, ...]:
@@ -415,7 +428,7 @@ class ForceLaw(RichDisplay):
         if not self.perimeter.has(sp.elliptic_e):
             outs["contact_area"] = self.contact_area
         free = set().union(*(e.free_symbols for e in outs.values()))
-        constants = self.codegen_constants() if h_star in free else {}
+        constants = self.codegen_constants() if _symbols()["h_star"] in free else {}
         return tuple(a for a in self.arguments if a in free and a not in constants), outs
 
     def codegen_constants(self) -> dict:
@@ -428,20 +441,21 @@ class ForceLaw(RichDisplay):
             return {}
         from .wiener_hopf import edge_shift
 
-        return {h_star: (sp.Float(edge_shift(key, kernel="exact"), 17),
+        return {_symbols()["h_star"]: (sp.Float(edge_shift(key, kernel="exact"), 17),
                          f"edge shift h*({layer_label(self.layer)}), exact Wiener-Hopf solution (3.18), (3.25)")}
 
     def latex(self) -> str:
         th = self.layer.vartheta
-        names = {_V: r"\iint_{\omega_0}(\delta_0 - \Phi)\,d\mathbf{x}",
-                 _J: r"\oint_{\Gamma_0}|\nabla\Phi|\,ds"}
+        sym = _symbols()
+        names = {sym["V"]: r"\iint_{\omega_0}(\delta_0 - \Phi)\,d\mathbf{x}",
+                 sym["J"]: r"\oint_{\Gamma_0}|\nabla\Phi|\,ds"}
         rem_P = r" + O\!\left(P_0 \frac{H^3}{a^3}\right)"
         rem_A = r" + O\!\left(|\omega_0| \frac{H^2}{a^2}\right)"
         lead = normal_latex(sp.factor(th / (self.layer.A * S.H)))
         corr = normal_latex(sp.factor(self.coefficient))
         lines = [
-            latex_equation("P", join_signed([lead + names[_V], corr + names[_J] if self.coefficient != 0 else ""])
-                           + rem_P, "1.8"),
+            latex_equation("P", join_signed([lead + names[sym["V"]],
+                                             corr + names[sym["J"]] if self.coefficient != 0 else ""]) + rem_P, "1.8"),
             latex_equation(r"\int_{-\infty}^{\infty}(\hat Q(v) - \max(v, 0))\,dv",
                            normal_latex(boundary_layer_force_defect()), None),
         ]
@@ -449,9 +463,8 @@ class ForceLaw(RichDisplay):
             rel = sp.factor(sp.cancel(self.P1 / self.P0))
             bracket = r"\left(" + join_signed(["1", normal_latex(rel)]) + r"\right)" if rel != 0 else ""
             lines.append(latex_equation("P", normal_latex(sp.factor(self.P0)) + bracket + rem_P, "1.8"))
-            lines.append(latex_equation(r"|\omega|", join_signed([normal_latex(self.area0),
-                                                                   "- " + normal_latex(h_star * S.H * self.perimeter)])
-                                        + rem_A, "3.25"))
+            shift = "- " + normal_latex(sym["h_star"] * S.H * self.perimeter)
+            lines.append(latex_equation(r"|\omega|", join_signed([normal_latex(self.area0), shift]) + rem_A, "3.25"))
         else:
             lines.append(latex_equation(r"|\omega|", r"|\omega_0| - h^* H |\Gamma_0|" + rem_A, "3.25"))
         return " \\\\\n".join(lines)

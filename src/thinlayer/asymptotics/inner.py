@@ -24,19 +24,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-import sympy as sp
-
 from .. import symbols as S
 from .._checks import InputError, InputTypeError, check_bounded
 from .._checks import check_order as _check_order
+from .._lazy import lazy_function, lazy_module
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.coefficients import order_limit
 from ..layers.kernels import LayerKernel
-from ..normal import normal_latex
 from ..parse import as_expr
 from ..punch import Punch, is_polynomial_tip
 from ..results import checked_lambdify
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
 
 METHODS = ("closed", "recursion")
 
@@ -173,7 +174,7 @@ def _combine(parts: list[tuple[Any, dict[Mono, Any]]]) -> dict[Mono, Any]:
 
 def _gap_dicts(punch: Punch) -> tuple[dict[Mono, Any], dict[Mono, Any]]:
     """``delta_0 - Phi(x)`` and ``delta_0^* - Phi^*(xi)`` (2.25) as coefficient dictionaries."""
-    phi = punch._poly.as_dict()
+    phi = punch.polynomial.as_dict()
     sc = dict(punch.scaling)
     gap = {k: -c for k, c in phi.items()}
     gap[(0, 0)] = S.delta0 + gap.get((0, 0), 0)

@@ -37,18 +37,22 @@ from typing import Any, ClassVar
 
 import mpmath
 import numpy as np
-import sympy as sp
 
 from .. import symbols as S
+from .._cache import cached
 from .._checks import InputError, InputTypeError, NotDerivedError, check_array_size, check_bounded, parse_nu
 from .._checks import positive as _positive
+from .._lazy import lazy_function, lazy_module, loaded_types
 from ..display import RichDisplay
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import LayerKernel
-from ..normal import float_latex, normal_latex
 from ..punch import Punch, PunchError, is_polynomial_tip
 from .composite import BOUNDARY_LAYERS, CompositePressure, composite_pressure
 from .force_law import ORDERS, ForceLaw, ForceValues, error_estimate, error_estimate_arrays, force_law
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+float_latex = lazy_function("thinlayer.normal", "float_latex")
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
 
 __all__ = ["ContactSolution", "ForceArrays", "ValidityError", "compressible_solution", "force_arrays", "numeric_punch",
            "MAX_FORCE_ORDER", "DEFAULT_TOL"]
@@ -140,7 +144,8 @@ class ContactSolution(RichDisplay):
     delta0, H, mu, nu : float
         Indentation, thickness, shear modulus and Poisson ratio.
     law : ForceLaw
-        The symbolic :class:`~thinlayer.asymptotics.force_law.ForceLaw` and ``values`` its numbers here.
+        The symbolic :class:`~thinlayer.asymptotics.force_law.ForceLaw` (derived on first access when the numbers
+        came from the numeric route of a quadric punch) and ``values`` its numbers here.
     edge_shift, edge_shift_alexandrov : float
         h^* (3.25) from the exact kernel and from Alexandrov's approximation.
     terms : int
@@ -163,7 +168,7 @@ class ContactSolution(RichDisplay):
     H: float
     mu: float
     nu: float
-    law: ForceLaw
+    _law: ForceLaw | None
     values: ForceValues
     edge_shift: float
     edge_shift_alexandrov: float
@@ -175,6 +180,11 @@ class ContactSolution(RichDisplay):
     order: int = 1  # 2: values carry P_2 and the H^2 area terms of (SO.9), (SO.10)
 
     # ---- the numbers -------------------------------------------------------------------------
+    @property
+    def law(self) -> ForceLaw:
+        """The symbolic force law (1.8), (3.25) of this layer and punch (derived on first access if need be)."""
+        return self._law if self._law is not None else force_law(self.layer, self.punch)
+
     @property
     def force(self) -> float:
         """Total force ``P`` with its first correction (1.8); remainder ``O(P (H/a)^3)``."""
@@ -453,9 +463,12 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     mm = _positive(mu, "mu")
     tol_v = _check_tol(tol)
     pn = numeric_punch(punch, parameters)
-    law = force_law(layer, pn)
     if (delta0 is None) == (force is None):
         raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
+    fast = _quadric_solution(layer, pn, delta0, force, HH, mm, nu_value, order, terms, boundary_layer, tol_v)
+    if fast is not None:
+        return fast
+    law = force_law(layer, pn)
     if force is not None:
         Pt = _positive(force, "force")
         per_mu = Pt / mm  # the law is linear in mu: solve it per unit mu
@@ -503,6 +516,98 @@ def compressible_solution(layer: LayerKernel, punch: Any, delta0: Any = None, H:
     _check_validity(layer, pn, nu_value, vals, est, tol_v, mm)
     return ContactSolution(layer, pn, d0, HH, mm, nu_value, law, vals, h_ex, h_al, terms, boundary_layer, contour,
                            est, tol_v, order)
+
+
+# ---------------------------------------------------------------------------------------------
+# the numeric route of a quadric punch (issue 28 item 6): the same law from per-nu numbers kept on disk
+# ---------------------------------------------------------------------------------------------
+#: whether :func:`compressible_solution` answers a numeric quadric punch by the numeric route (the tests turn it off
+#: to hold that route against the symbolic one, tests/asymptotics/test_cold_start.py)
+NUMERIC_QUADRIC = True
+_CONSTANTS: dict[tuple, tuple[float, ...]] = {}
+#: the names of :func:`compressible_constants`' numbers, in the order the disk cache keeps them
+CONSTANT_NAMES = ("A", "m1", "c1", "h_exact", "h_alexandrov")
+
+
+def compressible_constants(layer: LayerKernel) -> dict[str, float]:
+    r"""The per-nu numbers of the compressible model, from the disk cache (:mod:`thinlayer._cache`).
+
+    ``A`` (2.4), ``m1`` (2.20), ``c1`` with ``P_1 = vartheta H c_1 J`` (1.8) (``c_1 = (M_1 + D)/A``, ``D = m_1/2``:
+    read off the derived :func:`~thinlayer.asymptotics.force_law.force_law`, not written here), and the edge shifts
+    h^* (3.25), exact (Wiener--Hopf) and Alexandrov's.  On a cache miss the symbolic route derives them (seconds,
+    once per nu and version); a hit needs neither sympy nor scipy.
+
+    Examples
+    --------
+    >>> from thinlayer import BondedLayer
+    >>> k = compressible_constants(BondedLayer("3/10"))
+    >>> round(k["m1"] * 14, 12), round(k["h_exact"], 6)     # m_1 = 1/14 at nu = 3/10
+    (1.0, 0.122071)
+    """
+    key = layer.constants_key
+    if key is None:
+        raise InputError(f"the compressible model's numbers need a numeric layer on a rigid base, got {layer!r}")
+    if key not in _CONSTANTS:
+        _CONSTANTS[key] = tuple(cached("compressible_constants", key, lambda: _derived_constants(layer)))
+    return dict(zip(CONSTANT_NAMES, _CONSTANTS[key]))
+
+
+def _derived_constants(layer: LayerKernel) -> tuple[float, ...]:
+    """The numbers of :func:`compressible_constants`, derived by the symbolic route."""
+    law = force_law(layer, Punch.paraboloid(1))
+    c1 = sp.cancel(law.coefficient / (layer.vartheta * S.H))  # (M_1 + D)/A: a number (nu enters vartheta only)
+    if not c1.is_number:
+        raise ArithmeticError(f"the first correction of (1.8) is not vartheta H times a number: {law.coefficient}")
+    h_ex, h_al = _edge_shifts(layer.edge_shift_key)
+    return float(layer.A), float(layer.m(1)), float(c1), h_ex, h_al
+
+
+#: the numeric route keeps to numbers far from the ends of the double range; the symbolic route (mpmath at 20
+#: digits) answers, and words its refusals, beyond
+_SAFE = (1e-280, 1e280)
+#: the curvatures, depth, thickness and modulus the numeric route takes (their products stay inside _SAFE)
+_MODERATE = (1e-60, 1e60)
+
+
+def _quadric_solution(layer: LayerKernel, punch: Punch, delta0: Any, force: Any, H: float, mu: float, nu: float,
+                      order: int, terms: int, boundary_layer: str, tol: float) -> ContactSolution | None:
+    """:func:`compressible_solution` of a numeric quadric ``Phi = x.Kx/2`` from :func:`compressible_constants`
+    and the level set of the punch (:meth:`~thinlayer.punch.Punch.level_set`: ``|omega_0| = 2 pi delta0/sqrt(det K)``,
+    ``V = pi delta0^2/sqrt(det K)``, ``J = tr K |omega_0|``, ``|Gamma_0|`` by ``E(k)``), in floats; None where
+    the symbolic route answers (other punches, order 2, numbers near the ends of the double range).
+    """
+    if not NUMERIC_QUADRIC or order not in (0, 1) or layer.constants_key is None:
+        return None
+    q = punch.quadric
+    if q is None or not all(_MODERATE[0] < v < _MODERATE[1] for v in (q[0], q[1], H, mu)):
+        return None
+    k = compressible_constants(layer)
+    th = 1.0 / (1.0 - nu)  # vartheta per unit mu (2.1)
+    root_det = math.sqrt(q[0] * q[1])
+    if force is not None:  # P0 + P1 = a2 d^2 + a1 d = force/mu, solved as the symbolic route does
+        per_mu = _positive(force, "force") / mu
+        a2 = th / (k["A"] * H) * math.pi / root_det
+        a1 = th * H * k["c1"] * (q[0] + q[1]) * 2 * math.pi / root_det if order else 0.0
+        a0 = -per_mu
+        if not all(_SAFE[0] < abs(v) < _SAFE[1] for v in (a2, a0)) or not math.isfinite(a1):
+            return None
+        disc = a1 * a1 - 4 * a2 * a0
+        d0 = (-a1 + math.sqrt(disc)) / (2 * a2) if a1 < 0 else (-2 * a0) / (a1 + math.sqrt(disc))
+    else:
+        d0 = _positive(delta0, "delta0")
+    if not _MODERATE[0] < d0 < _MODERATE[1]:
+        return None
+    ls = punch.level_set(d0)
+    vals = ForceValues(d0, H, th / (k["A"] * H) * ls.volume, th * H * k["c1"] * ls.flux, ls.area, ls.perimeter,
+                       k["h_exact"], ls.volume, ls.flux)
+    numbers = (vals.P0, vals.area0, vals.perimeter, vals.V, vals.J, vals.P0 * mu, vals.half_width, H / vals.half_width)
+    if not all(_SAFE[0] < abs(v) < _SAFE[1] for v in numbers) or not math.isfinite(vals.P1 * mu):
+        return None
+    est = error_estimate(vals, order=order)
+    vals = _scaled(vals, mu, order)
+    _check_validity(layer, punch, nu, vals, est, tol, mu, k["m1"])
+    return ContactSolution(layer, punch, d0, H, mu, nu, None, vals, k["h_exact"], k["h_alexandrov"], terms,
+                           boundary_layer, None, est, tol, order)
 
 
 def _second_order_indentation(layer, punch, per_mu, H, nu, guess):
@@ -623,7 +728,8 @@ def force_arrays(layer: LayerKernel, punch: Any, delta0: Any, H: Any, mu: Any = 
 
 
 def _check_tol(tol: Any) -> float:
-    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not float(tol) > 0:
+    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, *loaded_types("sympy", "Number"))) \
+            or not float(tol) > 0:
         raise InputError(f"tol must be a positive number (the largest accepted relative error estimate, "
                          f"e.g. 0.05; math.inf accepts any), got {tol!r}")
     return float(tol)
@@ -643,16 +749,21 @@ def _reference_model(punch: Punch) -> str:
     return "the direct numerical solver thinlayer.numerics.solve_2d"
 
 
-def _validity_model(layer: LayerKernel, punch: Punch, vals: ForceValues) -> str:
-    """The model that would hold: the direct solver, and the two-term model where m_1 (nu -> 1/2) dominates."""
+def _validity_model(layer: LayerKernel, punch: Punch, vals: ForceValues, m1: float | None = None) -> str:
+    """The model that would hold: the direct solver, and the two-term model where m_1 (nu -> 1/2) dominates
+    (``m1``: the layer's m_1 if known, else derived).
+    """
     model = _reference_model(punch)
     x = vals.H_over_a
     e1 = abs(vals.P1 / vals.P0) if vals.P0 else 0.0
-    m1 = float(layer.m(1)) if layer.has_two_term_model else 0.0
+    if not layer.has_two_term_model:
+        m1 = 0.0
+    elif m1 is None:
+        m1 = float(layer.m(1))
     if m1 > 0 and e1 > (1.0 + vals.edge_shift**2) * x * x:
         lam2 = 1.0 / (m1 * x * x) if x > 0 else math.inf
         where = ("thinlayer.asymptotics.incompressible.two_term_sphere" if punch.axisymmetric and punch.is_numeric
-                 and punch.polynomial.total_degree() == 2
+                 and punch.degree == 2
                  else "thinlayer.asymptotics.incompressible (regime(), solve_obstacle_grid)")
         model += (f", or for nu near 1/2 the two-term/incompressible model {where} "
                   f"(lambda^2 = (a/H)^2/m1 = {lam2:.3g})")
@@ -678,7 +789,7 @@ def _check_overflow(unit: ForceValues, mu: float, estimate: float = math.nan) ->
 
 
 def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValues, est: dict, tol: float,
-                    mu: float) -> None:
+                    mu: float, m1: float | None = None) -> None:
     """Raise :class:`ValidityError` for a non-finite or unphysical result or an estimate above ``tol``."""
     x = vals.H_over_a
     where = f"nu = {nu:.4g}, H/a = {x:.3g}"
@@ -691,7 +802,7 @@ def _check_validity(layer: LayerKernel, punch: Punch, nu: float, vals: ForceValu
             raise ValidityError(f"compressible: the {name.replace('_', ' ')} is not finite ({q}) at {where}; "
                                 f"use {_reference_model(punch)} or other units",
                                 name, est.get(name, math.inf), tol, _reference_model(punch))
-    model = _validity_model(layer, punch, vals)
+    model = _validity_model(layer, punch, vals, m1)
     for key in ("force", "contact_area"):
         e = est[key]
         if not e <= tol:

@@ -25,11 +25,19 @@ from typing import Any
 import numpy as np
 
 from .._checks import InputError, InputTypeError, array_size, check_bounded, check_choice, parse_nu, positive
-from ..asymptotics.flat_punch import thick_flat_punch, thin_flat_punch
+from .._lazy import lazy_function, lazy_module
 from ..display import RichDisplay
 from ..errors import boundary
 from ..layers.kernels import LayerKernel
-from ..numerics.flat_punch import MAX_A_OVER_H, check_numeric_layer, flat_punch_kappa, solve_flat_punch
+
+# the model and solver modules load sympy and scipy: imported on first use, so that importing the model registry
+# (thinlayer.contact.models) stays cheap for a numeric solve() of a smooth punch (issue 28 item 6)
+thick_flat_punch = lazy_function("thinlayer.asymptotics.flat_punch", "thick_flat_punch")
+thin_flat_punch = lazy_function("thinlayer.asymptotics.flat_punch", "thin_flat_punch")
+check_numeric_layer = lazy_function("thinlayer.numerics.flat_punch", "check_numeric_layer")
+flat_punch_kappa = lazy_function("thinlayer.numerics.flat_punch", "flat_punch_kappa")
+solve_flat_punch = lazy_function("thinlayer.numerics.flat_punch", "solve_flat_punch")
+numerics_flat_punch = lazy_module("thinlayer.numerics.flat_punch")
 
 __all__ = ["FLAT_PUNCH_MODELS", "FlatPunchResult", "flat_punch_contact", "flat_punch_fields", "flat_punch_stiffness",
            "stiffness_table"]
@@ -97,9 +105,10 @@ def _thick(layer: LayerKernel, x: np.ndarray, max_error: float) -> tuple[np.ndar
 
 
 def _exact(layer: LayerKernel, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    if np.any(x > MAX_A_OVER_H):
+    if np.any(x > numerics_flat_punch.MAX_A_OVER_H):
         i = int(np.argmax(x))
-        raise InputError(f"the exact model is limited to a/H <= {MAX_A_OVER_H:g} (0.12 s at 200), got a/H = "
+        raise InputError(f"the exact model is limited to a/H <= {numerics_flat_punch.MAX_A_OVER_H:g} (0.12 s at 200), "
+                         f"got a/H = "
                          f"{x.flat[i]:.6g}: use model='thin' (error below 5e-5 there) or 'auto'")
     res = [flat_punch_kappa(layer, float(v)) for v in x.ravel()]
     return (np.array([r.kappa for r in res]).reshape(x.shape),

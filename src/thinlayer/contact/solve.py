@@ -38,9 +38,8 @@ from __future__ import annotations
 import numbers
 from typing import Any
 
-import sympy as sp
-
 from .._checks import InputError, InputTypeError, check_choice, parse_nu, positive
+from .._lazy import loaded_types
 from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import boundary
 from ..layers.kernels import LayerKernel
@@ -174,7 +173,8 @@ def _check_model_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
 
 
 def _tol(tol: Any) -> float:
-    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, sp.Number)) or not float(tol) > 0:
+    if isinstance(tol, bool) or not isinstance(tol, (numbers.Real, *loaded_types("sympy", "Number"))) \
+            or not float(tol) > 0:
         raise InputError(f"tol must be a positive number (the largest accepted relative error estimate, "
                          f"e.g. 0.05; math.inf accepts any), got {tol!r}")
     return float(tol)

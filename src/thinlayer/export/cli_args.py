@@ -62,9 +62,9 @@ def _kind_note(kind: str, params: list[str] | None) -> str:
     """``--kind NAME [--param K=V ...]`` in the words of ``--tip``: ``"--kind paraboloid is deprecated; use --tip
     paraboloid:R=10"`` (a ``--param`` name that is an alias of the kind's key, ``R_1``, is written as the key).
     """
-    from ..punch import TIPS
+    from ..punch import tip_kind
 
-    row = TIPS.get(kind)
+    row = tip_kind(kind)
     keys = {k: p.name for p in (row.parameters if row else ()) for k in (p.name, *p.aliases)}
     items = []
     for it in params or []:
@@ -81,9 +81,9 @@ def tip_needs_values(tip, spec: str) -> None:
     """
     if not tip.parameters:
         return
-    from ..punch import TIPS
+    from ..punch import tip_kind
 
-    row = TIPS.get(tip.kind)
+    row = tip_kind(tip.kind)
     keys = {a: p.name for p in (row.parameters if row else ()) for a in (p.name, *p.aliases)}
     missing = [keys.get(str(s), str(s)) for s in tip.parameters]
     fix = spec.strip() + ("," if ":" in spec else ":") + ",".join(f"{k}=VALUE" for k in missing)
@@ -132,8 +132,32 @@ def punch_from_args(args, allow_flat: bool = False):
         return FlatPunch(flat_a), True
     if args.kind is not None:
         setattr(args, NOTE, _kind_note(args.kind, args.param))
+        numeric = _numeric_kind(args.kind, args.param) if allow_flat else None
+        if numeric is not None:  # solve: the punch with its numbers, no symbolic radii (issue 28 item 6)
+            return numeric, False
     punch = getattr(Punch, args.kind)() if args.kind is not None else Punch(args.punch)
     return (punch, False) if allow_flat else punch
+
+
+def _numeric_kind(kind: str, items: list[str] | None):
+    """``Punch.<kind>(**numbers)`` when ``--param`` gives every radius of a catalogue kind as a plain number, else
+    None (the symbolic punch and ``parameters=`` then, as before).
+    """
+    from ..punch import Punch, tip_kind
+
+    row = tip_kind(kind)
+    if row is None or kind not in ("paraboloid", "elliptic_paraboloid"):
+        return None
+    try:
+        given = punch_params(items)
+    except ValueError:
+        return None
+    names = {k: p.name for p in row.parameters for k in (p.name, *p.aliases)}
+    values = {names.get(k): v for k, v in given.items()}
+    if None in values or len(values) != len(given) or set(values) != {p.name for p in row.parameters}:
+        return None
+    punch = getattr(Punch, kind)(**values)
+    return punch if punch.formula_text is not None else None
 
 
 def punch_params(items: list[str] | None) -> dict[str, float]:

@@ -232,8 +232,16 @@ def expr_missing(punch: Any) -> bool:
     return getattr(punch, "expr", None) is None
 
 
+#: the names of the catalogue radii as :func:`thinlayer.normal.symbol_text` prints them (a test holds them equal)
+RADIUS_TEXT = {"R1": "R₁", "R_1": "R₁", "R2": "R₂", "R_2": "R₂"}
+
+
 def _punch_text(punch: Any, params: dict[str, float] | None = None) -> str:
     """The punch once: its name and Φ in Unicode maths with its parameters' values, or its own description."""
+    formula = getattr(punch, "formula_text", None)
+    if formula is not None:  # a catalogue punch with numbers: its symbolic Phi, printed without sympy
+        values = "".join(f", {RADIUS_TEXT.get(k, k)} = {_g(v)}" for k, v in (params or {}).items())
+        return f"{punch.name}, Φ = {formula}{values}"
     from ..normal import normal_text, symbol_text
 
     desc = getattr(punch, "description", None)
@@ -463,6 +471,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
                        "has its own laws: leave out --order")
         opts["order"] = 2
     params = punch_params(args.param)
+    # a catalogue --kind whose --param gave every radius is built with its numbers (cli_args.punch_from_args)
+    kind_params = {} if getattr(punch, "formula_text", None) is not None else params
     given = "delta0" if args.delta0 is not None else "force"
     answers = []
     for k, value in enumerate(values):
@@ -471,7 +481,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
             kw[swept] = value
         try:
             ans = solve(layer, punch, delta0=kw["delta0"], force=kw["force"], H=kw["H"], mu=args.mu, E=args.E,
-                        model=args.model, tol=args.tol, parameters=params, **opts)
+                        model=args.model, tol=args.tol, parameters=kind_params, **opts)
             for name in ("force", "contact_area", "delta0"):
                 val = getattr(ans, name)
                 if not (math.isfinite(val) and val > 0):

@@ -27,6 +27,7 @@ from it, a higher one extends it (the recurrences are incremental), so asking fo
 """
 from __future__ import annotations
 
+import importlib
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Sequence
@@ -36,13 +37,11 @@ from math import gcd, lcm
 from typing import TYPE_CHECKING, Any
 
 import mpmath
-import sympy as sp
-from sympy import QQ
-from sympy.polys.rings import ring
 
 from .. import symbols as S
 from .._checks import InputError, check_bounded
 from .._checks import check_order as _check_order
+from .._lazy import lazy_function, lazy_module
 from .._series import (
     bonded_series_parts,
     quotient_field,
@@ -51,10 +50,13 @@ from .._series import (
 )
 from ..display import RichDisplay, fmt
 from ..errors import boundary
-from ..normal import join_signed, normal_latex
 from ..parse import as_expr
 from ..results import checked_lambdify
 from . import _flint
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+join_signed = lazy_function("thinlayer.normal", "join_signed")
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
 
 try:  # GMP integers make the Kronecker products several times faster; plain ints otherwise
     from gmpy2 import mpz as _big
@@ -72,7 +74,7 @@ class _PolyDomain:
 
     def __init__(self, layer: LayerKernel):
         sym = layer.parameter
-        self.ring, self.gen = ring([sym], QQ)
+        self.ring, self.gen = importlib.import_module("sympy.polys.rings").ring([sym], sp.QQ)
         self.one, self.zero = self.ring.one, self.ring.zero
         if sym == S.kappa or not hasattr(layer, "kappa"):
             self.kappa = self.gen
@@ -80,20 +82,20 @@ class _PolyDomain:
             self.kappa = 3 - 4 * self.gen
 
     def const(self, p: int, q: int) -> Any:
-        return self.ring(QQ(p, q))
+        return self.ring(sp.QQ(p, q))
 
 
 class _RationalDomain:
     kind = "rational"
-    one, zero = QQ(1), QQ(0)
 
     def __init__(self, layer: LayerKernel):
+        self.one, self.zero = sp.QQ(1), sp.QQ(0)
         k = getattr(layer, "kappa", None)
-        self.kappa = QQ(int(k.p), int(k.q)) if k is not None else None
+        self.kappa = sp.QQ(int(k.p), int(k.q)) if k is not None else None
 
     @staticmethod
     def const(p: int, q: int) -> Any:
-        return QQ(p, q)
+        return sp.QQ(p, q)
 
 
 class _MpmathDomain:
@@ -223,12 +225,14 @@ class KernelCoefficients(RichDisplay):
     def M_expr(self, k: int) -> sp.Expr:
         return _to_expr(self.M[k], self.layer)
 
-    def series(self, s: sp.Expr = S.s) -> sp.Expr:
+    def series(self, s: sp.Expr | None = None) -> sp.Expr:
         """The truncated series (2.20): ``A (1 + m_1 s^2 + ... + m_order s^(2 order))``."""
+        s = S.s if s is None else s
         return self.A_expr * sp.Add(*[self.m_expr(k) * s ** (2 * k) for k in range(self.order + 1)])
 
-    def reciprocal_series(self, s: sp.Expr = S.s) -> sp.Expr:
+    def reciprocal_series(self, s: sp.Expr | None = None) -> sp.Expr:
         """The truncated ``s/L(s) = A^{-1}(1 + M_1 s^2 + ...)`` of section 5."""
+        s = S.s if s is None else s
         return sp.Add(*[self.M_expr(k) * s ** (2 * k) for k in range(self.order + 1)]) / self.A_expr
 
     def latex(self) -> str:
@@ -822,8 +826,9 @@ class IncompressibleCoefficients:
 
     equation = "I.1"
 
-    def series(self, s: sp.Expr = S.s) -> sp.Expr:
+    def series(self, s: sp.Expr | None = None) -> sp.Expr:
         """The truncated series ``sum_{n <= order} c_n s^{2n}``."""
+        s = S.s if s is None else s
         return sp.Add(*[cn * s ** (2 * n) for n, cn in enumerate(self.c)])
 
     def latex(self) -> str:
@@ -850,6 +855,6 @@ def incompressible_coefficients(order: int) -> IncompressibleCoefficients:
     """
     limit, reason = ORDER_LIMITS["incompressible"]
     order = check_bounded(_check_order(order, "order"), "order", limit, reason)
-    num, den = bonded_series_parts(QQ(1), order, QQ)
+    num, den = bonded_series_parts(sp.QQ(1), order, sp.QQ)
     q = quotient_field(num, den, order)
     return IncompressibleCoefficients(order, tuple(sp.Rational(int(x.numerator), int(x.denominator)) for x in q))

@@ -19,25 +19,27 @@ from __future__ import annotations
 
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Any, ClassVar
 
 import mpmath
 import numpy as np
-import sympy as sp
 
 from .. import symbols as S
-from .._checks import InputError, check_bounded, parse_nu
+from .._checks import InputError, as_fraction, check_bounded, parse_nu
 from .._checks import check_order as _check_order
+from .._lazy import lazy_function, lazy_module, loaded_types
 from .._series import bonded_series_parts, taylor_cosh, taylor_sinh
 from ..display import RichDisplay, fmt, latex_escape
 from ..errors import boundary_methods
-from ..normal import normal_latex
 from ..parse import sympy_value
 from . import numeric as kernel_numeric
 from .coefficients import incompressible_coefficients, kernel_coefficients
 from .moments import kernel_moment
 
-HALF = sp.Rational(1, 2)
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
+
 #: largest mpmath precision (decimal digits) of a float-nu layer
 MAX_DPS = 1000
 
@@ -54,7 +56,7 @@ def _as_nu(nu: Any) -> sp.Basic | mpmath.mpf:
         return parse_nu(nu)
     except ValueError:
         try:  # the one value the range check refuses that has a layer of its own
-            half = parse_nu(nu, upper_closed=True) == HALF
+            half = parse_nu(nu, upper_closed=True) == sp.Rational(1, 2)
         except ValueError:
             half = False
         if not half:
@@ -69,9 +71,19 @@ def _as_nu(nu: Any) -> sp.Basic | mpmath.mpf:
 def _is_half(nu: Any) -> bool:
     """Whether ``nu`` is a valid spelling of exactly 1/2 (0.5, "1/2", Rational(1, 2)); False for anything else."""
     try:
-        return parse_nu(nu, floats="Float", upper_closed=True, symbols=False) == HALF
+        return as_fraction(parse_nu(nu, floats="float", upper_closed=True, symbols=False)) == Fraction(1, 2)
     except (TypeError, ValueError):
         return False
+
+
+class _LazySymbol:
+    """A class attribute that is a sympy Symbol, made on first access (importing the module needs no sympy)."""
+
+    def __init__(self, name: str, **assumptions: Any):
+        self.name, self.assumptions = name, assumptions
+
+    def __get__(self, obj: Any, owner: Any = None) -> Any:
+        return sp.Symbol(self.name, **self.assumptions)
 
 
 @boundary_methods
@@ -83,7 +95,7 @@ class LayerKernel(RichDisplay, ABC):
 
     # ---- symbolic -------------------------------------------------------------------
     @abstractmethod
-    def L(self, u: sp.Expr = S.u) -> sp.Expr:
+    def L(self, u: sp.Expr | None = None) -> sp.Expr:
         """The kernel L(u) as a sympy expression."""
 
     @abstractmethod
@@ -199,6 +211,13 @@ class LayerKernel(RichDisplay, ABC):
         """What the edge shift h* (3.18), (3.25) of this layer depends on: its exact nu, or the base name."""
         raise InputError(f"the edge shift needs a numeric layer with a finite thickness, got {self!r}")
 
+    @property
+    def constants_key(self) -> tuple | None:
+        """A key of the layer's per-nu numbers in the disk cache (:mod:`thinlayer._cache`): plain strings and ints,
+        made without sympy (a float nu by its exact binary value); None when the layer has no such numbers.
+        """
+        return None
+
     def taylor_coefficients(self, order: int) -> tuple:
         """``c_n`` of ``L(s)/s = sum_n c_n s^{2n}`` (n <= order): ``c_n = A m_n`` (2.20), or (I.1) at nu = 1/2.
 
@@ -241,9 +260,9 @@ class LayerKernel(RichDisplay, ABC):
         """Kernel moment mu_{a1 a2} (2.15), derived form of (2.19)/(2.21)."""
         return kernel_moment(self, a1, a2)
 
-    def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
+    def small_u(self, order: int, u: sp.Expr | None = None) -> sp.Expr:
         """Maclaurin polynomial of L(u) through u^(2*order+1): ``A u (1 + m_1 u^2 + ...)`` (2.4), (2.20)."""
-        u = sympy_value(u, "u")
+        u = S.u if u is None else sympy_value(u, "u")
         c = self.coefficients(order)
         return sp.Add(*[c.A_expr * c.m_expr(k) * u ** (2 * k + 1) for k in range(order + 1)])
 
@@ -309,12 +328,13 @@ class BondedLayer(LayerKernel):
         object.__setattr__(self, "dps", dps)
         object.__setattr__(self, "name", "bonded")
         object.__setattr__(self, "equation", "2.3")
-        kind = "symbolic" if isinstance(val, sp.Symbol) else "float" if isinstance(val, mpmath.mpf) else "exact"
+        symbol = loaded_types("sympy", "Symbol")  # a float nu never needs sympy
+        kind = "symbolic" if isinstance(val, symbol) else "float" if isinstance(val, mpmath.mpf) else "exact"
         object.__setattr__(self, "kind", kind)
 
     @property
     def parameter(self) -> sp.Symbol | None:
-        if isinstance(self.nu, sp.Symbol):
+        if isinstance(self.nu, loaded_types("sympy", "Symbol")):
             return S.kappa if self.parameter_name == "kappa" else self.nu
         return None
 
@@ -367,22 +387,34 @@ class BondedLayer(LayerKernel):
                              "(give BondedLayer(0.3), BondedLayer('3/10') or a number)")
         return parse_nu(self.nu, floats="exact")
 
+    @property
+    def constants_key(self) -> tuple | None:
+        """``("bonded", kind, nu, dps)``: a float nu by its exact binary value (mantissa, exponent), an exact one as
+        ``p/q``; None for a symbolic layer.
+        """
+        if self.kind == "float":
+            sign, man, exp, _ = self.nu._mpf_  # the exact binary value, signed
+            return ("bonded", "float", -int(man) if sign else int(man), int(exp), self.dps)
+        if self.kind == "exact":
+            return ("bonded", "exact", f"{int(self.nu.p)}/{int(self.nu.q)}", self.dps)
+        return None
+
     def _kappa_expr(self) -> sp.Expr:
         k = self.kappa
         return sp.Float(k, self.dps) if isinstance(k, mpmath.mpf) else k
 
-    def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        u = sympy_value(u, "u")
+    def L(self, u: sp.Expr | None = None) -> sp.Expr:
+        u = S.u if u is None else sympy_value(u, "u")
         k = self._kappa_expr()
         return (2 * k * sp.sinh(2 * u) - 4 * u) / (2 * k * sp.cosh(2 * u) + 1 + k**2 + 4 * u**2)
 
-    def large_u(self, u: sp.Expr = S.u) -> sp.Expr:
+    def large_u(self, u: sp.Expr | None = None) -> sp.Expr:
         """Leading behaviour of ``L(u) - 1`` as u -> oo (2.4): ``-(4u^2 + 4u + 1 + kappa^2) e^{-2u}/kappa``.
 
         Derivation: ``L - 1 = -(2 kappa e^{-2u} + 1 + kappa^2 + 4u + 4u^2)/(kappa e^{2u} + ...)``,
         so the remainder is ``O(u^2 e^{-2u})`` as printed in (2.4).
         """
-        u = sympy_value(u, "u")
+        u = S.u if u is None else sympy_value(u, "u")
         k = self._kappa_expr()
         return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
 
@@ -454,8 +486,13 @@ class FrictionlessLayer(LayerKernel):
         """``"frictionless"``: the kernel, hence h*, does not depend on nu."""
         return "frictionless"
 
-    def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        u = sympy_value(u, "u")
+    @property
+    def constants_key(self) -> tuple:
+        """``("frictionless",)``: the kernel's numbers do not depend on nu."""
+        return ("frictionless",)
+
+    def L(self, u: sp.Expr | None = None) -> sp.Expr:
+        u = S.u if u is None else sympy_value(u, "u")
         return (sp.cosh(2 * u) - 1) / (sp.sinh(2 * u) + 2 * u)
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
@@ -495,8 +532,8 @@ class HalfSpace(LayerKernel):
         """Itself: the half-space kernel carries no nu (nu enters only through vartheta = mu/(1 - nu) (2.1))."""
         return self
 
-    def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        u = sympy_value(u, "u")
+    def L(self, u: sp.Expr | None = None) -> sp.Expr:
+        u = S.u if u is None else sympy_value(u, "u")
         return sp.Integer(1)
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
@@ -543,14 +580,15 @@ class GenericLayer(LayerKernel):
         """The plain symbol vartheta (2.1): a generic layer fixes no nu."""
         return S.vartheta
 
-    A_symbol = sp.Symbol(r"\mathcal{A}", positive=True)
+    #: the symbol of ``A`` (2.4): a generic layer's coefficients are symbols (made on first use)
+    A_symbol = _LazySymbol(r"\mathcal{A}", positive=True)
 
     @staticmethod
     def m_symbol(n: int) -> sp.Symbol:
         return sp.Symbol(f"m_{n}")
 
-    def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        u = sympy_value(u, "u")
+    def L(self, u: sp.Expr | None = None) -> sp.Expr:
+        u = S.u if u is None else sympy_value(u, "u")
         raise InputError("a GenericLayer has no closed-form L(u); use BondedLayer or FrictionlessLayer")
 
     def series_parts(self, n: int, dom: Any) -> tuple[list[Any], list[Any]]:
@@ -624,7 +662,7 @@ class IncompressibleLayer(LayerKernel):
     @property
     def nu(self) -> sp.Rational:
         """Poisson's ratio, exactly 1/2."""
-        return HALF
+        return sp.Rational(1, 2)
 
     @property
     def kappa(self) -> sp.Integer:
@@ -646,13 +684,13 @@ class IncompressibleLayer(LayerKernel):
         return incompressible_coefficients(0).c[0]
 
     # ---- symbolic --------------------------------------------------------------------------
-    def L(self, u: sp.Expr = S.u) -> sp.Expr:
-        u = sympy_value(u, "u")
+    def L(self, u: sp.Expr | None = None) -> sp.Expr:
+        u = S.u if u is None else sympy_value(u, "u")
         return _kernel_23(self.kappa, u)
 
-    def large_u(self, u: sp.Expr = S.u) -> sp.Expr:
+    def large_u(self, u: sp.Expr | None = None) -> sp.Expr:
         """Leading behaviour of ``L(u) - 1`` as u -> oo: ``-(4u^2 + 4u + 2) e^{-2u}`` (kappa = 1 in (2.4))."""
-        u = sympy_value(u, "u")
+        u = S.u if u is None else sympy_value(u, "u")
         k = self.kappa
         return -(4 * u**2 + 4 * u + 1 + k**2) * sp.exp(-2 * u) / k
 
@@ -660,9 +698,9 @@ class IncompressibleLayer(LayerKernel):
         """Taylor coefficients of ``L(s)/s = N(s^2)/D(s^2)`` (k <= n); ``N_0 = 0``."""
         return bonded_series_parts(dom.kappa, n, dom.const)
 
-    def small_u(self, order: int, u: sp.Expr = S.u) -> sp.Expr:
+    def small_u(self, order: int, u: sp.Expr | None = None) -> sp.Expr:
         """Maclaurin polynomial of L(u) through ``u^(2 order + 1)``: ``c_1 u^3 + c_2 u^5 + ...`` (I.1)."""
-        u = sympy_value(u, "u")
+        u = S.u if u is None else sympy_value(u, "u")
         c = incompressible_coefficients(_check_order(order, "order")).c
         return sp.Add(*[c[k] * u ** (2 * k + 1) for k in range(order + 1)])
 

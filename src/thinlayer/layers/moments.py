@@ -11,11 +11,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-import sympy as sp
-
 from .._checks import check_order as _check_order_public
+from .._lazy import lazy_module
 from ..errors import boundary
 from .coefficients import check_coefficient_order
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 if TYPE_CHECKING:
     from .kernels import LayerKernel

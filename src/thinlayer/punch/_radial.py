@@ -26,14 +26,16 @@ from functools import lru_cache
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
 from .. import symbols as S
+from .._lazy import lazy_module
 from ..display import fmt
 from ..errors import InputTypeError
 from ..normal import normal_latex
 from ..parse import RADIUS, parse_number
 from .base import LevelSet, PunchError, Tip, points, positive_depth
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 #: the radius r of a profile Phi(r)
 r = RADIUS

@@ -9,17 +9,21 @@ delta0), and :data:`TIPS` lists the kinds a user can name (``tip_from_spec("para
 """
 from __future__ import annotations
 
+import importlib
 import math
+import sys
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
-import sympy as sp
 
+from .._lazy import lazy_module
 from ..display import RichDisplay
 from ..errors import InputError, boundary_methods
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 class PunchError(InputError):
@@ -114,6 +118,13 @@ class Tip(RichDisplay, ABC):
         """Whether Phi depends on ``r = |x|`` only: decided by the tip, in one place."""
 
     @property
+    def is_polynomial(self) -> bool:
+        """Whether Phi is a polynomial (:attr:`polynomial` is not None); a tip that knows it without building the
+        polynomial (the punch with numbers, issue 28 item 6) answers here.
+        """
+        return self.polynomial is not None
+
+    @property
     def polynomial(self) -> sp.Poly | None:
         """Phi as a ``sympy.Poly`` in ``(x1, x2)`` (coefficients may hold parameters), or None if not a polynomial."""
         return None
@@ -195,7 +206,7 @@ def is_polynomial_tip(obj: Any) -> bool:
     """Whether ``obj`` is a tip whose Phi is a polynomial (:attr:`Tip.polynomial`): what the symbolic stages
     (2.26)-(3.25) and the polynomial solvers take.  Callers ask this instead of checking a tip's class.
     """
-    return isinstance(obj, Tip) and obj.polynomial is not None
+    return isinstance(obj, Tip) and obj.is_polynomial
 
 
 def points(x: Any, what: str) -> np.ndarray:
@@ -210,12 +221,15 @@ def points(x: Any, what: str) -> np.ndarray:
 
 def positive_depth(delta0: Any) -> float:
     """``delta0`` as a positive finite float, or a :class:`PunchError` naming it."""
-    from ..parse import parse_number
+    if isinstance(delta0, (int, float)) and not isinstance(delta0, bool) and abs(delta0) < 2**1000:
+        value = float(delta0)  # a plain number: the float the grammar route gives, without sympy
+    else:
+        from ..parse import parse_number
 
-    try:
-        value = float(parse_number(delta0, "the depth delta0"))
-    except (TypeError, ValueError) as exc:
-        raise PunchError(str(exc)) from None
+        try:
+            value = float(parse_number(delta0, "the depth delta0"))
+        except (TypeError, ValueError) as exc:
+            raise PunchError(str(exc)) from None
     if not (value > 0 and math.isfinite(value)):
         raise PunchError(f"the depth delta0 must be a positive finite number, got {delta0!r}")
     return value
@@ -268,8 +282,32 @@ class TipKind:
         return f"{self.kind}:{keys}" if keys else self.kind
 
 
-#: tip kinds by key, in registration order
+#: tip kinds by key, in the order of :data:`CATALOGUE` (:func:`catalogue` imports them all)
 TIPS: dict[str, TipKind] = {}
+#: the modules of the tip kinds, in the order the registry lists them; :func:`catalogue` imports them on first use
+CATALOGUE = ("blunted_cone", "cone", "flat", "polynomial", "power_law", "pyramid", "revolution", "sphere")
+
+
+def tip_kind(kind: str) -> TipKind | None:
+    """The registry row of ``kind`` (None if there is none), importing the tip modules only if it is not loaded."""
+    row = TIPS.get(kind)
+    return row if row is not None else catalogue().get(kind)
+
+
+def catalogue() -> dict[str, TipKind]:
+    """:data:`TIPS` with every kind of :data:`CATALOGUE` registered (their modules imported on first use).
+
+    ``import thinlayer.punch`` loads the polynomial punch and the flat punch only: the tips of revolution build
+    sympy constants at import, which a numeric ``solve()`` of a paraboloid does not need (issue 28 item 6).
+    """
+    if not all(f"{__package__}.{m}" in sys.modules for m in CATALOGUE):
+        for m in CATALOGUE:
+            importlib.import_module(f"{__package__}.{m}")
+        order = {f"{__package__}.{m}": i for i, m in enumerate(CATALOGUE)}
+        rows = sorted(TIPS.values(), key=lambda row: order.get(getattr(row.constructor, "__module__", ""), len(order)))
+        TIPS.clear()
+        TIPS.update((row.kind, row) for row in rows)
+    return TIPS
 
 
 def register_tip(row: TipKind) -> TipKind:

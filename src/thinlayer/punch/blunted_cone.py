@@ -19,11 +19,12 @@ import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-import sympy as sp
-
+from .._lazy import lazy_module
 from ..errors import boundary_methods
 from ._radial import RadialTip, angle_value, length_value, r
 from .base import TipKind, TipParameter, register_tip
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 @boundary_methods

@@ -17,12 +17,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-import sympy as sp
-
+from .. import symbols as S
+from .._lazy import lazy_module
 from ..errors import boundary_methods
-from ..symbols import delta0
 from ._radial import RadialTip, angle_value, r
 from .base import TipKind, TipParameter, register_tip
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 @boundary_methods
@@ -81,7 +82,7 @@ class Cone(RadialTip):
 
     def contact_radius_expr(self) -> sp.Expr:
         """``a = delta0 tan(alpha)``."""
-        return delta0 * sp.tan(self.alpha)
+        return S.delta0 * sp.tan(self.alpha)
 
 
 register_tip(TipKind("cone", Cone, (

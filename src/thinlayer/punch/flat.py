@@ -12,11 +12,13 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
-import sympy as sp
 
 from .. import symbols as S
+from .._lazy import lazy_module
 from ..errors import InputTypeError, boundary_methods
 from .base import LevelSet, PunchError, Tip, TipKind, TipParameter, points, positive_depth, register_tip
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 @boundary_methods

@@ -20,14 +20,16 @@ from typing import Any, ClassVar
 
 import mpmath
 import numpy as np
-import sympy as sp
 
 from .. import symbols as S
+from .._lazy import lazy_function, lazy_module
 from ..display import fmt
 from ..errors import InputTypeError, WorkLimitError, boundary_methods
-from ..normal import normal_latex
 from ..parse import MAX_PARAMETERS, ExpressionError, as_expr, check_cost, expression_cost, parse_expression, sympy_value
 from .base import LevelSet, PunchError, Tip, TipKind, TipParameter, points, positive_depth, register_tip
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+normal_latex = lazy_function("thinlayer.normal", "normal_latex")  # the printers subclass sympy's
 
 
 class PunchTooLargeError(PunchError, WorkLimitError):
@@ -44,6 +46,17 @@ MAX_TOTAL_DEGREE = 60
 #: Largest total degree of a punch.  Measured: the inner expansion of a degree-40 punch (21 terms) takes
 #: 3.0 s with a symbolic nu (10.8 s at degree 60), 0.55 s with nu = 3/10.
 MAX_DEGREE = 40
+
+
+def _plain_positive(x: Any) -> bool:
+    """Whether ``x`` is a plain positive number (an int below 2^53 or a float in [1e-150, 1e150], not a bool): a
+    radius whose curvature ``1/(2R)`` is the float the symbolic route gives; any other value goes that route.
+    """
+    if isinstance(x, bool):
+        return False
+    if isinstance(x, int):
+        return 0 < x < 2**53
+    return isinstance(x, float) and 1e-150 <= x <= 1e150
 
 
 def _degree_bound(expr: sp.Expr) -> int:
@@ -95,9 +108,15 @@ class Punch(Tip):
     scaling: tuple = ()
     name: str = "punch"
     _poly: sp.Poly = field(default=None, repr=False, compare=False)
+    #: a catalogue punch with numbers for its radii: ``("paraboloid", R)`` or ``("elliptic", R1, R2)``.  Its Phi
+    #: (``expr``, ``polynomial``) is built on first use; the numeric questions (``quadric``, ``sphere_radius``,
+    #: ``axisymmetric``, ``profile``, ``parameters``) are answered from the numbers, without sympy (issue 28 item 6)
+    _spec: tuple | None = field(default=None, repr=False, compare=False)
 
-    def __init__(self, expr, x1: sp.Symbol = S.x1, x2: sp.Symbol = S.x2, scaling: dict | None = None,
+    def __init__(self, expr, x1: sp.Symbol | None = None, x2: sp.Symbol | None = None, scaling: dict | None = None,
                  name: str = "punch"):
+        x1 = S.x1 if x1 is None else x1
+        x2 = S.x2 if x2 is None else x2
         if isinstance(expr, str):
             try:
                 expr = parse_expression(expr, what="punch")
@@ -158,11 +177,52 @@ class Punch(Tip):
         object.__setattr__(self, "scaling", sc)
         object.__setattr__(self, "name", name)
         object.__setattr__(self, "_poly", poly)
+        object.__setattr__(self, "_spec", None)
+
+    @classmethod
+    def _from_radii(cls, spec: tuple, name: str) -> "Punch":
+        """A catalogue punch with plain positive numbers for its radii, its Phi built on first use (``_spec``)."""
+        obj = object.__new__(cls)
+        for key, value in (("scaling", ()), ("name", name), ("_poly", None), ("_spec", spec)):
+            object.__setattr__(obj, key, value)
+        return obj
+
+    def __getattr__(self, attr: str) -> Any:
+        """``expr`` of a catalogue punch built from its numbers (:meth:`_from_radii`), on first use."""
+        spec = self.__dict__.get("_spec")
+        if attr != "expr" or spec is None:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {attr!r}")
+        if spec[0] == "paraboloid":
+            expr = (S.x1**2 + S.x2**2) / (2 * as_expr(spec[1]))
+        else:
+            expr = S.x1**2 / (2 * as_expr(spec[1])) + S.x2**2 / (2 * as_expr(spec[2]))
+        built = Punch(expr, name=self.name)
+        object.__setattr__(self, "expr", built.expr)
+        object.__setattr__(self, "_poly", built.polynomial)
+        return built.expr
+
+    @property
+    def formula_text(self) -> str | None:
+        """Phi of the catalogue kind in Unicode maths with its symbolic radii (``(x₁² + x₂²)/(2R)``), as
+        :func:`thinlayer.normal.normal_text` prints it (a test holds them equal), for a catalogue punch with numbers;
+        None otherwise.  ``thinlayer solve`` prints it beside the values without loading the printer.
+        """
+        return None if self._spec is None else CATALOGUE_TEXT[self._spec[0]]
+
+    def _spec_coefficients(self) -> tuple[float, float] | None:
+        """``(c1, c2)`` of ``Phi = c1 x1^2 + c2 x2^2`` of a catalogue punch with numbers (``c = 1/(2R)``), else None."""
+        spec = self._spec
+        if spec is None:
+            return None
+        r1, r2 = (spec[1], spec[1]) if spec[0] == "paraboloid" else spec[1:]
+        return 1 / (2 * r1), 1 / (2 * r2)
 
     # ---- catalogue (models) ------------------------------------------------------------
     @classmethod
     def elliptic_paraboloid(cls, R1=None, R2=None) -> "Punch":
         """``Phi = x1^2/(2 R1) + x2^2/(2 R2)`` (1.1); symbols R_1, R_2 when not given."""
+        if _plain_positive(R1) and _plain_positive(R2):  # numbers: Phi is built on first use (issue 28 item 6)
+            return cls._from_radii(("elliptic", R1, R2), "elliptic paraboloid")
         r1 = sp.Symbol("R_1", positive=True) if R1 is None else as_expr(R1)
         r2 = sp.Symbol("R_2", positive=True) if R2 is None else as_expr(R2)
         for nm, r in (("R1", r1), ("R2", r2)):
@@ -174,6 +234,8 @@ class Punch(Tip):
     @classmethod
     def paraboloid(cls, R=None) -> "Punch":
         """Paraboloid of revolution ``Phi = (x1^2 + x2^2)/(2R)``."""
+        if _plain_positive(R):  # a number: Phi is built on first use (issue 28 item 6)
+            return cls._from_radii(("paraboloid", R), "paraboloid of revolution")
         r = sp.Symbol("R", positive=True) if R is None else as_expr(R)
         scaling = {r: S.Lambda * S.starred(r)} if isinstance(r, sp.Symbol) else {}
         return cls((S.x1**2 + S.x2**2) / (2 * r), scaling=scaling, name="paraboloid of revolution")
@@ -288,16 +350,18 @@ class Punch(Tip):
     @property
     def degree(self) -> int:
         """Total degree in (x1, x2)."""
-        return self._poly.total_degree()
+        return 2 if self._spec is not None else self.polynomial.total_degree()
 
     @property
     def parameters(self) -> tuple[sp.Symbol, ...]:
         """Free symbols other than x1, x2, sorted by name."""
+        if self._spec is not None:
+            return ()
         return tuple(sorted(self.expr.free_symbols - {S.x1, S.x2}, key=lambda q: q.name))
 
     def laplacian(self, power: int = 1) -> sp.Expr:
         """``Delta^power Phi`` in (x1, x2), computed on the polynomial representation."""
-        p = self._poly
+        p = self.polynomial
         for _ in range(power):
             p = p.diff(S.x1).diff(S.x1) + p.diff(S.x2).diff(S.x2)
         return p.as_expr()
@@ -328,8 +392,9 @@ class Punch(Tip):
         sc = {k: v for k, v in self.scaling if k not in out}
         return Punch(self.expr.xreplace(out), scaling=sc, name=self.name)
 
-    def scaled(self, Hs: sp.Expr = S.H_s, v1: sp.Symbol = S.xi1, v2: sp.Symbol = S.xi2) -> sp.Expr:
-        """Phi^*(xi) = Lambda Phi(H_* xi; theta(theta^*)) (1.2), (2.13)."""
+    def scaled(self, Hs: sp.Expr | None = None, v1: sp.Symbol | None = None, v2: sp.Symbol | None = None) -> sp.Expr:
+        """Phi^*(xi) = Lambda Phi(H_* xi; theta(theta^*)) (1.2), (2.13); by default in ``H_*``, ``xi_1``, ``xi_2``."""
+        Hs, v1, v2 = (S.H_s if Hs is None else Hs), (S.xi1 if v1 is None else v1), (S.xi2 if v2 is None else v2)
         Hs, v1, v2 = sympy_value(Hs, "Hs"), sympy_value(v1, "v1", symbol=True), sympy_value(v2, "v2", symbol=True)
         e = self.expr.xreplace({S.x1: Hs * v1, S.x2: Hs * v2}).xreplace(dict(self.scaling))
         return sp.expand(S.Lambda * e)
@@ -346,8 +411,15 @@ class Punch(Tip):
         return f"{self.name} Phi = {self.expr}"
 
     @property
+    def is_polynomial(self) -> bool:
+        """True: Phi is a polynomial (answered without building it)."""
+        return True
+
+    @property
     def polynomial(self) -> sp.Poly:
         """Phi as a ``sympy.Poly`` in ``(x1, x2)``; its coefficients hold the parameters."""
+        if self._poly is None:
+            self.expr  # noqa: B018 - a catalogue punch with numbers builds Phi and its polynomial on first use
         return self._poly
 
     @property
@@ -355,6 +427,9 @@ class Punch(Tip):
         """Whether ``x1 dPhi/dx2 - x2 dPhi/dx1 = 0`` identically (Phi depends on ``r`` only); the one place the
         axisymmetry of a polynomial punch is decided.
         """
+        c = self._spec_coefficients()
+        if c is not None:
+            return c[0] == c[1]
         return _axisymmetric(self.expr)
 
     @property
@@ -377,14 +452,20 @@ class Punch(Tip):
         """``(k1, k2, angle)`` with ``k1 <= k2`` the eigenvalues of K in ``Phi = x.Kx/2`` (``1/R1``, ``1/R2``) and the
         angle of the eigenvector of ``k1``, when Phi is a numeric positive-definite quadratic form; else None.
         """
+        c = self._spec_coefficients()
+        if c is not None:  # the same numbers as _quadric of Phi: a11 = 2 c1, a22 = 2 c2, a12 = 0
+            return _quadric_of(2 * c[0], 2 * c[1], 0.0)
         return _quadric(self.expr) if self.is_numeric else None
 
     @property
     def sphere_radius(self) -> float | None:
         """``R`` when ``Phi = (x1^2 + x2^2)/(2R)`` exactly (numeric ``R > 0``); else None."""
+        c = self._spec_coefficients()
+        if c is not None:
+            return 1.0 / (2.0 * c[0]) if c[0] == c[1] else None
         if not self.is_numeric:
             return None
-        terms = dict(self._poly.terms())
+        terms = dict(self.polynomial.terms())
         if set(terms) != {(2, 0), (0, 2)} or terms[(2, 0)] != terms[(0, 2)] or not terms[(2, 0)] > 0:
             return None
         return 1.0 / (2.0 * float(terms[(2, 0)]))
@@ -393,7 +474,8 @@ class Punch(Tip):
         """Phi at the points ``(x1, x2)`` (numpy, broadcast); needs a numeric punch."""
         self._need_numbers("its profile")
         x1, x2 = points(x1, "x1"), points(x2, "x2")
-        out = _compiled(self.expr)(x1, x2)
+        c = self._spec_coefficients()
+        out = c[0] * x1**2 + c[1] * x2**2 if c is not None else _compiled(self.expr)(x1, x2)
         return np.asarray(out, dtype=float) + np.zeros(np.broadcast(x1, x2).shape)
 
     def level_set(self, delta0: Any) -> LevelSet | None:
@@ -442,6 +524,9 @@ class Punch(Tip):
 # =============================================================================================
 # shape questions, cached by Phi
 # =============================================================================================
+#: Phi of the catalogue punches with symbolic radii as :func:`thinlayer.normal.normal_text` prints it
+#: (tests/contact/test_cold_start.py holds them equal to the printer's output)
+CATALOGUE_TEXT = {"paraboloid": "(x₁² + x₂²)/(2R)", "elliptic": "x₂²/(2R₂) + x₁²/(2R₁)"}
 #: the kind of the catalogue punches, by the name the catalogue gives them
 _KIND_OF_NAME = {"paraboloid of revolution": "paraboloid", "elliptic paraboloid": "elliptic_paraboloid",
                  "fourth-degree paraboloid": "fourth_degree"}
@@ -461,6 +546,11 @@ def _quadric(expr: sp.Expr) -> tuple[float, float, float] | None:
     a11 = float(poly.coeff_monomial(S.x1**2)) * 2
     a22 = float(poly.coeff_monomial(S.x2**2)) * 2
     a12 = float(poly.coeff_monomial(S.x1 * S.x2))
+    return _quadric_of(a11, a22, a12)
+
+
+def _quadric_of(a11: float, a22: float, a12: float) -> tuple[float, float, float] | None:
+    """``(k1, k2, angle)`` of the positive-definite form ``[[a11, a12], [a12, a22]]`` (:attr:`Punch.quadric`)."""
     lam, vec = np.linalg.eigh(np.array([[a11, a12], [a12, a22]]))
     if not lam.min() > 0:
         return None

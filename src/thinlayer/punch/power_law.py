@@ -14,13 +14,14 @@ import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-import sympy as sp
-
+from .. import symbols as S
+from .._lazy import lazy_module
 from ..errors import boundary_methods
 from ..parse import parse_number
-from ..symbols import delta0
 from ._radial import RadialTip, length_value, r
 from .base import PunchError, TipKind, TipParameter, register_tip
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 def _exponent(n: Any) -> sp.Expr:
@@ -101,7 +102,7 @@ class PowerLaw(RadialTip):
 
     def contact_radius_expr(self) -> sp.Expr:
         """``a = (delta0/C)^{1/n}``."""
-        return (delta0 / self.C) ** (1 / self.n)
+        return (S.delta0 / self.C) ** (1 / self.n)
 
 
 register_tip(TipKind("power_law", PowerLaw, (

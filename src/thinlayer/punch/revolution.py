@@ -11,12 +11,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-import sympy as sp
-
+from .._lazy import lazy_module
 from ..errors import WorkLimitError, boundary_methods
 from ..parse import RADIUS, ExpressionError, check_cost, parse_expression
 from ._radial import RadialTip, check_profile
 from .base import PunchError, TipKind, TipParameter, register_tip
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 def _profile_expr(expr: Any) -> sp.Expr:

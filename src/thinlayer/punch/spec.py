@@ -10,7 +10,7 @@ from typing import Any
 
 from ..errors import InputTypeError, WorkLimitError
 from ..parse import MAX_LENGTH, ExpressionError, parse_expression
-from .base import TIPS, PunchError, Tip
+from .base import PunchError, Tip, catalogue
 
 
 class TipSpecError(PunchError):
@@ -19,7 +19,7 @@ class TipSpecError(PunchError):
 
 def valid_forms() -> str:
     """The forms :func:`tip_from_spec` reads, one per registered kind, e.g. ``"paraboloid:R=<length>"``."""
-    return ", ".join(row.form for row in TIPS.values())
+    return ", ".join(row.form for row in catalogue().values())
 
 
 def _split(text: str) -> list[str]:
@@ -53,7 +53,7 @@ def tip_from_spec(spec: Any) -> Tip:
         raise TipSpecError(f"the tip spec has {len(spec)} characters, more than {MAX_LENGTH}")
     kind, _, rest = spec.strip().partition(":")
     kind = kind.strip()
-    row = TIPS.get(kind)
+    row = catalogue().get(kind)
     if row is None:
         raise TipSpecError(f"unknown tip kind {kind!r} in the tip spec {spec!r:.80}; valid forms: {valid_forms()}")
     keys = {k: p for p in row.parameters for k in (p.name, *p.aliases)}

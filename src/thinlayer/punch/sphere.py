@@ -14,12 +14,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-import sympy as sp
-
+from .. import symbols as S
+from .._lazy import lazy_module
 from ..errors import boundary_methods
-from ..symbols import delta0
 from ._radial import RadialTip, length_value, r
 from .base import TipKind, TipParameter, register_tip
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
 
 
 @boundary_methods
@@ -91,16 +92,16 @@ class Sphere(RadialTip):
         (``delta0 < R``): ``V = pi delta0^2 (R - delta0/3)``, ``J = 2 pi a^2/(R - delta0)``.
         """
         out = dict(super().level_set_expressions())
-        R, a2 = self.R, delta0 * (2 * self.R - delta0)
+        R, a2 = self.R, S.delta0 * (2 * self.R - S.delta0)
         s = sp.sqrt(R**2 - a2)
         for k in ("volume", "flux"):
-            e = out[k].subs(sp.sqrt(sp.expand(R**2 - a2)), R - delta0).subs(s, R - delta0)
+            e = out[k].subs(sp.sqrt(sp.expand(R**2 - a2)), R - S.delta0).subs(s, R - S.delta0)
             out[k] = sp.factor(sp.simplify(e))
         return out
 
     def contact_radius_expr(self) -> sp.Expr:
         """``a = sqrt(delta0 (2R - delta0))``."""
-        return sp.sqrt(delta0 * (2 * self.R - delta0))
+        return sp.sqrt(S.delta0 * (2 * self.R - S.delta0))
 
 
 register_tip(TipKind("sphere", Sphere, (

@@ -106,7 +106,7 @@ def polynomial_reason(tip: Any) -> str | None:
     """None for a polynomial punch; else why a model built on the polynomial inner expansion (2.26)-(3.25) does not
     take this tip, read from the tip's answers (smoothness, inner order), never from its class or name.
     """
-    if tip.polynomial is not None:
+    if tip.is_polynomial:
         return None
     order = tip.max_inner_order
     if tip.smoothness == "apex":

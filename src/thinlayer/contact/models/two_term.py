@@ -13,16 +13,9 @@ from collections.abc import Callable
 from functools import lru_cache
 
 import numpy as np
-import sympy as sp
 
 from ... import symbols as S
-from ...asymptotics.incompressible import (
-    incompressible_axisymmetric,
-    incompressible_ellipse,
-    incompressible_tip,
-    two_term_edge_shift,
-    two_term_sphere,
-)
+from ..._lazy import lazy_function, lazy_module
 from ...asymptotics.solution import ValidityError
 from ...layers.kernels import LayerKernel
 from ...punch import is_polynomial_tip
@@ -31,6 +24,13 @@ from ..problem import Problem
 from .base import ForceCurve, Model, register_model
 from .common import depth_for_force, polynomial_reason
 from .compressible import SMOOTH_ONLY
+
+sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
+# the nearly-incompressible models build sympy objects at import: loaded when this model first runs
+incompressible_axisymmetric, incompressible_ellipse, incompressible_tip, two_term_edge_shift, two_term_sphere = (
+    lazy_function("thinlayer.asymptotics.incompressible", name)
+    for name in ("incompressible_axisymmetric", "incompressible_ellipse", "incompressible_tip", "two_term_edge_shift",
+                 "two_term_sphere"))
 
 __all__ = ["TwoTermModel", "base_nu_reason", "edge_h", "incompressible_ellipse_cached", "nearly_incompressible",
            "nearly_incompressible_curve", "two_term_pressure"]
