@@ -22,7 +22,7 @@ from typing import Any, ClassVar
 import sympy as sp
 
 from ..errors import boundary_methods
-from ._radial import RadialTip, angle_value, length_value, r
+from ._radial import RadialTip, angle_degrees, length_value, r, radians
 from .base import TipKind, TipParameter, register_tip
 
 
@@ -44,7 +44,7 @@ class BluntedCone(RadialTip):
     name: ClassVar[str] = "blunted cone"
 
     def __init__(self, R: Any = None, half_angle: Any = None) -> None:
-        object.__setattr__(self, "values", (("R", length_value(R, "R")), ("half_angle", angle_value(half_angle))))
+        object.__setattr__(self, "values", (("R", length_value(R, "R")), ("half_angle", angle_degrees(half_angle))))
 
     def _rebuild(self, values: dict) -> BluntedCone:
         return BluntedCone(values["R"], values["half_angle"])
@@ -56,7 +56,12 @@ class BluntedCone(RadialTip):
 
     @property
     def alpha(self) -> sp.Expr:
-        """The half-angle in radians."""
+        """The half-angle in radians: ``pi alpha/180`` of the half-angle in degrees (:attr:`half_angle`)."""
+        return radians(self.half_angle)
+
+    @property
+    def half_angle(self) -> sp.Expr:
+        """The half-angle in degrees (a number, or the symbol ``alpha`` in degrees)."""
         return self.values[1][1]
 
     @property
