@@ -122,6 +122,31 @@ class TipForceLaw(RichDisplay):
             dP = c0 * np.pi * a * a + c1 * 2 * np.pi * (1.0 + a * curv / slope)
         return {"P0": c0 * V, "P1": c1 * J, "radius": a, "dP": dP}
 
+    codegen_name = "tip_force_law"
+
+    def codegen_expressions(self):
+        """``(arguments, {name: expression})`` for :mod:`thinlayer.export.codegen`: ``force`` ``P0 + P1`` (1.8) and
+        ``contact_radius`` ``a - h^* H`` (3.25), in ``delta_0, H, mu`` and the layer's and tip's symbols (an angle in
+        degrees).  Closed forms only: a tip whose level-set radius solves ``Phi(a) = delta0`` by root finding (the
+        blunted cone: ``a`` is a Piecewise of the depth across the join, and its volume is not elementary in
+        ``delta0`` on both sides) has none; generate its profile instead, or use :meth:`evaluate`.
+        """
+        if self.P0 is None:
+            raise InputError(f"no closed-form force law for the {self.tip.name}: its level-set radius comes from root "
+                             "finding (Phi(a) = delta0 has no closed-form solution here); code generation needs one")
+        from .force_law import h_star, law_arguments
+
+        radius = self.tip.level_set_expressions()["radius"] - h_star * S.H
+        outs = {"force": self.force, "contact_radius": radius}
+        args = tuple(q for q in law_arguments(self.force, radius) if q != h_star)
+        if not self.codegen_constants():
+            args = args + (h_star,)
+        return args, outs
+
+    def codegen_constants(self) -> dict:
+        """``{h^*: (number, note)}`` of a layer with one edge shift (as the polynomial force law's)."""
+        return force_law(self.layer, Punch.paraboloid()).codegen_constants()
+
     def lambdify(self, args=None, backend: str = "numpy"):
         """``P0 + P1`` as a numeric function of ``(delta_0, H, mu, ...)`` (closed forms only)."""
         if self.P0 is None:

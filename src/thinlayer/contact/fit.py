@@ -120,6 +120,16 @@ class FitResult(RichDisplay):
     equation = "T.7"
 
     @property
+    def tip_words(self) -> str:
+        """The tip in a few words: ``"sphere R = 10"`` (the paraboloid), ``"cone half_angle = 70"``."""
+        if self.paraboloid:
+            return f"sphere R = {self.R:.6g}"
+        values = getattr(self.tip, "values", None)
+        if isinstance(values, tuple) and all(isinstance(v, tuple) and len(v) == 2 for v in values):
+            return f"{self.tip.name} " + ", ".join(f"{k} = {float(v):.6g}" for k, v in values)
+        return self.tip.name
+
+    @property
     def paraboloid(self) -> bool:
         """Whether the tip is the paraboloid of radius ``R`` (then ``chi_max = sqrt(R delta)/H``; for another tip
         ``chi_max`` is the largest contact radius over H, ``c/H``).
@@ -140,16 +150,17 @@ class FitResult(RichDisplay):
 
     def as_dict(self) -> dict[str, Any]:
         """The numbers as a JSON-ready dictionary."""
-        return {"model": self.model, "base": self.base, "nu": self.nu, "R": self.R, "E": self.E, "E_se": self.E_se,
+        return {"model": self.model, "base": self.base, "nu": self.nu, "R": self.R if self.paraboloid else None,
+                "E": self.E, "E_se": self.E_se,
                 "H": self.H, "H_se": self.H_se, "offset": self.offset, "offset_se": self.offset_se,
                 "residual_rms": self.residual_rms, "n_points": self.n_points, "fitted": list(self.fitted),
                 "condition": self.condition, "chi_max": self.chi_max, "valid": self.valid,
                 "model_error": self.model_error, "validity": self.validity,
-                "tip": None if self.paraboloid else self.tip.description}
+                "tip": None if self.paraboloid else self.tip_words}
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        what = f"R = {self.R:.6g}" if self.paraboloid else self.tip.description
+        what = f"R = {self.R:.6g}" if self.paraboloid else self.tip_words
         size = "chi_max" if self.paraboloid else "(c/H)_max"
         lines = [f"FitResult ({self.model} model, {self.base} base, nu = {self.nu:.6g}, {what}), "
                  f"{self.n_points} points, {size} = {self.chi_max:.3g}"]

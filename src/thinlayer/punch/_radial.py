@@ -238,6 +238,18 @@ class RadialTip(Tip):
         """``"apex"`` when some ``Laplacian^k Phi`` is unbounded at r = 0, else ``"smooth"``."""
         return "apex" if apex_inner_order(self.radial_expr)[1] else "smooth"
 
+    @property
+    def rim_depth(self) -> float:
+        """``Phi`` at the rim :attr:`support_radius` (``inf`` without a rim): the deepest depth with a level set.
+        Read just inside the rim when the rim itself rounds out of the profile's domain (the exact sphere with a
+        float ``R``: ``R^2 - r^2`` rounds below zero at ``r = R``).
+        """
+        rim = self.support_radius
+        if not math.isfinite(rim):
+            return math.inf
+        top = float(self.radial_profile(np.array([rim]))[0])
+        return top if math.isfinite(top) else float(self.radial_profile(np.array([rim * (1 - 4e-16)]))[0])
+
     # ---- level set -----------------------------------------------------------------------------------
     def contact_radius_expr(self) -> sp.Expr | None:
         """The radius ``a(delta0)`` of ``{Phi < delta0}`` in closed form, or None (then by root finding)."""
@@ -261,7 +273,7 @@ class RadialTip(Tip):
         self._need_numbers("its level set")
         d = positive_depth(delta0)
         rim = self.support_radius
-        if math.isfinite(rim) and not d < float(self.radial_profile(np.array([rim]))[0]):
+        if math.isfinite(rim) and not d < self.rim_depth:
             raise PunchError(f"the depth delta0 = {d:g} reaches the rim of the {self.name} (r = "
                              f"{self.support_radius:g}): its level set needs delta0 below Phi there")
         exprs = self.level_set_expressions()

@@ -131,7 +131,7 @@ class TipLawModel(Model):
         rim = tip.support_radius
         if problem.force is not None:
             def force_of(d):
-                if math.isfinite(rim) and not d < float(tip.radial_profile(np.array([rim]))[0]):
+                if math.isfinite(rim) and not d < tip.rim_depth:
                     return math.inf
                 return self._at(problem, d)[0]
 
