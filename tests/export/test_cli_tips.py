@@ -72,7 +72,7 @@ def test_fit_tip_options(tmp_path, capsys):
     P = [solve_axisymmetric(tl.BondedLayer(0.3), tl.Punch.cone(70), x, H=0.2, mu=3 / 2.6, error_estimate=False).force
          for x in d]
     path = tmp_path / "curve.csv"
-    path.write_text("".join(f"{a!r},{b!r}\n" for a, b in zip(d, P)))
+    path.write_text("".join(f"{float(a)!r},{float(b)!r}\n" for a, b in zip(d, P)))
     assert main(["fit", str(path), "--cone", "70", "--H", "0.2", "--nu", "0.3", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["model"] == "tip-law" and out["R"] is None and out["tip"] == "cone half_angle = 70"

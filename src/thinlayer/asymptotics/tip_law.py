@@ -186,7 +186,7 @@ def _closed_level_set(tip: Tip):
     exprs = tip.level_set_expressions()
     if exprs is None:
         return None
-    return sp.lambdify(S.delta0, (exprs["radius"], exprs["volume"], exprs["flux"]), "numpy")
+    return sp.lambdify(S.delta0, (exprs["radius"], exprs["volume"], exprs["flux"]), "numpy", cse=True)
 
 
 #: Gauss-Legendre nodes of the volume quadrature on each smooth piece (:func:`level_set_arrays`)

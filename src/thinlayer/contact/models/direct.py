@@ -174,7 +174,8 @@ class AxisymmetricDirect(_SmoothDirect):
 
     def force_curve(self, problem: Problem) -> ForceCurve | None:
         """The solver's force against depth, tabulated and interpolated (:class:`DirectTable`), for a tip that is not a
-        polynomial (a polynomial punch has closed-form curves: the compressible and any-thickness models)."""
+        polynomial (a polynomial punch has closed-form curves: the compressible and any-thickness models).
+        """
         if self.skips(problem) or not problem.tip.is_numeric or problem.tip.polynomial is not None:
             return None
         key = (problem.layer, problem.tip, problem.H, problem.nu, problem.n)

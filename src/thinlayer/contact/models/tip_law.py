@@ -46,8 +46,9 @@ def tip_law_estimate(P0: float, P1: float, H_over_a: float) -> dict[str, float]:
     """The relative estimates of the force, contact radius and area (module docstring)."""
     r1 = abs(P1 / P0)
     x = H_over_a
-    force = FACTOR * (r1 * x + r1 * r1 + BASE_FORCE * x**3)
-    radius = RADIUS_FACTOR * r1 + BASE_RADIUS * x**3
+    x3 = x * x * x
+    force = FACTOR * (r1 * x + r1 * r1 + BASE_FORCE * x3)
+    radius = RADIUS_FACTOR * r1 + BASE_RADIUS * x3
     return {"force": force, "contact_radius": radius, "contact_area": 2.0 * radius}
 
 

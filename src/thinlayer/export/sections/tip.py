@@ -29,7 +29,8 @@ DEFAULT_RATIOS = [3.0, 5.0, 10.0, 20.0, 40.0]
 
 def tip_kinds() -> tuple[str, ...]:
     """The kinds of ``[punch] kind`` this section reads: the registered tips that are not polynomials and have a
-    varying contact (every key of :data:`thinlayer.punch.TIPS` but the polynomial and flat ones)."""
+    varying contact (every key of :data:`thinlayer.punch.TIPS` but the polynomial and flat ones).
+    """
     from ...punch import TIPS
 
     return tuple(k for k in TIPS if k not in ("paraboloid", "elliptic_paraboloid", "fourth_degree", "polynomial",
@@ -59,7 +60,9 @@ def tip_of(pu: dict) -> Any:
         raise DerivationFileError(f"[punch] kind = {kind!r} takes the keys {sorted(names)}, not {extra}")
     missing = [p.name for p in row.parameters if p.name not in pu]
     if missing:
-        raise DerivationFileError(f"[punch] kind = {kind!r} needs {', '.join(missing)} (the form is {row.form})")
+        raise DerivationFileError(f"[punch] kind = {kind!r} needs {', '.join(missing)} (the form is {row.form}; "
+                                  f"valid kinds are paraboloid, elliptic_paraboloid, fourth_degree, flat and "
+                                  f"{', '.join(tip_kinds())} with their parameters)")
     try:
         tip = row.constructor(**{p.name: pu[p.name] for p in row.parameters})
     except (ValueError, TypeError, ArithmeticError) as exc:
