@@ -159,7 +159,7 @@ class TipForceLaw(RichDisplay):
     def latex(self) -> str:
         q = f"{self.remainder_order:g}"
         body = r"\frac{\vartheta V}{\mathcal{A} H} + " + normal_latex(self.coefficient) + r"\, J" \
-            if self.P0 is None else normal_latex(self.P0) + " + " + normal_latex(self.P1)
+            if self.P0 is None else _sum_latex(normal_latex(self.P0), normal_latex(self.P1))
         return rf"P = {body} + O\!\left(P_0 (H/a)^{{{q}}}\right) \tag{{1.8}}"
 
     def text_lines(self) -> list[str]:
@@ -171,6 +171,11 @@ class TipForceLaw(RichDisplay):
             lines += [f"  P = vartheta V/(A H) + ({fmt(self.coefficient)}) J  (V, J from the level set)"]
         lines.append(f"  remainder O(P0 (H/a)^{self.remainder_order:g}): {self.remainder_sources}")
         return lines
+
+
+def _sum_latex(a: str, b: str) -> str:
+    """``a + b`` in LaTeX, ``a - c`` when ``b`` is ``-c``."""
+    return f"{a} {b}" if b.lstrip().startswith("-") else f"{a} + {b}"
 
 
 @lru_cache(maxsize=64)
