@@ -64,13 +64,25 @@ def test_every_subcommand_has_examples():
 
 
 def _curve(argv: list[str], folder: Path) -> None:
-    """``curve.csv`` for a ``fit`` example: the any-thickness law at its --R, --H, --nu with E = 2, 1 % noise."""
+    """``curve.csv`` for a ``fit`` example: the any-thickness law at its --R, --H, --nu with E = 2, 1 % noise (for
+    another tip, the direct solver)."""
     import thinlayer as tl
 
     opt = {argv[k]: argv[k + 1] for k in range(len(argv) - 1) if argv[k].startswith("--")}
-    R, H, nu = float(opt["--R"]), float(opt["--H"]), float(opt["--nu"])
-    delta = np.linspace(0.02, 1.0, 40) * H
-    force = tl.force_any_thickness(delta, R=R, H=H, E=2.0, nu=nu)
+    H, nu = float(opt["--H"]), float(opt["--nu"])
+    if "--R" in opt:
+        R = float(opt["--R"])
+        delta = np.linspace(0.02, 1.0, 40) * H
+        force = tl.force_any_thickness(delta, R=R, H=H, E=2.0, nu=nu)
+    else:  # another tip (--cone, --blunted-cone, ...): the direct solver at 5 depths, c/H from about 7 to 15
+        from thinlayer.export.cli_args import tip_from_shortcut
+        from thinlayer.numerics import solve_axisymmetric
+
+        tip = tip_from_shortcut(build_parser().parse_args(argv))
+        a1 = tip.level_set(1.0).radius  # delta0 = 1: c/H = a/H at depth 1, scaled to 10 at the middle depth
+        delta = np.linspace(0.7, 1.4, 5) * 10 * H / a1 if tip.kind == "cone" else np.linspace(0.7, 1.4, 5)
+        force = np.array([solve_axisymmetric(tl.BondedLayer(nu), tip, d, H=H, mu=2.0 / (2 * (1 + nu)),
+                                             error_estimate=False).force for d in delta])
     force = force * (1 + 0.001 * np.random.default_rng(3).standard_normal(delta.size))
     with open(folder / "curve.csv", "w") as fh:
         fh.write("depth,force\n" + "".join(f"{float(d)!r},{float(f)!r}\n" for d, f in zip(delta, force)))

@@ -35,6 +35,22 @@ def test_angle_is_degrees():
     assert Punch.cone(70).alpha == 7 * sp.pi / 18  # exact
 
 
+def test_symbolic_angle_is_degrees_too():
+    """No unit trap (issue 24 item 6): the symbol alpha is the angle in degrees in the expression, its LaTeX, subs()
+    and parameters alike; the expression converts it explicitly."""
+    alpha = sp.Symbol("alpha", positive=True)
+    for sym, num in ((Punch.cone(), Punch.cone(70)), (Punch.blunted_cone(2), Punch.blunted_cone(2, 70))):
+        assert sym.subs({"alpha": 70}).expr == num.expr
+        assert sym.expr.subs(alpha, 70) == num.expr  # the printed expression read with degrees
+        assert sym.half_angle == alpha and num.half_angle == 70
+        assert r"\frac{\pi \alpha}{180}" in sym.latex()
+    rr = 1.3
+    assert float(Punch.cone().radial_expr.subs({alpha: 70, r: rr})) == pytest.approx(
+        float(Punch.cone(70).radial_profile([rr])[0]), rel=1e-15)
+    assert float(Punch.cone().radial_expr.subs({alpha: 70, r: rr})) == pytest.approx(rr / math.tan(math.radians(70)),
+                                                                                       rel=1e-15)
+
+
 @pytest.mark.parametrize("payload", ["sqrt(__import__('os').system('true'))", "exp(r)", "r.__class__",
                                      "abs(r)(1)", "getattr(r, 'x')", "lambda: 1", "r**a", "x_1**2 + r"])
 def test_revolution_refuses_code(payload):
@@ -142,7 +158,7 @@ def test_cone_leading_law_symbolic():
     assert sp.simplify(sp.integrate(2 * sp.pi * r * sp.cot(al) / r, (r, 0, a)) - ex["flux"]) == 0
     assert law.remainder_order == 3
     # numeric: P0 at numbers against the mpmath quadrature of V
-    byname = {"delta_0": 0.7, "H": 0.1, "mu": 1.0, "nu": 0.3, "alpha": math.radians(70)}
+    byname = {"delta_0": 0.7, "H": 0.1, "mu": 1.0, "nu": 0.3, "alpha": 70}  # the symbol alpha is in degrees
     num = {q: byname[q.name] for q in law.P0.free_symbols}
     Vq = mpmath.quad(lambda s: 2 * mpmath.pi * s * (0.7 - s / mpmath.tan(math.radians(70))),
                      [0, 0.7 * math.tan(math.radians(70))])

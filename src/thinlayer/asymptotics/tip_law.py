@@ -31,8 +31,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
+import numpy as np
 import sympy as sp
 
 from .. import symbols as S
@@ -43,7 +45,7 @@ from ..normal import normal_latex
 from ..punch import Punch, Tip
 from .force_law import force_law, lambdify_law
 
-__all__ = ["TipForceLaw", "tip_force_law"]
+__all__ = ["TipForceLaw", "level_set_arrays", "tip_force_law"]
 
 
 @boundary_methods
@@ -91,6 +93,60 @@ class TipForceLaw(RichDisplay):
         k = float(self.coefficient.subs(sub))
         return th * ls.volume, k * ls.flux
 
+    def constants(self, H: float, mu: float = 1.0, nu: float | None = None) -> tuple[float, float]:
+        """``(vartheta/(A H), coefficient)`` at numbers: ``P0 = first * V``, ``P1 = second * J``."""
+        return _constants(self.layer, float(H), float(mu), None if nu is None else float(nu))
+
+    def arrays(self, delta0: Any, H: float, mu: float = 1.0, nu: float | None = None,
+               derivative: bool = True) -> dict[str, np.ndarray]:
+        r"""``P0``, ``P1``, the level-set radius ``a`` and ``dP/d delta0`` at an array of depths (vectorised).
+
+        From the level set (module docstring): ``P0 = vartheta V/(A H)``, ``P1 = coefficient J`` and, with
+        ``dV/d delta0 = pi a^2`` (the area of the level set) and ``J = 2 pi a Phi'(a)``, ``da/d delta0 = 1/Phi'(a)``,
+
+            dP/d delta0 = (vartheta/(A H)) pi a^2 + coefficient 2 pi (1 + a Phi''(a)/Phi'(a)).
+
+        The closed forms of :meth:`~thinlayer.punch._radial.RadialTip.level_set_expressions` where the tip has them;
+        otherwise ``a`` by Newton's method on ``Phi(a) = delta0`` (from a monotone table) and
+        ``V = pi int_0^a s^2 Phi'(s) ds`` (by parts) by Gauss-Legendre quadrature split at the tip's joins.
+        ``nu`` as in :meth:`evaluate`; ``derivative=False`` leaves ``dP`` out.
+        """
+        d = np.asarray(delta0, dtype=float)
+        c0, c1 = self.constants(H, mu, nu)
+        a, V, J = level_set_arrays(self.tip, d)
+        if not derivative:
+            return {"P0": c0 * V, "P1": c1 * J, "radius": a}
+        slope = self.tip.radial_slope(a)
+        curv = self.tip.radial_curvature(a)
+        with np.errstate(all="ignore"):
+            dP = c0 * np.pi * a * a + c1 * 2 * np.pi * (1.0 + a * curv / slope)
+        return {"P0": c0 * V, "P1": c1 * J, "radius": a, "dP": dP}
+
+    codegen_name = "tip_force_law"
+
+    def codegen_expressions(self):
+        """``(arguments, {name: expression})`` for :mod:`thinlayer.export.codegen`: ``force`` ``P0 + P1`` (1.8) and
+        ``contact_radius`` ``a - h^* H`` (3.25), in ``delta_0, H, mu`` and the layer's and tip's symbols (an angle in
+        degrees).  Closed forms only: a tip whose level-set radius solves ``Phi(a) = delta0`` by root finding (the
+        blunted cone: ``a`` is a Piecewise of the depth across the join, and its volume is not elementary in
+        ``delta0`` on both sides) has none; generate its profile instead, or use :meth:`evaluate`.
+        """
+        if self.P0 is None:
+            raise InputError(f"no closed-form force law for the {self.tip.name}: its level-set radius comes from root "
+                             "finding (Phi(a) = delta0 has no closed-form solution here); code generation needs one")
+        from .force_law import h_star, law_arguments
+
+        radius = self.tip.level_set_expressions()["radius"] - h_star * S.H
+        outs = {"force": self.force, "contact_radius": radius}
+        args = tuple(q for q in law_arguments(self.force, radius) if q != h_star)
+        if not self.codegen_constants():
+            args = args + (h_star,)
+        return args, outs
+
+    def codegen_constants(self) -> dict:
+        """``{h^*: (number, note)}`` of a layer with one edge shift (as the polynomial force law's)."""
+        return force_law(self.layer, Punch.paraboloid()).codegen_constants()
+
     def lambdify(self, args=None, backend: str = "numpy"):
         """``P0 + P1`` as a numeric function of ``(delta_0, H, mu, ...)`` (closed forms only)."""
         if self.P0 is None:
@@ -103,7 +159,7 @@ class TipForceLaw(RichDisplay):
     def latex(self) -> str:
         q = f"{self.remainder_order:g}"
         body = r"\frac{\vartheta V}{\mathcal{A} H} + " + normal_latex(self.coefficient) + r"\, J" \
-            if self.P0 is None else normal_latex(self.P0) + " + " + normal_latex(self.P1)
+            if self.P0 is None else _sum_latex(normal_latex(self.P0), normal_latex(self.P1))
         return rf"P = {body} + O\!\left(P_0 (H/a)^{{{q}}}\right) \tag{{1.8}}"
 
     def text_lines(self) -> list[str]:
@@ -115,6 +171,73 @@ class TipForceLaw(RichDisplay):
             lines += [f"  P = vartheta V/(A H) + ({fmt(self.coefficient)}) J  (V, J from the level set)"]
         lines.append(f"  remainder O(P0 (H/a)^{self.remainder_order:g}): {self.remainder_sources}")
         return lines
+
+
+def _sum_latex(a: str, b: str) -> str:
+    """``a + b`` in LaTeX, ``a - c`` when ``b`` is ``-c``."""
+    return f"{a} {b}" if b.lstrip().startswith("-") else f"{a} + {b}"
+
+
+@lru_cache(maxsize=64)
+def _constants(layer: LayerKernel, H: float, mu: float, nu: float | None) -> tuple[float, float]:
+    sub = {S.H: H, S.mu: mu} if nu is None else {S.H: H, S.mu: mu, S.nu: nu}
+    coefficient = force_law(layer, Punch.paraboloid()).coefficient
+    return float((layer.vartheta / (layer.A * S.H)).subs(sub)), float(coefficient.subs(sub))
+
+
+@lru_cache(maxsize=64)
+def _closed_level_set(tip: Tip):
+    """``delta0 -> (a, V, J)`` compiled from the closed forms, or None."""
+    exprs = tip.level_set_expressions()
+    if exprs is None:
+        return None
+    return sp.lambdify(S.delta0, (exprs["radius"], exprs["volume"], exprs["flux"]), "numpy", cse=True)
+
+
+#: Gauss-Legendre nodes of the volume quadrature on each smooth piece (:func:`level_set_arrays`)
+GAUSS_NODES = 48
+
+
+def level_set_arrays(tip: Tip, delta0: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    r"""``(a, V, J)`` of a tip of revolution at an array of depths (the level set ``{Phi < delta0}``, a disc).
+
+    Closed forms where the tip has them; else ``a`` by Newton's method on ``Phi(a) = delta0`` started from a
+    monotone table of Phi, ``V = pi int_0^a s^2 Phi'(s) ds`` (``2 pi int_0^a (delta0 - Phi) s ds`` by parts) by
+    Gauss-Legendre quadrature on each piece between the tip's joins (Phi'' jumps there), ``J = 2 pi a Phi'(a)``.
+    """
+    d = np.asarray(delta0, dtype=float)
+    closed = _closed_level_set(tip)
+    if closed is not None:
+        with np.errstate(all="ignore"):
+            a, V, J = (np.broadcast_to(np.asarray(v, dtype=float), d.shape) for v in closed(d))
+        return a, V, J
+    a = _invert_profile(tip, d)
+    t, w = np.polynomial.legendre.leggauss(GAUSS_NODES)
+    edges = [0.0, *sorted(b for b in tip.radial_breakpoints if b > 0), math.inf]
+    V = np.zeros_like(a)
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        top = np.minimum(a, hi)
+        span = np.where(top > lo, top - lo, 0.0)
+        s = lo + 0.5 * span[..., None] * (t + 1.0)
+        V += np.pi * 0.5 * span * np.sum(w * s * s * tip.radial_slope(s.ravel()).reshape(s.shape), axis=-1)
+    return a, V, 2 * np.pi * a * tip.radial_slope(a)
+
+
+def _invert_profile(tip: Tip, d: np.ndarray) -> np.ndarray:
+    """The radius ``a`` with ``Phi(a) = d`` (vectorised Newton steps from a table; Phi increasing)."""
+    dmax = float(np.max(d)) if d.size else 1.0
+    rim = tip.support_radius
+    hi = 0.999999 * rim if math.isfinite(rim) else 1.0
+    while not math.isfinite(rim) and float(tip.radial_profile(np.array([hi]))[0]) < dmax and hi < 1e300:
+        hi *= 2.0
+    grid = np.concatenate([[0.0], np.geomspace(1e-9 * hi, hi, 2000)])
+    phi = tip.radial_profile(grid)
+    a = np.interp(d, phi, grid)
+    for _ in range(8):
+        f = tip.radial_profile(a) - d
+        step = f / tip.radial_slope(a)
+        a = np.clip(a - np.where(np.isfinite(step), step, 0.0), 0.5 * a, np.minimum(2.0 * a + 1e-300, hi))
+    return a
 
 
 def _apex_exponent(tip: Tip) -> float | None:

@@ -41,10 +41,10 @@ from .._checks import InputError, InputTypeError, check_array_size, check_choice
 from ..display import RichDisplay
 from ..errors import ComputationError, ValidityWarning, boundary, boundary_methods
 from .any_thickness import BASES, any_thickness_law
-from .models import fit_entry, fit_names
+from .models import MODEL_REGISTRY, fit_names
 from .models.published import series_coefficients
 
-__all__ = ["FIT_MODELS", "FitResult", "MODEL_TOL", "fit", "model_error"]
+__all__ = ["FIT_MODELS", "FitResult", "MODEL_TOL", "curve_entries", "fit", "model_error"]
 
 #: fit()'s models: the registry's entries with a force curve for fitting (:mod:`thinlayer.contact.models`)
 FIT_MODELS = fit_names()
@@ -116,7 +116,25 @@ class FitResult(RichDisplay):
     valid: bool = True
     model_error: float = 0.0
     validity: str = ""
+    tip: Any = field(default=None, repr=False)
     equation = "T.7"
+
+    @property
+    def tip_words(self) -> str:
+        """The tip in a few words: ``"sphere R = 10"`` (the paraboloid), ``"cone half_angle = 70"``."""
+        if self.paraboloid:
+            return f"sphere R = {self.R:.6g}"
+        values = getattr(self.tip, "values", None)
+        if isinstance(values, tuple) and all(isinstance(v, tuple) and len(v) == 2 for v in values):
+            return f"{self.tip.name} " + ", ".join(f"{k} = {float(v):.6g}" for k, v in values)
+        return self.tip.name
+
+    @property
+    def paraboloid(self) -> bool:
+        """Whether the tip is the paraboloid of radius ``R`` (then ``chi_max = sqrt(R delta)/H``; for another tip
+        ``chi_max`` is the largest contact radius over H, ``c/H``).
+        """
+        return self.tip is None or self.tip.sphere_radius is not None
 
     @property
     def mu(self) -> float:
@@ -125,22 +143,27 @@ class FitResult(RichDisplay):
 
     def predict(self, delta: Any) -> np.ndarray:
         """The fitted model's force at the (raw, uncorrected) depths ``delta``."""
-        shape = _shape_function(self.model, self.R, self.nu, self.base)
+        shape = _shape_function(self.model, self.tip if self.tip is not None else _paraboloid(self.R), self.nu,
+                                self.base)
         P, _, _ = shape(np.asarray(delta, dtype=float) - self.offset, self.H)
         return self.E * P
 
     def as_dict(self) -> dict[str, Any]:
         """The numbers as a JSON-ready dictionary."""
-        return {"model": self.model, "base": self.base, "nu": self.nu, "R": self.R, "E": self.E, "E_se": self.E_se,
+        return {"model": self.model, "base": self.base, "nu": self.nu, "R": self.R if self.paraboloid else None,
+                "E": self.E, "E_se": self.E_se,
                 "H": self.H, "H_se": self.H_se, "offset": self.offset, "offset_se": self.offset_se,
                 "residual_rms": self.residual_rms, "n_points": self.n_points, "fitted": list(self.fitted),
                 "condition": self.condition, "chi_max": self.chi_max, "valid": self.valid,
-                "model_error": self.model_error, "validity": self.validity}
+                "model_error": self.model_error, "validity": self.validity,
+                "tip": None if self.paraboloid else self.tip_words}
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
-        lines = [f"FitResult ({self.model} model, {self.base} base, nu = {self.nu:.6g}, R = {self.R:.6g}), "
-                 f"{self.n_points} points, chi_max = {self.chi_max:.3g}"]
+        what = f"R = {self.R:.6g}" if self.paraboloid else self.tip_words
+        size = "chi_max" if self.paraboloid else "(c/H)_max"
+        lines = [f"FitResult ({self.model} model, {self.base} base, nu = {self.nu:.6g}, {what}), "
+                 f"{self.n_points} points, {size} = {self.chi_max:.3g}"]
         if not self.valid:
             lines.append(f"  NOT VALID: {self.validity}")
         lines.append(f"  E      = {self.E:.8g} +- {self.E_se:.2g}")
@@ -151,7 +174,7 @@ class FitResult(RichDisplay):
         if "offset" in self.fitted:
             lines.append(f"  offset = {self.offset:.8g} +- {self.offset_se:.2g}")
         lines.append(f"  residual rms = {self.residual_rms:.4g}")
-        if self.model == "any-thickness":
+        if self.model == "any-thickness" or not self.paraboloid:
             lines.append(f"  model error  = {100 * self.model_error:.2g} % (the law's own estimate, against the direct "
                          "solver)")
         else:
@@ -164,30 +187,73 @@ class FitResult(RichDisplay):
                 rf"\text{{{self.model}}},\ \nu = {self.nu:.4g}")
 
 
-def _shape_function(model: str, R: float, nu: float, base: str):
-    """``g(delta, H) -> (P/E, d log P/d log delta, d log P/d log H)`` of one model (zero force for delta <= 0).
-
-    The model's unit-modulus :class:`~thinlayer.contact.models.ForceCurve` from the registry (no tolerance: the
-    validity is measured by :func:`model_error`), divided by ``E/mu = 2(1 + nu)``.
-    """
-    from ..layers.kernels import BondedLayer, FrictionlessLayer
+def _paraboloid(R: float):
     from ..punch import Punch
+
+    return Punch.paraboloid(R)
+
+
+def _problem(tip: Any, nu: float, base: str, H: float):
+    from ..layers.kernels import BondedLayer, FrictionlessLayer
     from .problem import Depth, Elastic, Frictionless, Problem
 
-    entry = fit_entry(model)
     layer = FrictionlessLayer(nu) if base == "frictionless" else BondedLayer(nu)
-    tip = Punch.paraboloid(R)
-    scale = 1.0 / (2.0 * (1.0 + nu))
-    entry.force_curve(Problem(layer, tip, Elastic(1.0, nu), Frictionless(), Depth(1.0), 1.0, math.inf))  # refusals
+    return Problem(layer, tip, Elastic(1.0, nu), Frictionless(), Depth(1.0), H, math.inf)
 
-    def g(delta: np.ndarray, H: float):
-        curve = entry.force_curve(Problem(layer, tip, Elastic(1.0, nu), Frictionless(), Depth(1.0), H, math.inf))
+
+def curve_entries(tip: Any, nu: float, base: str) -> list[str]:
+    """The models of :func:`fit` with a force curve for this tip, layer and ``nu`` (by preference)."""
+    out = []
+    for m in MODEL_REGISTRY:
+        if m.fits and m.name not in out:
+            try:
+                if m.force_curve(_problem(tip, nu, base, 1.0)) is not None:
+                    out.append(m.name)
+            except (ValueError, TypeError):  # the model refuses this problem (one line, e.g. nu)
+                continue
+    return out
+
+
+def _entry(model: str, tip: Any, nu: float, base: str):
+    """The first entry named ``model`` with a force curve for the tip (refusals raised as they come)."""
+    for m in MODEL_REGISTRY:
+        if m.fits and m.name == model and m.force_curve(_problem(tip, nu, base, 1.0)) is not None:
+            return m
+    holds = curve_entries(tip, nu, base)
+    if not holds:
+        raise InputError(f"fit() has no force curve for the {tip.name} (nu = {nu:g}, {base} base): it takes a sphere "
+                         "(the radius R, Punch.paraboloid(R), Punch.sphere(R)) or another tip of revolution "
+                         "(Punch.cone(70), Punch.blunted_cone(R, 70), Punch.power_law(C, n))")
+    raise InputError(f"fit(model={model!r}) has no force curve for the {tip.name} on this layer (nu = {nu:g}, "
+                     f"{base} base); the models that fit it: {', '.join(holds)}")
+
+
+def _shape_function(model: str, tip: Any, nu: float, base: str):
+    """``g(delta, H, slopes) -> (P/E, d log P/d log delta, d log P/d log H)`` of one model (zero force for
+    delta <= 0; the slopes only when ``slopes``, else zeros).
+
+    The model's unit-modulus :class:`~thinlayer.contact.models.ForceCurve` from the registry (no tolerance: the
+    validity is measured by :func:`model_error` or the curve's own estimate), divided by ``E/mu = 2(1 + nu)``.
+    """
+    entry = _entry(model, tip, nu, base)
+    scale = 1.0 / (2.0 * (1.0 + nu))
+    curves: dict[float, Any] = {}
+
+    def g(delta: np.ndarray, H: float, slopes: bool = True):
+        curve = curves.get(H)
+        if curve is None:
+            if len(curves) > 64:
+                curves.clear()
+            curve = curves[H] = entry.force_curve(_problem(tip, nu, base, H))
         pos = delta > 0
         d = np.where(pos, delta, 1.0)
         P = np.where(pos, curve.force(d) * scale, 0.0)
+        if not slopes:
+            return P, None, None
         gd, gH = curve.slopes(d)
         return P, np.where(pos, gd, 0.0), np.where(pos, gH, 0.0)
 
+    g.curve = lambda H: curves.get(H) or entry.force_curve(_problem(tip, nu, base, H))
     return g
 
 
@@ -241,22 +307,26 @@ def _points(delta: Any, force: Any) -> tuple[np.ndarray, np.ndarray]:
     return d, f
 
 
-def _radius(punch: Any) -> float:
+def _tip(punch: Any) -> tuple[Any, float]:
+    """``(tip, R)``: a number is the paraboloid's radius; a tip with numbers (``R`` NaN unless a paraboloid)."""
     if isinstance(punch, numbers.Real) and not isinstance(punch, bool):
-        return positive(punch, "punch (the sphere radius R)")
+        R = positive(punch, "punch (the sphere radius R)")
+        return _paraboloid(R), R
     from ..punch import Tip
 
     if not isinstance(punch, Tip):
-        raise InputTypeError(f"punch must be the sphere radius R (a number) or Punch.paraboloid(R), got {punch!r}")
+        raise InputTypeError(f"punch must be the sphere radius R (a number) or a tip (Punch.paraboloid(R), "
+                             f"Punch.cone(70), Punch.sphere(R), ...), got {punch!r:.80}")
+    if not punch.is_numeric:
+        raise InputError(f"fit() needs a tip with numbers for its parameters "
+                         f"({', '.join(q.name for q in punch.parameters)}): use .subs({{...}})")
     R = punch.sphere_radius
-    if R is None:
-        raise InputError(f"fit() needs a sphere (paraboloid of revolution) Phi = r^2/(2R); got Phi = {punch.expr}")
-    return R
+    return punch, (math.nan if R is None else R)
 
 
 @boundary
 def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5, base: str = "bonded", *,
-        fit_H: bool = False, fit_offset: bool = False, model: str = "any-thickness", E0: float | None = None,
+        fit_H: bool = False, fit_offset: bool = False, model: str | None = None, E0: float | None = None,
         sigma: Any = None) -> FitResult:
     r"""Estimate Young's modulus (and optionally H and the contact point) from a force-indentation curve.
 
@@ -264,8 +334,10 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     ----------
     delta, force : array_like
         Indentation depths and forces (same length, consistent units).
-    punch : float or Punch
-        The sphere radius ``R`` or ``Punch.paraboloid(R)``.
+    punch : float or Tip
+        The sphere radius ``R`` or ``Punch.paraboloid(R)``, or any tip with a force curve (``Punch.cone(70)``,
+        ``Punch.sphere(R)``, ``Punch.blunted_cone(R, alpha)``, ``Punch.power_law(C, n)``, ...: the models
+        ``"tip-law"`` and ``"direct"``, and any other model whose force curve takes the tip).
     H : float
         Layer thickness (the starting value when ``fit_H``).
     nu : float
@@ -274,8 +346,12 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
         ``"bonded"`` or ``"frictionless"``.
     fit_H, fit_offset : bool
         Also fit the thickness, the contact point ``d_c`` (force at depth ``delta - d_c``).
-    model : str
-        ``"any-thickness"`` (default), ``"hertz"``, ``"dimitriadis2002"`` or ``"garcia2018"``.
+    model : str, optional
+        ``"any-thickness"``, ``"hertz"``, ``"dimitriadis2002"``, ``"garcia2018"`` (paraboloid), ``"tip-law"``
+        (thin-layer law of a tip of revolution), ``"direct"`` (the axisymmetric solver, tabulated).  Default:
+        ``"any-thickness"`` when it has a curve for the tip, else the first of :func:`curve_entries`.  For a tip
+        other than the paraboloid, ``model_error`` is the curve's own estimate (against the direct solver) at the
+        data's largest depth and over the data, and a fit is valid when it is within 5 %.
     E0 : float, optional
         Starting value of E (default: from the points by the model with the given H).
     sigma : array_like, optional
@@ -314,16 +390,20 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
 def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) -> FitResult:
     d, f = _points(delta, force)
     if punch is None:
-        raise InputTypeError("fit() needs punch= (the sphere radius R or Punch.paraboloid(R))")
-    R = _radius(punch)
+        raise InputTypeError("fit() needs punch= (the sphere radius R, Punch.paraboloid(R) or another tip)")
+    tip, R = _tip(punch)
     if H is None:
         raise InputTypeError("fit() needs H= (the layer thickness, or its starting value with fit_H=True)")
     H0 = positive(H, "H")
     check_choice(base, BASES, "base")
-    check_choice(model, fit_names(), "model")
+    if model is not None:
+        check_choice(model, fit_names(), "model")
     if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not -1 < float(nu) <= 0.5:
         raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}")
     nu = float(nu)
+    if model is None:
+        holds = curve_entries(tip, nu, base)
+        model = "any-thickness" if "any-thickness" in holds or not holds else holds[0]
     names = ["E"] + (["H"] if fit_H else []) + (["offset"] if fit_offset else [])
     p = len(names)
     if d.size < p + 1:
@@ -333,7 +413,7 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
         raise InputError("no positive force in the data: the curve carries no information on E (is the force "
                          "column right, and in contact?)")
     if not np.any(d > 0):
-        raise InputError("no positive depth in the data: the sphere never touches the layer")
+        raise InputError("no positive depth in the data: the tip never touches the layer")
     if sigma is None:
         w = np.ones_like(f)
     else:
@@ -346,8 +426,8 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
         if not (np.all(np.isfinite(s)) and np.all(s > 0)):
             raise InputError("sigma must be positive and finite")
         w = 1.0 / s
-    shape = _shape_function(model, R, nu, base)
-    P1, _, _ = shape(d, H0)
+    shape = _shape_function(model, tip, nu, base)
+    P1, _, _ = shape(d, H0, slopes=False)
     if not np.any(P1 > 0):
         raise InputError("no point is in contact with the starting contact point: check the depth column")
     if E0 is None:
@@ -367,13 +447,13 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
 
     def resid(x):
         E, HH, dc = unpack(x)
-        P, _, _ = shape(d - dc, HH)
+        P, _, _ = shape(d - dc, HH, slopes=False)
         return (E * P - f) * w / fscale
 
     def jac(x):
         E, HH, dc = unpack(x)
         dd = d - dc
-        P, gd, gH = shape(dd, HH)
+        P, gd, gH = shape(dd, HH, slopes=fit_H or fit_offset)
         EP = E * P * w / fscale
         cols = [EP]
         if fit_H:
@@ -411,7 +491,28 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
     H_se = HH * se[1] if fit_H else 0.0
     off_se = se[-1] if fit_offset else 0.0
     resid_force = (r * fscale / w)
-    chi_max = float(math.sqrt(R * max(float(np.max(d - dc)), 0.0)) / HH)
-    valid, err, why = _validity(model, R, nu, base, HH, chi_max)
+    dmax = max(float(np.max(d - dc)), 0.0)
+    if math.isnan(R):
+        chi_max, (valid, err, why) = _tip_validity(shape.curve(HH), d - dc, HH, model)
+    else:
+        chi_max = float(math.sqrt(R * dmax) / HH)
+        valid, err, why = _validity(model, R, nu, base, HH, chi_max)
     return FitResult(E, E_se, HH, H_se, dc, off_se, float(np.sqrt(np.mean(resid_force**2))), resid_force, model,
-                     base, nu, R, int(d.size), tuple(names), cov, cond, chi_max, valid, err, why)
+                     base, nu, R, int(d.size), tuple(names), cov, cond, chi_max, valid, err, why, tip)
+
+
+def _tip_validity(curve: Any, depths: np.ndarray, H: float, model: str) -> tuple[float, tuple[bool, float, str]]:
+    """``((c/H)_max, (valid, model error, why))`` of a fit with a tip other than the paraboloid: the curve's own
+    estimate, largest over the points in contact.
+    """
+    dd = depths[depths > 0]
+    est = curve.estimate(dd)
+    err = float(np.max(est)) if dd.size and np.all(np.isfinite(est)) else math.inf
+    c = curve.contact_radius(np.array([float(dd.max())])) if dd.size else np.array([0.0])
+    size = float(c[0]) / H if np.isfinite(c[0]) else math.nan
+    if err <= MODEL_TOL:
+        return size, (True, err, f"the {model} model's own estimate is within {100 * err:.2g} % over the data "
+                                 f"(c/H up to {size:.3g})")
+    return size, (False, err, f"the {model} model's own estimate reaches {100 * err:.3g} % over the data (c/H up to "
+                              f"{size:.3g}; a valid fit needs <= {100 * MODEL_TOL:.3g} %): outside its range; "
+                              "model='direct' holds at every thickness")

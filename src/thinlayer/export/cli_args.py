@@ -11,8 +11,9 @@ import math
 import sys
 from typing import Any
 
-__all__ = ["BASES", "BadInput", "KINDS", "NOTE", "TIP_KINDS", "add_punch_args", "base_arg", "finite", "nonfinite",
-           "print_text", "punch_from_args", "punch_params", "solve_layer", "tip_needs_values"]
+__all__ = ["BASES", "BadInput", "KINDS", "NOTE", "SHORTCUTS", "TIP_KINDS", "add_punch_args", "add_tip_shortcuts",
+           "base_arg", "finite", "nonfinite", "print_text", "punch_from_args", "punch_params", "shortcuts_given",
+           "solve_layer", "tip_from_shortcut", "tip_needs_values"]
 
 
 def finite(text: str) -> float:
@@ -105,11 +106,16 @@ def punch_from_args(args, allow_flat: bool = False):
     flat_a = getattr(args, "flat", None) if allow_flat else None
     spec = getattr(args, "tip", None)
     given = [o for o, v in (("--tip", spec), ("--punch", args.punch), ("--kind", args.kind), ("--flat", flat_a))
-             if v is not None]
+             if v is not None] + shortcuts_given(args)
     if len(given) != 1:
         choices = ("--tip KIND:key=value,... (thinlayer.punch.TIPS), --punch EXPR (a polynomial in x_1, x_2), "
                    f"--kind NAME ({', '.join(KINDS)})") + (" and --flat A" if allow_flat else "")
+        if hasattr(args, "cone"):
+            choices = choices.replace(" and --flat A", ", --flat A") + ", " + SHORTCUT_FORMS
         raise BadInput(f"give exactly one of {choices}" + (f"; got {' and '.join(given)}" if given else ""))
+    if shortcuts_given(args):
+        tip = tip_from_shortcut(args)
+        return (tip, False) if allow_flat else tip
     if spec is not None:
         from ..punch import tip_from_spec
 
@@ -158,6 +164,70 @@ def _numeric_kind(kind: str, items: list[str] | None):
         return None
     punch = getattr(Punch, kind)(**values)
     return punch if punch.formula_text is not None else None
+
+
+#: the tip options of ``solve`` and ``fit``: option -> (TIPS key, metavars); values go to the kind's parameters in
+#: the registry's order (a parameter named or aliased ``sides`` takes ``--sides``)
+SHORTCUTS = {"--cone": ("cone", ("ANGLE",)), "--pyramid": ("pyramid", ("ANGLE",)), "--sphere": ("sphere", ("R",)),
+             "--blunted-cone": ("blunted_cone", ("R", "ANGLE")), "--power-law": ("power_law", ("C", "N"))}
+SHORTCUT_FORMS = ", ".join(f"{o} {' '.join(m)}" for o, (_, m) in SHORTCUTS.items())
+
+
+def _dest(option: str) -> str:
+    return option[2:].replace("-", "_")
+
+
+def add_tip_shortcuts(p: argparse.ArgumentParser) -> None:
+    """``--cone ANGLE``, ``--pyramid ANGLE --sides N``, ``--sphere R``, ``--blunted-cone R ANGLE``, ``--power-law C
+    N``: the tips of :data:`thinlayer.punch.TIPS` by their usual names (angles in degrees).
+    """
+    g = p.add_argument_group("tips (one of them, or --tip; angles are half-angles in degrees, 0 < ANGLE < 90)")
+    helps = {"--cone": "cone of half-angle ANGLE degrees (AFM cones: 70 or so)",
+             "--pyramid": "pyramid of face half-angle ANGLE degrees with --sides faces (3 or 4; default 4)",
+             "--sphere": "the exact sphere of radius R (the cap, not the paraboloid)",
+             "--blunted-cone": "cone of half-angle ANGLE degrees with a spherical apex of radius R (tangent join)",
+             "--power-law": "Phi = C r^N (N >= 1)"}
+    for option, (_, metavars) in SHORTCUTS.items():
+        g.add_argument(option, type=finite, nargs=len(metavars), metavar=metavars if len(metavars) > 1 else
+                       metavars[0], help=helps[option])
+    g.add_argument("--sides", type=int, default=None, help="faces of --pyramid: 3 or 4 (default 4)")
+
+
+def shortcuts_given(args) -> list[str]:
+    """The tip options of :data:`SHORTCUTS` on the command line."""
+    return [o for o in SHORTCUTS if getattr(args, _dest(o), None) is not None]
+
+
+def tip_from_shortcut(args):
+    """The tip of the one option of :data:`SHORTCUTS` given, built through the registry :data:`thinlayer.punch.TIPS`
+    (one line naming the option for a bad value, or a kind not registered yet).
+    """
+    from ..punch import TIPS
+
+    (option,) = shortcuts_given(args)
+    kind, _ = SHORTCUTS[option]
+    values = getattr(args, _dest(option))
+    values = [int(v) if float(v).is_integer() else v for v in (values if isinstance(values, list) else [values])]
+    shown = f"{option} {' '.join(f'{v:g}' for v in values)}"
+    sides = getattr(args, "sides", None)
+    if sides is not None and option != "--pyramid":
+        raise BadInput(f"--sides goes with --pyramid only (got {shown})")
+    row = TIPS.get(kind)
+    if row is None:
+        raise BadInput(f"{shown}: this thinlayer has no {kind} tip yet (thinlayer.punch.TIPS: "
+                       f"{', '.join(TIPS)})")
+    named = [p for p in row.parameters if "sides" not in (p.name, *p.aliases)]
+    kwargs = {p.name: v for p, v in zip(named, values)}
+    if option == "--pyramid":
+        side = next((p for p in row.parameters if "sides" in (p.name, *p.aliases)), None)
+        if sides is not None and sides not in (3, 4):
+            raise BadInput(f"--sides {sides}: a pyramid has 3 or 4 sides")
+        if side is not None:
+            kwargs[side.name] = 4 if sides is None else sides
+    try:
+        return row.constructor(**kwargs)
+    except (ValueError, TypeError) as exc:
+        raise BadInput(f"{shown}: {exc}") from None
 
 
 def punch_params(items: list[str] | None) -> dict[str, float]:

@@ -86,7 +86,8 @@ CORE_SCHEMA: dict[str, dict[str, tuple[tuple[type, ...], str]]] = {
     "layer": {"model": ((str,), "'bonded' or 'frictionless'"),
               "nu": ((str, int, float), "'symbolic', an exact string like '3/10' or a number")},
     "coefficients": {"order": ((int,), "an integer from 1 to 30")},
-    "punch": {"kind": ((str,), "a catalogue name, or 'flat' (a flat-ended cylinder, with [flat_punch])"),
+    "punch": {"kind": ((str,), "a catalogue name, 'flat' (a flat-ended cylinder, with [flat_punch]) or a tip of "
+                               "revolution ('cone', 'sphere', 'blunted_cone', 'power_law', ... with its parameters)"),
               "expr": ((str,), "a polynomial in x_1, x_2 as a string")},
     "units": {"length": ((str,), "a length unit such as 'mm' or 'um'"),
               "stress": ((str,), "a stress unit such as 'MPa' or 'N/mm^2' (of mu and E)"),
@@ -103,7 +104,10 @@ class _Schema(Mapping):
     """
 
     def _tables(self) -> dict[str, dict[str, tuple[tuple[type, ...], str]]]:
-        return {**CORE_SCHEMA, **sections_schema()}
+        from .sections.tip import tip_parameters
+
+        core = {**CORE_SCHEMA, "punch": {**CORE_SCHEMA["punch"], **tip_parameters()}}
+        return {**core, **sections_schema()}
 
     def __getitem__(self, table: str) -> dict[str, tuple[tuple[type, ...], str]]:
         return self._tables()[table]
@@ -253,13 +257,19 @@ def _punch_table(pu: dict) -> tuple[Punch | None, frozenset]:
     """
     if ("kind" in pu) == ("expr" in pu):
         raise DerivationFileError("[punch] needs exactly one of 'kind' (a catalogue punch) or 'expr' (a polynomial)")
-    if pu.get("kind") == "flat":
+    from .sections.tip import tip_kinds
+
+    if pu.get("kind") == "flat" or pu.get("kind") in tip_kinds():  # the flat punch's or the tip's own section
         return None, frozenset()
     traits: frozenset = frozenset()
     if "kind" in pu:
         if pu["kind"] not in _KINDS:
             raise DerivationFileError(f"[punch] kind = {_short(pu['kind'])}: valid kinds are "
-                                      f"{sorted([*_KINDS, 'flat'])}")
+                                      f"{sorted([*_KINDS, 'flat', *tip_kinds()])}")
+        extra = sorted(set(pu) - {"kind"})
+        if extra:
+            raise DerivationFileError(f"[punch] kind = {pu['kind']!r} takes no parameters here ({extra}): give their "
+                                      "values in [contact] parameters")
         make, traits = _KINDS[pu["kind"]]
         punch = make()
     else:

@@ -109,19 +109,26 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
     """Add ``fit`` to the ``thinlayer`` subcommands; the handler is :func:`cmd_fit` (``func`` default)."""
     s = subparsers.add_parser(
         "fit", formatter_class=formatter_class, help="Young's modulus from a force-indentation curve (any thickness)",
-        description="Least-squares fit of E (optionally H and the contact point) to a sphere's force-indentation\n"
-                    "curve on a layer of any thickness (thinlayer.fit).  JSON keys: file, model, base, nu, R, E, "
-                    "E_se,\nH, H_se, offset, offset_se, residual_rms, n_points, fitted, condition, chi_max.",
+        description="Least-squares fit of E (optionally H and the contact point) to a force-indentation curve on\n"
+                    "a layer (thinlayer.fit): a sphere (--R, the paraboloid of radius R; any thickness) or another\n"
+                    "tip (--cone, --sphere, --blunted-cone, --power-law, --pyramid, --tip; the tip-law and direct "
+                    "models).\nJSON keys: file, model, base, nu, R (null for a tip other than the paraboloid), tip, "
+                    "E, E_se,\nH, H_se, offset, offset_se, residual_rms, n_points, fitted, condition, chi_max.",
         epilog="examples:\n  thinlayer fit curve.csv --R 5e-6 --H 3e-6 --nu 0.5 --json\n"
-               "  thinlayer fit curve.csv --columns depth,force --R 10 --H 2 --nu 0.3 --fit-offset --model hertz")
+               "  thinlayer fit curve.csv --columns depth,force --R 10 --H 2 --nu 0.3 --fit-offset --model hertz\n"
+               "  thinlayer fit curve.csv --cone 70 --H 0.2 --nu 0.3\n"
+               "  thinlayer fit curve.csv --blunted-cone 0.5 70 --H 0.2 --nu 0.3 --model tip-law --json")
     s.add_argument("csv", help="CSV file: a depth column and a force column (same length units as --R, --H)")
-    s.add_argument("--R", type=finite, required=True, help="sphere radius (> 0)")
+    s.add_argument("--R", type=finite, help="radius (> 0) of the sphere as a paraboloid r^2/(2R); or one tip below")
+    s.add_argument("--tip", metavar="KIND:key=value,...", help="a tip of thinlayer.punch.TIPS with its values, e.g. "
+                   "cone:half_angle=70, sphere:R=10")
     s.add_argument("--H", type=finite, required=True, help="layer thickness (> 0; the starting value with --fit-H)")
     s.add_argument("--nu", type=finite, required=True, help="Poisson ratio in (-1, 1/2]")
     s.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
                    help="the base under the layer (default bonded)")
-    s.add_argument("--model", choices=("any-thickness", "hertz", "dimitriadis2002", "garcia2018"),
-                   default="any-thickness", help="force model (default any-thickness)")
+    s.add_argument("--model", choices=FIT_MODEL_CHOICES, default=None,
+                   help="force model (default: any-thickness for --R, else the first model with a curve for the "
+                        "tip, tip-law for the tips of revolution; direct: the axisymmetric solver, tabulated)")
     s.add_argument("--fit-H", action="store_true", help="also fit the thickness")
     s.add_argument("--fit-offset", action="store_true", help="also fit the contact point (depth offset)")
     s.add_argument("--columns", default="0,1", help="depth and force columns: indices or header names (default 0,1)")
@@ -129,8 +136,37 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
     s.add_argument("--overwrite", action="store_true", help="replace --out if it exists")
     s.add_argument("--json", action="store_true", help="machine-readable JSON output (keys above)")
     s.add_argument("--quiet", action="store_true", help="no 'wrote ...' message")
+    from .cli_args import add_tip_shortcuts
+
+    add_tip_shortcuts(s)
     s.set_defaults(func=cmd_fit)
     return s
+
+
+#: fit()'s models (the registry's entries with a force curve for fitting, by preference), written out so that
+#: building the parser imports no scipy; a test keeps them equal to :data:`thinlayer.contact.fit.FIT_MODELS`
+FIT_MODEL_CHOICES = ("tip-law", "any-thickness", "direct", "hertz", "dimitriadis2002", "garcia2018")
+
+
+def _fit_tip(args: argparse.Namespace):
+    """The tip of ``--R`` (a paraboloid's radius, as a number), ``--tip`` or one tip option (exactly one)."""
+    from .cli_args import BadInput, shortcuts_given, tip_from_shortcut
+
+    given = [o for o, v in (("--R", args.R), ("--tip", args.tip)) if v is not None] + shortcuts_given(args)
+    if len(given) != 1:
+        raise BadInput("give exactly one of --R (a sphere as the paraboloid of radius R), --tip KIND:key=value,..., "
+                       "--cone ANGLE, --pyramid ANGLE, --sphere R, --blunted-cone R ANGLE, --power-law C N"
+                       + (f"; got {' and '.join(given)}" if given else ""))
+    if args.R is not None:
+        return args.R
+    if args.tip is not None:
+        from ..punch import tip_from_spec
+        from .cli_args import tip_needs_values
+
+        tip = tip_from_spec(args.tip)
+        tip_needs_values(tip, args.tip)
+        return tip
+    return tip_from_shortcut(args)
 
 
 def cmd_fit(args: argparse.Namespace) -> int:
@@ -141,10 +177,11 @@ def cmd_fit(args: argparse.Namespace) -> int:
 
     if args.out is not None:
         refuse_existing([args.out], args.overwrite)
+    punch = _fit_tip(args)
     delta, force = read_curve(args.csv, args.columns)
     with warnings.catch_warnings():  # a fit outside its model's range: the output says NOT VALID and why
         warnings.simplefilter("ignore", ValidityWarning)
-        res = fit(delta, force, punch=args.R, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
+        res = fit(delta, force, punch=punch, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
                   fit_offset=args.fit_offset, model=args.model)
     out = {"file": str(args.csv), **res.as_dict()}
     bad = [k for k, v in out.items() if isinstance(v, float) and not math.isfinite(v)]
@@ -155,8 +192,9 @@ def cmd_fit(args: argparse.Namespace) -> int:
     else:  # Unicode maths, in the command line's words
         from .solve_cli import cli_words, pretty
 
-        head = (f"fit of E by the {res.model} model: sphere R = {res.R:.6g} on a {res.base} layer, ν = {res.nu:.6g}; "
-                f"{res.n_points} points, χ_max = {res.chi_max:.3g}")
+        what, size = res.tip_words, "χ_max" if res.paraboloid else "(c/H)_max"
+        head = (f"fit of E by the {res.model} model: {what} on a {res.base} layer, ν = {res.nu:.6g}; "
+                f"{res.n_points} points, {size} = {res.chi_max:.3g}")
         text = "\n".join([head, *(pretty(cli_words(ln)) for ln in res.text_lines()[1:])])
     from .cli_args import print_text
 

@@ -357,7 +357,7 @@ def _table(answers: list[Any], swept: str) -> list[str]:
 # ---------------------------------------------------------------------------------------------
 def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
     """Add ``solve`` to the ``thinlayer`` subcommands; the handler is :func:`cmd_solve`."""
-    from .cli_args import add_punch_args, base_arg
+    from .cli_args import add_punch_args, add_tip_shortcuts, base_arg
 
     s = sub.add_parser(
         "solve", formatter_class=fmt, help="force, contact size and pressure for numeric parameters (or a sweep)",
@@ -383,7 +383,10 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                "  thinlayer solve --nu 0.49 --tip paraboloid:R=10 --delta0 0.1 --H 0.5 --mu 1 --verbose\n"
                "  thinlayer solve --nu 0.3 --tip paraboloid:R=10 --delta0 0.01:1:100 --H 0.1 --E 2 "
                "--format csv\n"
-               "  thinlayer solve --nu 0.45 --tip paraboloid:R=10 --delta0 0.1 --H 0.05,0.1,0.5,2 --mu 1")
+               "  thinlayer solve --nu 0.45 --tip paraboloid:R=10 --delta0 0.1 --H 0.05,0.1,0.5,2 --mu 1\n"
+               "  thinlayer solve --nu 0.3 --cone 70 --delta0 1 --H 0.1 --E 2\n"
+               "  thinlayer solve --nu 0.45 --blunted-cone 0.5 70 --delta0 1 --H 0.1 --E 2 --json\n"
+               "  thinlayer solve --nu 0.3 --sphere 10 --delta0 0.3 --H 0.1 --mu 1")
     base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
     s.add_argument("--H", type=parse_values, required=True,
@@ -404,6 +407,7 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
     s.add_argument("--boundary-layer", choices=("exact", "alexandrov"), default="exact",
                    help="boundary layer of the compressible model's composite pressure (default exact)")
     add_punch_args(s, flat=True)
+    add_tip_shortcuts(s)
     s.add_argument("--format", choices=("text", "json", "csv"), default=None,
                    help="output format (default text; --json is --format json)")
     s.add_argument("--output", type=Path, metavar="FILE",

@@ -15,8 +15,10 @@ A radial tip is given by its profile ``Phi(r)`` (a sympy expression in :data:`th
 * the order of the inner expansion (2.26) the shape supports, from the singularity of ``Laplacian^k Phi`` at the
   apex (:func:`apex_inner_order`).
 
-Angles are given in degrees (``Punch.cone(70)``: half-angle 70 degrees, ``0 < alpha < 90``); inside, and in a
-symbolic law, the angle symbol ``alpha`` is in radians.
+Angles are given in degrees (``Punch.cone(70)``: half-angle 70 degrees, ``0 < alpha < 90``), and a symbolic angle
+is in degrees too: the symbol ``alpha`` of ``Punch.cone()`` is the half-angle in degrees and every expression converts
+it explicitly, ``cot(pi alpha/180)``, so that ``Punch.cone().subs({"alpha": 70})``, ``Punch.cone().expr.subs(alpha,
+70)`` and ``Punch.cone(70)`` are one tip (issue 24 item 6: no unit trap between the printed law and its numbers).
 """
 from __future__ import annotations
 
@@ -39,7 +41,7 @@ sp = lazy_module("sympy")  # imported on first use: a numeric solve() never need
 
 #: the radius r of a profile Phi(r)
 r = RADIUS
-#: the half-angle of a cone (radians) when it is left symbolic
+#: the half-angle of a cone IN DEGREES when it is left symbolic (expressions use ``pi ALPHA/180``)
 ALPHA = sp.Symbol("alpha", positive=True)
 #: the most orders of Laplacian^k Phi examined at the apex (:func:`apex_inner_order`)
 MAX_APEX_ORDER = 8
@@ -62,7 +64,19 @@ def length_value(value: Any, name: str) -> sp.Expr:
 
 def angle_value(value: Any, name: str = "half-angle") -> sp.Expr:
     """A half-angle given in DEGREES, ``0 < alpha < 90``, returned in radians (exact ``p pi/180`` for an exact
-    input); the radian Symbol :data:`ALPHA` if None.
+    input); ``pi alpha/180`` for a symbol (:data:`ALPHA`, in degrees, if None).
+    """
+    return radians(angle_degrees(value, name))
+
+
+def radians(degrees: sp.Expr) -> sp.Expr:
+    """``pi degrees/180``: the explicit conversion every angle expression carries."""
+    return degrees * sp.pi / 180
+
+
+def angle_degrees(value: Any, name: str = "half-angle") -> sp.Expr:
+    """A half-angle in DEGREES, ``0 < alpha < 90``, kept in degrees (a positive Symbol in degrees; :data:`ALPHA`
+    if None).  The tip stores this and converts with :func:`radians` in its expressions.
     """
     if value is None:
         return ALPHA
@@ -75,7 +89,7 @@ def angle_value(value: Any, name: str = "half-angle") -> sp.Expr:
     if not (0 < deg < 90):
         raise PunchError(f"the {name} must lie strictly between 0 and 90 degrees (it is given in degrees, "
                          f"e.g. 70), got {value!r}")
-    return deg * sp.pi / 180
+    return deg
 
 
 def laplacian_r(f: sp.Expr) -> sp.Expr:
@@ -226,6 +240,18 @@ class RadialTip(Tip):
         """``"apex"`` when some ``Laplacian^k Phi`` is unbounded at r = 0, else ``"smooth"``."""
         return "apex" if apex_inner_order(self.radial_expr)[1] else "smooth"
 
+    @property
+    def rim_depth(self) -> float:
+        """``Phi`` at the rim :attr:`support_radius` (``inf`` without a rim): the deepest depth with a level set.
+        Read just inside the rim when the rim itself rounds out of the profile's domain (the exact sphere with a
+        float ``R``: ``R^2 - r^2`` rounds below zero at ``r = R``).
+        """
+        rim = self.support_radius
+        if not math.isfinite(rim):
+            return math.inf
+        top = float(self.radial_profile(np.array([rim]))[0])
+        return top if math.isfinite(top) else float(self.radial_profile(np.array([rim * (1 - 4e-16)]))[0])
+
     # ---- level set -----------------------------------------------------------------------------------
     def contact_radius_expr(self) -> sp.Expr | None:
         """The radius ``a(delta0)`` of ``{Phi < delta0}`` in closed form, or None (then by root finding)."""
@@ -249,7 +275,7 @@ class RadialTip(Tip):
         self._need_numbers("its level set")
         d = positive_depth(delta0)
         rim = self.support_radius
-        if math.isfinite(rim) and not d < float(self.radial_profile(np.array([rim]))[0]):
+        if math.isfinite(rim) and not d < self.rim_depth:
             raise PunchError(f"the depth delta0 = {d:g} reaches the rim of the {self.name} (r = "
                              f"{self.support_radius:g}): its level set needs delta0 below Phi there")
         exprs = self.level_set_expressions()
@@ -331,5 +357,5 @@ def check_profile(tip: RadialTip) -> None:
                          f"r = {rr[bad + 1]:.4g}")
 
 
-__all__ = ["ALPHA", "RadialTip", "angle_value", "apex_inner_order", "check_profile", "laplacian_r", "length_value",
-           "r"]
+__all__ = ["ALPHA", "RadialTip", "angle_degrees", "angle_value", "apex_inner_order", "check_profile", "laplacian_r",
+           "length_value", "r", "radians"]

@@ -21,7 +21,7 @@ from typing import Any, ClassVar
 
 from .._lazy import lazy_module
 from ..errors import boundary_methods
-from ._radial import RadialTip, angle_value, length_value, r
+from ._radial import RadialTip, angle_degrees, length_value, r, radians
 from .base import TipKind, TipParameter, register_tip
 
 sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
@@ -45,7 +45,7 @@ class BluntedCone(RadialTip):
     name: ClassVar[str] = "blunted cone"
 
     def __init__(self, R: Any = None, half_angle: Any = None) -> None:
-        object.__setattr__(self, "values", (("R", length_value(R, "R")), ("half_angle", angle_value(half_angle))))
+        object.__setattr__(self, "values", (("R", length_value(R, "R")), ("half_angle", angle_degrees(half_angle))))
 
     def _rebuild(self, values: dict) -> BluntedCone:
         return BluntedCone(values["R"], values["half_angle"])
@@ -57,7 +57,12 @@ class BluntedCone(RadialTip):
 
     @property
     def alpha(self) -> sp.Expr:
-        """The half-angle in radians."""
+        """The half-angle in radians: ``pi alpha/180`` of the half-angle in degrees (:attr:`half_angle`)."""
+        return radians(self.half_angle)
+
+    @property
+    def half_angle(self) -> sp.Expr:
+        """The half-angle in degrees (a number, or the symbol ``alpha`` in degrees)."""
         return self.values[1][1]
 
     @property

@@ -20,7 +20,7 @@ from typing import Any, ClassVar
 from .. import symbols as S
 from .._lazy import lazy_module
 from ..errors import boundary_methods
-from ._radial import RadialTip, angle_value, r
+from ._radial import RadialTip, angle_degrees, r, radians
 from .base import TipKind, TipParameter, register_tip
 
 sp = lazy_module("sympy")  # imported on first use: a numeric solve() never needs it
@@ -35,7 +35,8 @@ class Cone(RadialTip):
     ----------
     half_angle : number or str, optional
         In DEGREES, ``0 < alpha < 90`` (``Cone(70)``; a string is read by the restricted grammar).  Left out, the
-        angle is the symbol ``alpha`` (in radians) for a symbolic law.
+        angle is the symbol ``alpha``, IN DEGREES like the number, for a symbolic law: ``Phi = r cot(pi alpha/180)``
+        (``Cone().subs({"alpha": 70})`` is ``Cone(70)``).
 
     Examples
     --------
@@ -50,14 +51,19 @@ class Cone(RadialTip):
     name: ClassVar[str] = "cone"
 
     def __init__(self, half_angle: Any = None) -> None:
-        object.__setattr__(self, "values", (("half_angle", angle_value(half_angle)),))
+        object.__setattr__(self, "values", (("half_angle", angle_degrees(half_angle)),))
 
     def _rebuild(self, values: dict) -> Cone:
         return Cone(values["half_angle"])
 
     @property
     def alpha(self) -> sp.Expr:
-        """The half-angle in radians."""
+        """The half-angle in radians: ``pi alpha/180`` of the half-angle in degrees (:attr:`half_angle`)."""
+        return radians(self.half_angle)
+
+    @property
+    def half_angle(self) -> sp.Expr:
+        """The half-angle in degrees (a number, or the symbol ``alpha`` in degrees)."""
         return self.values[0][1]
 
     @property

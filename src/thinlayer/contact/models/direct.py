@@ -22,7 +22,7 @@ from .base import ForceCurve, Model, register_model
 from .common import depth_for_force, extent_of, fast_size
 from .flat import FlatPunchModel, flat_answer, flat_curve
 
-__all__ = ["AxisymmetricDirect", "FFTDirect", "FlatExact", "MAX_CELLS_2D", "direct_solution"]
+__all__ = ["AxisymmetricDirect", "DirectTable", "FFTDirect", "FlatExact", "MAX_CELLS_2D", "direct_solution"]
 
 #: cells per side of the 2D direct solver at most (memory about 1 GB at 1024, see numerics.fft2d.memory_estimate)
 MAX_CELLS_2D = 1024
@@ -167,9 +167,116 @@ class AxisymmetricDirect(_SmoothDirect):
 
     preference = 91
     axisymmetric = True
+    fits = True
 
     def applies(self, problem: Problem) -> str | None:
         return self.shape_reason(problem)
+
+    def force_curve(self, problem: Problem) -> ForceCurve | None:
+        """The solver's force against depth, tabulated and interpolated (:class:`DirectTable`), for a tip that is not a
+        polynomial (a polynomial punch has closed-form curves: the compressible and any-thickness models).
+        """
+        if self.skips(problem) or not problem.tip.is_numeric or problem.tip.polynomial is not None:
+            return None
+        key = (problem.layer, problem.tip, problem.H, problem.nu, problem.n)
+
+        def table(H):
+            k = key[:2] + (H,) + key[3:]
+            if k not in _TABLES:
+                if len(_TABLES) >= 32:
+                    _TABLES.pop(next(iter(_TABLES)))
+                _TABLES[k] = DirectTable(*k)
+            return _TABLES[k]
+
+        own = table(problem.H)
+
+        def force(d):
+            P, c, est = own.values(d)
+            return P, np.pi * c * c, est
+
+        def slopes(d):
+            # d log P/d log H by central differences between tables at H (1 +- 0.5 %)
+            lo, hi = table(problem.H * (1 - H_STEP)), table(problem.H * (1 + H_STEP))
+            gH = (np.log(hi.values(d)[0]) - np.log(lo.values(d)[0])) / (math.log1p(H_STEP) - math.log1p(-H_STEP))
+            return own.slope(d), gH
+
+        return ForceCurve(self.name, problem.tol, force, radius_law=lambda d: own.values(d)[1], slopes=slopes)
+
+
+#: relative step in H of the direct force curve's d log P/d log H (central differences: error ~ H_STEP^2)
+H_STEP = 5e-3
+#: table nodes per factor e of depth (cubic splines in log P against log delta0), and the fewest nodes
+NODES_PER_E, MIN_NODES = 4.0, 7
+_TABLES: dict = {}
+
+
+class DirectTable:
+    r"""The direct axisymmetric solution tabulated against the depth: a cubic spline of ``log P`` and ``log c``
+    against ``log delta0`` through solver runs at geometric depths, extended when asked outside its range.
+
+    Estimate at a depth: the solver's own (its runs at fewer modes at the first, middle and last node, the largest;
+    the solver's error changes slowly with the depth) plus the
+    interpolation's, measured as the difference between the spline through every node and the spline through
+    every other node at the nodes left out (the coarser spline's error: a cubic spline's error falls like
+    ``h^4``, so this bounds the finer one's with a margin of about 16).
+    """
+
+    def __init__(self, layer, tip, H, nu, n):
+        self.args = (layer, tip, H, nu, n)
+        self.lo = self.hi = None
+
+    def _build(self, lo: float, hi: float) -> None:
+        from scipy.interpolate import CubicSpline
+
+        from ...numerics import solve_axisymmetric
+
+        layer, tip, H, nu, n = self.args
+        free_nu = nu if layer.numeric_nu is None else None
+        m = max(MIN_NODES, int(math.ceil(NODES_PER_E * math.log(hi / lo))) + 1)
+        m += (m + 1) % 2  # odd: the every-other-node spline keeps both ends
+        x = np.linspace(math.log(lo), math.log(hi), m)
+        checked = {0, m // 2, m - 1}  # the solver's estimate (runs at fewer modes) at the ends and the middle
+        runs = [solve_axisymmetric(layer, tip, math.exp(v), H, 1.0, n=n, nu=free_nu, error_estimate=i in checked)
+                for i, v in enumerate(x)]
+        logP = np.log([r.force for r in runs])
+        logc = np.log([r.radius for r in runs])
+        own = max(max(runs[i].force_error, 2 * runs[i].radius_error / runs[i].radius) for i in checked)
+        solver = np.full(m, max(own, 1e-9))
+        fine, fine_c = CubicSpline(x, logP), CubicSpline(x, logc)
+        coarse, coarse_c = CubicSpline(x[::2], logP[::2]), CubicSpline(x[::2], logc[::2])
+        interp = np.maximum(np.abs(np.expm1(coarse(x[1::2]) - logP[1::2])),
+                            2 * np.abs(np.expm1(coarse_c(x[1::2]) - logc[1::2])))
+        self.interp = float(np.max(interp))
+        self.x, self.solver, self.fine, self.fine_c = x, solver, fine, fine_c
+        self.lo, self.hi = lo, hi
+
+    def _cover(self, d: np.ndarray) -> None:
+        pos = d[(d > 0) & np.isfinite(d)]
+        if not pos.size:
+            return
+        lo, hi = float(pos.min()), float(pos.max())
+        if self.lo is not None and self.lo <= lo and hi <= self.hi:
+            return
+        if self.lo is not None:
+            lo, hi = min(lo, self.lo), max(hi, self.hi)
+        self._build(lo / 1.2, hi * 1.2)
+
+    def values(self, d: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(P, c, estimate)`` at the depths (mu = 1)."""
+        d = np.asarray(d, dtype=float)
+        self._cover(d)
+        with np.errstate(all="ignore"):
+            x = np.log(d)
+            i = np.clip(np.searchsorted(self.x, np.where(np.isfinite(x), x, self.x[0])), 1, self.x.size - 1)
+            est = np.maximum(self.solver[i - 1], self.solver[i]) + self.interp
+            return np.exp(self.fine(x)), np.exp(self.fine_c(x)), est
+
+    def slope(self, d: Any) -> np.ndarray:
+        """``d log P/d log delta0`` (the spline's derivative)."""
+        d = np.asarray(d, dtype=float)
+        self._cover(d)
+        with np.errstate(all="ignore"):
+            return self.fine(np.log(d), 1)
 
 
 class FFTDirect(_SmoothDirect):

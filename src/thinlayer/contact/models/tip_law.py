@@ -29,7 +29,7 @@ import numpy as np
 from ...asymptotics.solution import ValidityError
 from ..indentation import Indentation
 from ..problem import Problem
-from .base import Model, register_model
+from .base import ForceCurve, Model, register_model
 from .common import LazyExtent, depth_for_force
 
 __all__ = ["TipLawModel", "tip_law_estimate"]
@@ -46,8 +46,9 @@ def tip_law_estimate(P0: float, P1: float, H_over_a: float) -> dict[str, float]:
     """The relative estimates of the force, contact radius and area (module docstring)."""
     r1 = abs(P1 / P0)
     x = H_over_a
-    force = FACTOR * (r1 * x + r1 * r1 + BASE_FORCE * x**3)
-    radius = RADIUS_FACTOR * r1 + BASE_RADIUS * x**3
+    x3 = x * x * x
+    force = FACTOR * (r1 * x + r1 * r1 + BASE_FORCE * x3)
+    radius = RADIUS_FACTOR * r1 + BASE_RADIUS * x3
     return {"force": force, "contact_radius": radius, "contact_area": 2.0 * radius}
 
 
@@ -71,6 +72,7 @@ class TipLawModel(Model):
     name = "tip-law"
     preference = 15
     asymptotic = True
+    fits = True
     equations = ("1.8", "3.25")
 
     def refuses(self, problem: Problem) -> str | None:
@@ -89,6 +91,34 @@ class TipLawModel(Model):
             return f"the inner expansion of the {tip.name} stops before order 1 (no first correction)"
         return None
 
+    def force_curve(self, problem: Problem) -> ForceCurve | None:
+        """The law at ``mu = 1`` on arrays of depths (:meth:`~thinlayer.asymptotics.tip_law.TipForceLaw.arrays`),
+        its estimate :func:`tip_law_estimate` (the largest of force and area), the radius ``c = a - h^* H`` (3.25) and
+        the slopes ``d log P/d log delta0 = delta0 P'/P``, ``d log P/d log H = (P1 - P0)/P`` (``P0 ~ 1/H``,
+        ``P1 ~ H``).  None for a tip or layer the model refuses.
+        """
+        if self.refuses(problem) or self.applies(problem) or not problem.tip.is_numeric:
+            return None
+        law, H, nu = _law(problem.layer, problem.tip), problem.H, problem.nu
+        shift = _edge_shift(problem.layer) * H
+
+        def force(d):
+            out = law.arrays(d, H, 1.0, nu, derivative=False)
+            P0, P1, a = out["P0"], out["P1"], out["radius"]
+            est = tip_law_estimate(P0, P1, H / a)
+            c = a - shift
+            return P0 + P1, np.pi * c * c, np.maximum(est["force"], est["contact_area"])
+
+        def slopes(d):
+            out = law.arrays(d, H, 1.0, nu)
+            P = out["P0"] + out["P1"]
+            return d * out["dP"] / P, (out["P1"] - out["P0"]) / P
+
+        def radius(d):
+            return law.arrays(d, H, 1.0, nu, derivative=False)["radius"] - shift
+
+        return ForceCurve(self.name, problem.tol, force, radius_law=radius, slopes=slopes)
+
     def _at(self, problem: Problem, delta0: float) -> tuple[float, float, float, float, dict]:
         """``(P, P0, P1, a, estimate)`` at a depth."""
         law = _law(problem.layer, problem.tip)
@@ -102,7 +132,7 @@ class TipLawModel(Model):
         rim = tip.support_radius
         if problem.force is not None:
             def force_of(d):
-                if math.isfinite(rim) and not d < float(tip.radial_profile(np.array([rim]))[0]):
+                if math.isfinite(rim) and not d < tip.rim_depth:
                     return math.inf
                 return self._at(problem, d)[0]
 

@@ -165,10 +165,11 @@ from . import (  # noqa: E402 - the registry above is what they register into
     kernel,
     references,
     second_order,
+    tip,
     two_term,
     validation,
 )
 
-for _section in (intro, kernel, inner, boundary_layer, two_term, incompressible, edge_shift, second_order, contact,
-                 validation, flat_punch, errata, references):
+for _section in (intro, kernel, inner, boundary_layer, two_term, incompressible, edge_shift, tip, second_order,
+                 contact, validation, flat_punch, errata, references):
     register_section(_section)

@@ -92,6 +92,11 @@ def compressible_bonded(layer: Any) -> bool:
 def polynomial_only(key: str, table: Any, context: ParseContext) -> None:
     """Refuse the table ``[key]`` beside a flat punch: it is for a polynomial punch."""
     if table is not None and context.punch is None:
+        kind = context.tables.get("punch", {}).get("kind")
+        if kind != "flat":
+            raise DerivationFileError(f"[{key}] is for a polynomial punch; with [punch] kind = {kind!r} the report "
+                                      "is the tip's section with its table of [tip] (thinlayer solve --tip for one "
+                                      "contact)")
         raise DerivationFileError(f"[{key}] is for a polynomial punch; with [punch] kind = 'flat' the report "
                                   "is the table of [flat_punch] (thinlayer solve --flat for one contact)")
 

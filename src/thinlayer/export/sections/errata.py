@@ -72,8 +72,8 @@ def equations_used(latex: str) -> set[str]:
 
 def punch_kinds(der: Any) -> set[str]:
     """The kinds of :data:`thinlayer.errata.PUNCHES` a derivation's punch belongs to."""
-    if der.punch is None:
-        return {"flat"}
+    if der.punch is None:  # the flat punch, or a tip of revolution (its own section)
+        return {"axisymmetric"} if der.sections.get("tip") is not None else {"flat"}
     kinds = {"smooth", *der.punch_traits}  # the catalogue punch's: "sphere", "elliptic paraboloid"
     if axisymmetric(der.punch):
         kinds.add("axisymmetric")

@@ -33,7 +33,7 @@ def parse(ft: Any, context: Any) -> dict | None:
     A flat punch (``[punch] kind = "flat"``) without the table gets :data:`FLAT_DEFAULT`.
     """
     if ft is None:
-        return dict(FLAT_DEFAULT) if context.punch is None else None
+        return dict(FLAT_DEFAULT) if context.tables.get("punch", {}).get("kind") == "flat" else None
     out = {}
     for key, lo, hi, most in (("a_over_H", 0.0, 200.0, 30), ("nu", -1.0, 0.5, 8)):
         vals = ft.get(key, FLAT_DEFAULT[key])
