@@ -38,9 +38,11 @@ def _reference(phi, delta0: float, H: float, mu: float, c_hi: float, joins=()) -
 def test_cone_closed_form_is_derived_and_equals_quadrature():
     sol = incompressible_tip(tl.Punch.cone())
     alpha = next(q for q in sol.tip.parameters if q.name == "alpha")
-    # (I.9a): c = 3 delta0 tan(alpha)/2;  (I.9c): P = 243 pi mu tan^4(alpha) delta0^5/(640 H^3)  (ladder: ==, cancel)
-    c_expected = 3 * S.delta0 * sp.tan(alpha) / 2
-    P_expected = 243 * sp.pi * S.mu * sp.tan(alpha) ** 4 * S.delta0**5 / (640 * S.H**3)
+    # (I.9a): c = 3 delta0 tan(alpha)/2;  (I.9c): P = 243 pi mu tan^4(alpha) delta0^5/(640 H^3)  (ladder: ==, cancel);
+    # the symbol alpha is the angle in degrees, so the expressions carry pi alpha/180
+    rad = sp.pi * alpha / 180
+    c_expected = 3 * S.delta0 * sp.tan(rad) / 2
+    P_expected = 243 * sp.pi * S.mu * sp.tan(rad) ** 4 * S.delta0**5 / (640 * S.H**3)
     assert sol.radius == c_expected or sp.cancel(sol.radius - c_expected) == 0
     assert sol.force == P_expected or sp.cancel(sp.expand_trig(sol.force - P_expected)) == 0
     # numbers: the closed form, the engine's quadrature and an independent mpmath double integral

@@ -214,8 +214,8 @@ def incompressible_tip(tip: Tip) -> IncompressibleTip:
     --------
     >>> from thinlayer import Punch
     >>> sol = incompressible_tip(Punch.cone())
-    >>> sol.radius
-    3*delta_0*tan(alpha)/2
+    >>> sol.radius                    # alpha in degrees: the expressions carry pi alpha/180
+    3*delta_0*tan(pi*alpha/180)/2
     """
     if not isinstance(tip, Tip) or is_polynomial_tip(tip) or not tip.axisymmetric:
         raise InputTypeError(f"incompressible_tip() takes a tip of revolution that is not a polynomial punch "
