@@ -6,14 +6,11 @@ Every material here is isotropic and linear with a **constant Poisson ratio** ``
 (the correspondence principle needs nothing more).  At ``nu = 1/2`` (incompressible) the correspondence is exact
 for any ``E(t)``, since ``nu`` cannot relax.
 
-=========================  ===================================================  ==================================
-material                   relaxation modulus ``E(t)``                          complex modulus ``E*(omega)``
-=========================  ===================================================  ==================================
-:class:`Prony`             ``E_inf + sum_i E_i exp(-t/tau_i)``                  ``E_inf + sum_i E_i i w tau_i/(1 + i w tau_i)``
-:class:`StandardLinearSolid` ``E_inf + (E0 - E_inf) exp(-t/tau)``                Prony with one term
-:class:`KelvinVoigt`       ``E + eta delta(t)`` (Dirac delta)                   ``E + i w eta``
-:class:`PowerLaw`          ``E0 (t/t0)^(-alpha)``, ``0 < alpha < 1``            ``E0 Gamma(1 - alpha) (i w t0)^alpha``
-=========================  ===================================================  ==================================
+* :class:`Prony`: ``E(t) = E_inf + sum_i E_i exp(-t/tau_i)``,
+  ``E*(w) = E_inf + sum_i E_i i w tau_i/(1 + i w tau_i)``;
+* :func:`StandardLinearSolid`: ``E(t) = E_inf + (E0 - E_inf) exp(-t/tau)``, a one-term Prony series;
+* :class:`KelvinVoigt`: ``E(t) = E + eta delta(t)`` (Dirac delta), ``E*(w) = E + i w eta``;
+* :class:`PowerLaw`: ``E(t) = E0 (t/t0)^(-alpha)``, ``0 < alpha < 1``, ``E*(w) = E0 Gamma(1 - alpha) (i w t0)^alpha``.
 
 The complex modulus is ``E*(w) = i w int_0^inf E(t) exp(-i w t) dt`` (the Prony constant ``E_inf`` as the limit).
 The Kelvin-Voigt impulse ``eta delta(t)`` is not a function: :meth:`KelvinVoigt.relaxation` returns its regular
@@ -200,7 +197,8 @@ class KelvinVoigt(Material):
 class PowerLaw(Material):
     r"""Power-law rheology: ``E(t) = E0 (t/t0)^(-alpha)``, ``0 < alpha < 1`` (``E(0+)`` infinite).
 
-    >>> abs(complex(PowerLaw(1.0, 1.0, 0.5).complex_modulus(1.0)) - math.sqrt(math.pi) * (1 + 1j) / math.sqrt(2)) < 1e-15
+    >>> z = complex(PowerLaw(1.0, 1.0, 0.5).complex_modulus(1.0))    # Gamma(1/2) i^(1/2)
+    >>> abs(z - math.sqrt(math.pi) * (1 + 1j) / math.sqrt(2)) < 1e-15
     True
     """
 
