@@ -27,13 +27,14 @@ def test_standard_linear_solid_is_a_one_term_prony_series():
     assert StandardLinearSolid(2.0, 2.0, 1.0).terms == ()  # E0 = E_inf: elastic
 
 
-@pytest.mark.parametrize("omega", [0.01, 0.7, 3.0, 40.0])
+@pytest.mark.parametrize("omega", [0.01, 0.7, 3.0, 25.0])
 def test_prony_complex_modulus_against_quadrature(omega):
     # E*(w) = i w int_0^inf E(t) exp(-i w t) dt; the branch E_i exp(-t/tau_i) by mpmath quadrature
-    m = Prony(0.5, [(2.0, 0.1), (1.0, 3.0)])
+    m = Prony(0.5, [(2.0, 0.1), (1.0, 0.6)])
     quad = m.E_inf
     for e, tau in m.terms:
-        pts = mpmath.linspace(0, 80 * tau, 400)  # exp(-80) ~ 2e-35: the tail is below the tolerance
+        # [0, 40 tau] (the tail exp(-40) ~ 4e-18 is below the tolerance) cut every half period
+        pts = mpmath.linspace(0, 40 * tau, max(8, math.ceil(40 * tau * omega / math.pi)) + 1)
         re = mpmath.quad(lambda t: e * mpmath.exp(-t / tau) * mpmath.cos(omega * t), pts)
         im = mpmath.quad(lambda t: -e * mpmath.exp(-t / tau) * mpmath.sin(omega * t), pts)
         quad += complex(1j * omega * complex(re, im))
