@@ -95,3 +95,13 @@ def test_bad_input_is_one_line(kwargs, kind, words):
     with pytest.raises(kind) as exc:
         viscoelastic_force(**args)
     assert words in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_depths_outside_the_elastic_law_are_flagged_with_everything_after():
+    # the elliptic paraboloid has the thin-layer law only: a ramp from zero starts where its estimate exceeds tol
+    t = np.linspace(0.0, 1.0, 21)
+    out = viscoelastic_force(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), 0.05, SLS, t, 0.1 * t)
+    assert out.model == "compressible" and not out.valid[1:].any() and "estimate exceeds tol" in out.reason
+    # the same punch stepped to a depth where the law holds, then ramped: valid throughout
+    out = viscoelastic_force(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), 0.05, SLS, t, 0.05 + 0.1 * t)
+    assert out.valid.all() and np.all(np.diff(out.force) > 0)
