@@ -78,6 +78,7 @@ def test_result_is_read_only_and_the_users_arrays_are_untouched():
     with pytest.raises(AttributeError):
         out.reason = "x"
     assert out.latex().startswith(r"P(t) = \frac{1}{2(1+\nu)}")
+    assert repr(out) == "<ViscoelasticForce: any-thickness law, 11 times>"
 
 
 @pytest.mark.parametrize("kwargs, kind, words", [

@@ -187,6 +187,11 @@ class ViscoelasticForce:
         return (r"P(t) = \frac{1}{2(1+\nu)}\int_0^t E(t-s)\,\frac{d}{ds}F\big(\delta(s)\big)\,ds,\quad "
                 + self.material.latex() + rf",\ \nu = {self.nu:.4g}\ \text{{({self.model})}}")
 
+    def __repr__(self) -> str:
+        n_bad = int((~self.valid).sum())
+        return (f"<ViscoelasticForce: {self.model} law, {len(self.times)} times"
+                + (f", {n_bad} NOT VALID>" if n_bad else ">"))
+
     def __str__(self) -> str:
         n_bad = int((~self.valid).sum())
         return (f"ViscoelasticForce ({self.model} law, {len(self.times)} times, nu = {self.nu:.4g}, H = {self.H:.6g}): "
