@@ -106,3 +106,12 @@ def test_depths_outside_the_elastic_law_are_flagged_with_everything_after():
     # the same punch stepped to a depth where the law holds, then ramped: valid throughout
     out = viscoelastic_force(BondedLayer(0.3), Punch.elliptic_paraboloid(4, 1), 0.05, SLS, t, 0.05 + 0.1 * t)
     assert out.valid.all() and np.all(np.diff(out.force) > 0)
+
+
+def test_runaway_histories_are_refused_before_any_work():
+    from thinlayer.contact.hereditary import MAX_STEPS
+    from thinlayer.errors import WorkLimitError
+
+    n = MAX_STEPS + 1
+    with pytest.raises(WorkLimitError, match="subsample the history"):
+        viscoelastic_force(BondedLayer(0.3), Punch.paraboloid(10.0), 1.0, SLS, range(n), range(n))
