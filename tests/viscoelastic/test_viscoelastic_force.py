@@ -115,3 +115,5 @@ def test_runaway_histories_are_refused_before_any_work():
     n = MAX_STEPS + 1
     with pytest.raises(WorkLimitError, match="subsample the history"):
         viscoelastic_force(BondedLayer(0.3), Punch.paraboloid(10.0), 1.0, SLS, range(n), range(n))
+    with pytest.raises(WorkLimitError, match="subsample the history"):
+        viscoelastic_force(BondedLayer(0.3), Punch.paraboloid(10.0), 1.0, SLS, np.zeros(n), np.zeros(n))

@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import check_array_size, parse_nu, positive
+from .._checks import check_array_size, check_bounded, parse_nu, positive
 from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import InputError, InputTypeError, WorkLimitError, boundary
 from ..layers.kernels import LayerKernel
@@ -285,6 +285,9 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
         raise InputError(f"model must be one of {', '.join(names)}; got {model!r}")
     for name, v in (("times", times), ("depths", depths)):
         check_array_size(v, name, MAX_STEPS, "1e6 nodes take ~1 s and 0.12 GB; subsample the history")
+        if not isinstance(v, (list, tuple, np.ndarray)) and hasattr(v, "__len__"):  # a range: counted too
+            check_bounded(len(v), f"the number of values of {name}", MAX_STEPS,
+                          "1e6 nodes take ~1 s and 0.12 GB; subsample the history")
     try:
         t = np.array(times, dtype=float)  # copies: the result's arrays are made read-only
         d = np.array(depths, dtype=float)
