@@ -18,7 +18,8 @@ for such ``F`` they are exact (to rounding):
   cumulative sums (O(N) per history, vectorised);
 * power law: product integration, ``int E(t_n - s) ds`` over each step in closed form; by FFT convolution on a
   uniform grid, else O(N^2) (refused beyond :data:`MAX_NONUNIFORM_POWER` steps before any work);
-* Kelvin-Voigt: ``E F(t_n) + eta r_n`` (the impulse ``eta delta(t)`` as the rate over the step ending at ``t_n``).
+* Kelvin-Voigt: ``E F(t_n) + eta r_n`` (the impulse ``eta delta(t)`` as the rate over the step ending at ``t_n``:
+  the left derivative of the piecewise-linear ``F``; for a smooth history, first order in the step).
 
 Where the contact shrinks, Lee-Radok does not hold (Ting's method is needed, not in this slice): those times are
 flagged and their force is NaN, as is every time after the first shrink.
