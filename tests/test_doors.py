@@ -163,8 +163,29 @@ def _layer_doors() -> dict[str, list]:
 
 
 #: every door that takes a user value: ``name -> [call(payload), ...]``, one call per argument position
+def _material(name: str):
+    return {"Prony": lambda: tl.Prony(1.0, [(1.0, 1.0)]), "KelvinVoigt": lambda: tl.KelvinVoigt(1.0, 1.0),
+            "PowerLaw": lambda: tl.PowerLaw(1.0, 1.0, 0.5)}[name]()
+
+
 INVENTORY: dict[str, list] = {
     **_layer_doors(),
+    # viscoelastic materials and the Lee-Radok force history (issue 27)
+    "thinlayer.Prony": [lambda s: tl.Prony(s), lambda s: tl.Prony(1.0, s), lambda s: tl.Prony(1.0, [(s, 1.0)]),
+                        lambda s: tl.Prony(1.0, [(1.0, s)])],
+    "thinlayer.StandardLinearSolid": [lambda s: tl.StandardLinearSolid(s, 1, 1),
+                                      lambda s: tl.StandardLinearSolid(2, s, 1),
+                                      lambda s: tl.StandardLinearSolid(2, 1, s)],
+    "thinlayer.KelvinVoigt": [lambda s: tl.KelvinVoigt(s, 1), lambda s: tl.KelvinVoigt(1, s)],
+    "thinlayer.PowerLaw": [lambda s: tl.PowerLaw(s, 1, 0.5), lambda s: tl.PowerLaw(1, s, 0.5),
+                           lambda s: tl.PowerLaw(1, 1, s)],
+    **{f"thinlayer.{c}.{m}": [lambda s, c=c, m=m: getattr(_material(c), m)(s)]
+       for c in ("Prony", "KelvinVoigt", "PowerLaw") for m in ("relaxation", "complex_modulus")},
+    "thinlayer.viscoelastic_force": [
+        lambda s, k=k: tl.viscoelastic_force(**{**dict(layer=tl.BondedLayer(0.3), punch=tl.Punch.paraboloid(10),
+                                                       H=1.0, material=tl.Prony(1.0), times=[0.0, 1.0],
+                                                       depths=[0.0, 0.1]), k: s})
+        for k in ("layer", "punch", "H", "material", "times", "depths", "nu", "tol", "model")],
     # constructors of the layers and the punch
     "thinlayer.BondedLayer": [lambda s: tl.BondedLayer(s), lambda s: tl.BondedLayer(parameter=s),
                               lambda s: tl.BondedLayer(0.3, dps=s)],
@@ -531,7 +552,8 @@ RESULT_CLASSES = (
     "thinlayer.asymptotics.second_order.SecondOrderLaw", "thinlayer.asymptotics.second_order.SecondOrderValues",
     "thinlayer.asymptotics.solution.ContactSolution", "thinlayer.asymptotics.solution.ForceArrays",
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution", "thinlayer.contact.any_thickness.AnyThicknessLaw",
-    "thinlayer.contact.fit.FitResult", "thinlayer.contact.indentation.DirectComparison",
+    "thinlayer.contact.fit.FitResult", "thinlayer.contact.hereditary.ViscoelasticForce",
+    "thinlayer.contact.indentation.DirectComparison",
     "thinlayer.numerics.AxisymmetricContact",
     "thinlayer.numerics.Contact2D", "thinlayer.numerics.GridContact",
 )

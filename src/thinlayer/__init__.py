@@ -42,6 +42,9 @@ _PUBLIC = {
     **dict.fromkeys(["Indentation", "solve"], "thinlayer.contact.solve"),
     **dict.fromkeys(["any_thickness_law", "force_any_thickness"], "thinlayer.contact.any_thickness"),
     "fit": "thinlayer.contact.fit",
+    # viscoelastic materials and the Lee-Radok force history (issue 27, first slice)
+    "viscoelastic_force": "thinlayer.contact.hereditary",
+    **dict.fromkeys(["Prony", "StandardLinearSolid", "KelvinVoigt", "PowerLaw"], "thinlayer.contact.materials"),
     "force_arrays": "thinlayer.asymptotics.solution",
     **dict.fromkeys(["solve_2d", "solve_axisymmetric"], "thinlayer.numerics"),
     **dict.fromkeys(["MissingArgumentError", "checked_lambdify"], "thinlayer.results"),
