@@ -39,7 +39,8 @@ def pytest_unconfigure(config):
         os.environ[_CACHE_ENV] = before
     shutil.rmtree(folder, ignore_errors=True)
 #: shared fixtures that join a named group: tests that build the same things without the fixture join it too
-FIXTURE_GROUPS = {"catalogue_report": "catalogue-reports", "sphere_latex": "catalogue-reports"}
+FIXTURE_GROUPS = {"catalogue_report": "catalogue-reports", "sphere_latex": "catalogue-reports",
+                  "validate_cli_run": "validation-study", "small_study": "validation-study"}
 
 
 def _shared_fixtures(item) -> set[str]:
@@ -97,6 +98,53 @@ def pytest_collection_modifyitems(config, items):
     for item in items:
         if "slow" in item.keywords:
             item.add_marker(skip)
+
+
+@pytest.fixture(scope="session")
+def validate_cli_run(tmp_path_factory):
+    """``thinlayer validate <args>`` run once per argument list and shared (xdist group ``validation-study``).
+
+    Returns a function ``run(argv) -> SimpleNamespace(code, out, err, folder, study)``: the command runs in this
+    process through ``thinlayer.export.cli.main(argv)`` in a fresh folder (``folder``), stdout and stderr
+    captured; ``study`` is the :class:`~thinlayer.validation.ValidationStudy` the command computed, caught on its
+    way out of ``validation_study`` (the command itself runs unchanged).  The README's
+    ``thinlayer validate --out validation --plots`` (tests/test_readme.py) and the ``small_study`` fixture of
+    tests/validation (its sphere cases at nu = 0.3, 0.45) are one run of the default study.
+    """
+    import contextlib
+    import io
+    from types import SimpleNamespace
+
+    from thinlayer.export.cli import main
+    from thinlayer.validation import runner
+
+    runs = {}
+
+    def run(argv):
+        key = tuple(argv)
+        if key not in runs:
+            folder = tmp_path_factory.mktemp("validate")
+            studies = []
+            real = runner.validation_study
+
+            def spy(*args, **kwargs):
+                studies.append(real(*args, **kwargs))
+                return studies[-1]
+
+            out, err, old = io.StringIO(), io.StringIO(), os.getcwd()
+            with pytest.MonkeyPatch.context() as mp:
+                mp.setattr(runner, "validation_study", spy)
+                os.chdir(folder)
+                try:
+                    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+                        code = main(list(argv))
+                finally:
+                    os.chdir(old)
+            runs[key] = SimpleNamespace(code=code, out=out.getvalue(), err=err.getvalue(), folder=folder,
+                                        study=studies[0] if len(studies) == 1 else None)
+        return runs[key]
+
+    return run
 
 
 @pytest.fixture(autouse=True)

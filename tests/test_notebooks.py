@@ -37,8 +37,8 @@ SMALL = {
                       ("grids = [256, 384]", "grids = [256]")],
     "06_exporting": [("n_points = 5000", "n_points = 200")],
     "07_flat_punch": [("NUS = (0.0, 0.3, 0.45, 0.5)", "NUS = (0.3, 0.5)"), ("N_EXACT = 25", "N_EXACT = 9")],
-    "08_fitting": [("THICKNESS = [20.0, 10.0, 4.0, 2.0, 1.0]", "THICKNESS = [10.0, 4.0, 1.5]"),
-                   ("N_POINTS = 30", "N_POINTS = 8"),
+    "08_fitting": [("THICKNESS = [20.0, 10.0, 4.0, 2.0, 1.0]", "THICKNESS = [10.0, 1.5]"),
+                   ("N_POINTS = 30", "N_POINTS = 6"),
                    ("chis = np.geomspace(0.05, 10.0, 14)", "chis = np.geomspace(0.05, 3.0, 6)")],
     "09_afm_tips": [("RATIOS = [0.1, 0.2, 0.5, 1.0, 2.0, 5.0]", "RATIOS = [0.2, 5.0]")],
 }

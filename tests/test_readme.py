@@ -60,14 +60,29 @@ def _why_not_run(line: str) -> str | None:
     return None
 
 
+def _group(line: str) -> list:
+    if " report " in line:
+        return [pytest.mark.xdist_group("catalogue-reports")]
+    if line.startswith("thinlayer validate "):
+        return [pytest.mark.xdist_group("validation-study")]
+    return []
+
+
 def _params() -> list:
-    """The shell lines; a ``report`` line runs in the worker of the report tests (their caches are warm there)."""
-    return [pytest.param(line, marks=[pytest.mark.xdist_group("catalogue-reports")] if " report " in line else [])
-            for line in _shell_lines()]
+    """The shell lines; a ``report`` line runs in the worker of the report tests (their caches are warm there), a
+    ``validate`` line in the worker of the validation tests (tests/validation/conftest.py: one run of the default
+    study serves both)."""
+    return [pytest.param(line, marks=_group(line)) for line in _shell_lines()]
 
 
 @pytest.mark.parametrize("line", _params())
-def test_shell_line_runs(line, tmp_path, monkeypatch, capsys):
+def test_shell_line_runs(line, tmp_path, monkeypatch, capsys, request):
+    if line.startswith("thinlayer validate ") and "&&" not in line:
+        # run once, shared with tests/validation's small_study (root conftest's validate_cli_run): the same
+        # main(argv) in a fresh folder, its exit code checked here as for every other line
+        run = request.getfixturevalue("validate_cli_run")(shlex.split(line)[1:])
+        assert run.code == 0, f"{line!r} failed ({run.code}):\n{run.out[-2000:]}\n{run.err[-2000:]}"
+        return
     reason = _why_not_run(line)
     if reason:
         pytest.skip(reason)

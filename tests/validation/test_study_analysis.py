@@ -28,6 +28,27 @@ def _fit(study, shape, nu, quantity):
 # ---------------------------------------------------------------------------------------------
 # observed orders against the claimed ones
 # ---------------------------------------------------------------------------------------------
+def test_small_study_is_a_study_of_its_own(small_study):
+    """The fixture takes its rows from the default study's run (conftest.py): a case run in a study of its own
+    (the API, explicit nus/ratios/shapes) gives the same row, bit for bit except the timings, and the same plot data."""
+    from thinlayer.validation import validation_study
+
+    alone = validation_study(nus=(0.45,), ratios=(0.025,), shapes=("sphere",), progress=False)
+    (row,) = alone.rows
+    (shared,) = [r for r in small_study.rows if (r.nu, round(r.H_over_a, 12)) == (0.45, 0.025)]
+    timings = {"seconds_numeric": 0.0, "seconds_asymptotic": 0.0}
+    # every field equal (NaN equal to NaN: a quantity not computed in either)
+    np.testing.assert_equal(dataclasses.asdict(dataclasses.replace(row, **timings)),
+                            dataclasses.asdict(dataclasses.replace(shared, **timings)))
+    mine = [p for p in small_study.profiles if (p.nu, round(p.H_over_a, 12)) == (0.45, 0.025)]
+    assert len(mine) == len(alone.profiles) >= 1
+    for a, b in zip(alone.profiles, mine):
+        assert (a.shape, a.axis, a.offset) == (b.shape, b.axis, b.offset)
+        assert np.array_equal(a.x, b.x) and np.array_equal(a.numeric, b.numeric)
+        assert np.array_equal(a.asymptotic, b.asymptotic)
+    assert small_study.settings["nus"] == list(SMALL_NUS) and small_study.settings["ratios"] == list(SMALL_RATIOS)
+
+
 def test_small_study_has_every_case(small_study):
     got = {(r.nu, round(r.H_over_a, 12)) for r in small_study.rows}
     assert got == {(nu, eps) for nu in SMALL_NUS for eps in SMALL_RATIOS}
