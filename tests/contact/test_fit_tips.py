@@ -117,3 +117,45 @@ def test_fit_tip_refusals():
     with pytest.raises(ValueError, match="alpha"):
         fit(d, P, punch=Punch.cone(), H=0.2, nu=0.3)
     assert curve_entries(Punch.cone(70), 0.3, "bonded")[:1] == ["tip-law"]
+
+
+@pytest.mark.parametrize("tip", [Punch.cone(70), Punch.sphere(10)])
+@pytest.mark.parametrize("layer", [BondedLayer(0.3), FrictionlessLayer(0.3)])
+def test_tip_law_curve_is_the_scalar_law_to_1e_15(tip, layer):
+    """The vectorised curve (closed forms compiled once, benchmarks/bench_tips.py) gives the scalar route's numbers
+    (TipForceLaw.evaluate through tip.level_set, solve()'s estimate and radius) to 1e-15 relative; 0 at depths <= 0,
+    NaN where the estimate exceeds tol."""
+    entry = next(m for m in MODEL_REGISTRY if m.name == "tip-law")
+    curve = entry.force_curve(Problem(layer, tip, Elastic(1.0, 0.3), Frictionless(), Depth(1.0), 0.02, 0.2))
+    depths = [0.07, 0.3, 0.77, 1.9] if tip.kind == "sphere" else [0.3, 0.77, 1.9, 5.5]
+    d = np.array([*depths, 0.0, -1.0, 1e-6])
+    P, A, est, c = curve.force(d), curve.contact_area(d), curve.estimate(d), curve.contact_radius(d)
+    for k, d0 in enumerate(depths):
+        ans = solve(layer, tip, delta0=d0, H=0.02, mu=1.0, nu=0.3, model="tip-law", tol=math.inf)
+        assert P[k] == pytest.approx(ans.force, rel=1e-15, abs=0)
+        assert A[k] == pytest.approx(ans.contact_area, rel=1e-15, abs=0)
+        assert c[k] == pytest.approx(ans.contact_radius, rel=1e-15, abs=0)
+        assert est[k] == pytest.approx(max(ans.error_estimate.values()), rel=1e-15, abs=0)
+    assert P[4] == P[5] == A[4] == A[5] == c[4] == c[5] == 0.0
+    assert np.isnan(P[6]) and np.isnan(A[6]) and np.isnan(c[6]) and est[6] > 0.2
+
+
+def test_tip_law_curve_in_blocks_leaves_the_depths_alone():
+    """More depths than a block (contact/models/tip_law.py BLOCK): the same numbers as the scalar route at entries of
+    every block (1e-15), fresh writable results, the caller's depths unchanged (the law reuses its own arrays only)."""
+    from thinlayer.contact.models.tip_law import BLOCK
+
+    tip, layer = Punch.cone(70), BondedLayer(0.3)
+    entry = next(m for m in MODEL_REGISTRY if m.name == "tip-law")
+    curve = entry.force_curve(Problem(layer, tip, Elastic(1.0, 0.3), Frictionless(), Depth(1.0), 0.02, math.inf))
+    d = np.linspace(0.2, 2.0, 2 * BLOCK + 7)
+    d[5] = -1.0  # a depth without contact among them
+    keep = d.copy()
+    P, A, est = curve.force(d), curve.contact_area(d), curve.estimate(d)
+    assert np.array_equal(d, keep) and P.flags.writeable and A.flags.writeable
+    assert P[5] == A[5] == est[5] == 0.0
+    for k in (0, BLOCK - 1, BLOCK, 2 * BLOCK + 6):
+        ans = solve(layer, tip, delta0=float(d[k]), H=0.02, mu=1.0, model="tip-law", tol=math.inf)
+        assert P[k] == pytest.approx(ans.force, rel=1e-15, abs=0)
+        assert A[k] == pytest.approx(ans.contact_area, rel=1e-15, abs=0)
+        assert est[k] == pytest.approx(max(ans.error_estimate.values()), rel=1e-15, abs=0)

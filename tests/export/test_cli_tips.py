@@ -51,15 +51,51 @@ def test_bad_tip_values_are_one_line_exit_2(option, words, capsys):
     assert words in err, err
 
 
-def test_pyramid_option_goes_through_the_registry(capsys):
-    code = main([*SOLVE, "--pyramid", "35", "--sides", "4"])
-    err = capsys.readouterr().err
-    if "pyramid" not in TIPS:  # until Punch.pyramid lands: one line, exit 2
-        assert code == 2 and len(err.strip().splitlines()) == 1 and "no pyramid tip yet" in err, err
-    else:
-        assert code in (0, 2) and "Traceback" not in err
+@pytest.mark.parametrize("sides", [3, 4])
+def test_pyramid_option_goes_through_the_registry(sides, capsys):
+    """thinlayer solve --pyramid 35 --sides N: exit 0, the pyramid's thin-layer law (its solve() answer)."""
+    assert "pyramid" in TIPS
+    args = ["solve", "--nu", "0.3", "--delta0", "1", "--H", "0.05", "--mu", "1", "--json"]
+    assert main([*args, "--pyramid", "35", "--sides", str(sides)]) == 0
+    out = json.loads(capsys.readouterr().out)
+    ans = tl.solve(tl.BondedLayer(0.3), tl.Punch.pyramid(35, sides), delta0=1.0, H=0.05, mu=1.0)
+    assert out["model"] == ans.model == "tip-law"
+    assert out["force"] == pytest.approx(ans.force, rel=1e-12) and out["force"] > 0
+    assert main([*args, "--pyramid", "35"]) == 0  # --sides defaults to 4
+    assert json.loads(capsys.readouterr().out)["force"] == pytest.approx(
+        tl.solve(tl.BondedLayer(0.3), tl.Punch.pyramid(35, 4), delta0=1.0, H=0.05, mu=1.0).force, rel=1e-12)
+
+
+def test_pyramid_with_five_sides_is_one_line_exit_2(capsys):
     assert main([*SOLVE, "--pyramid", "35", "--sides", "5"]) == 2
-    assert len(capsys.readouterr().err.strip().splitlines()) == 1
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
+    assert "--sides 5: a pyramid has 3 or 4 sides" in err, err
+
+
+def test_fit_pyramid_option(tmp_path, capsys):
+    """thinlayer fit --pyramid 35: E = 2.6 from a curve of the direct solver (solve_2d, bonded nu = 0.3,
+    H/a = 0.1 .. 0.14) within the law's estimate, the tip named in words."""
+    import numpy as np
+
+    from thinlayer.numerics import solve_2d
+
+    tip, H = tl.Punch.pyramid(35, 4), 0.07
+    d = np.array([0.7, 0.85, 1.0])
+    P = []
+    for x in d:
+        ext = 1.05 * float(np.abs(tip.polygon(x)).max()) + 2.5 * H
+        P.append(solve_2d(tl.BondedLayer(0.3), tip, delta0=float(x), H=H, n=int(2 * ext / (H / 6)) + 1, extent=ext,
+                          tol=1e-10).force)
+    path = tmp_path / "curve.csv"
+    path.write_text("".join(f"{float(a)!r},{float(b)!r}\n" for a, b in zip(d, P)))
+    assert main(["fit", str(path), "--pyramid", "35", "--H", "0.07", "--nu", "0.3", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["model"] == "tip-law" and out["R"] is None and out["tip"] == "4-sided pyramid, face angle 35 deg"
+    assert out["valid"] and abs(out["E"] / 2.6 - 1) <= out["model_error"] < 0.1, out
+    assert main(["fit", str(path), "--pyramid", "35", "--H", "0.07", "--nu", "0.3"]) == 0
+    text = capsys.readouterr().out
+    assert "fit of E by the tip-law model: 4-sided pyramid, face angle 35 deg" in text, text
 
 
 def test_fit_tip_options(tmp_path, capsys):

@@ -53,3 +53,32 @@ def test_bad_tip_files_are_one_clear_error(tmp_path, punch, tip, words):
     with pytest.raises(DerivationFileError) as exc:
         load_derivation(_file(tmp_path, punch, tip))
     assert words in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_pyramid_report_section(tmp_path):
+    """[punch] kind = "pyramid": the section prints the pyramid's law (P0 ~ tan^2(alpha) delta0^3 through the
+    4 tan(pi/4) polygon, P1 ~ J = 8 delta0), its order 3 and why (the apex and the corners), and the table against
+    solve_2d with the largest difference within its estimate (the law's estimate covers the direct solver)."""
+    der = load_derivation(_file(tmp_path, 'kind = "pyramid"\nhalf_angle = 35\nsides = 4',
+                                tip="[tip]\nH = 1.0\nc_over_H = [8]\n"))
+    assert der.tip["tip"] == Punch.pyramid(35, 4) and der.tip["c_over_H"] == [8.0]
+    tex = report_latex(der)
+    assert r"\section{Polyhedral tip: 4-sided pyramid, face angle 35 deg}" in tex
+    assert r"O\!\left(P_0 (H/a)^{3}\right)" in tex and "apex" in tex and "corners" in tex
+    assert r"\tan^{2}" in tex and r"\delta_{0}^{3}" in tex  # P0 = vartheta 4 tan^2(alpha) delta0^3/(3 A H)
+    assert r"\label{tab:tip-force}" in tex and "two-dimensional" in tex
+    assert r"\section{Tip of revolution" not in tex
+    worst = tex.split("the largest difference is $")[1].split("$")[0]
+    assert r"\times" not in worst and float(worst) < 1.0, worst  # within its estimate
+    assert "direct two-dimensional (FFT) solver" in tex and "has the thin-layer law only for this tip" in tex
+
+
+@pytest.mark.parametrize(("punch", "tip", "words"), [
+    ('kind = "pyramid"\nhalf_angle = 35\nsides = 5', "", "3 or 4"),
+    ('kind = "pyramid"\nhalf_angle = 35\nsides = 4', "[tip]\nc_over_H = [20]\n", "numbers in [2, 12]"),
+    ('kind = "pyramid"\nsides = 4', "", "needs half_angle"),
+])
+def test_bad_pyramid_files_are_one_clear_error(tmp_path, punch, tip, words):
+    with pytest.raises(DerivationFileError, match=words.replace("[", r"\[").replace("]", r"\]")) as info:
+        load_derivation(_file(tmp_path, punch, tip))
+    assert "\n" not in str(info.value)

@@ -114,8 +114,8 @@ class TipForceLaw(RichDisplay):
         d = np.asarray(delta0, dtype=float)
         c0, c1 = self.constants(H, mu, nu)
         a, V, J = level_set_arrays(self.tip, d)
-        if not derivative:
-            return {"P0": c0 * V, "P1": c1 * J, "radius": a}
+        if not derivative:  # V and J are the compiled forms' own arrays: scaled in place where writable
+            return {"P0": _scaled(V, c0, d), "P1": _scaled(J, c1, d), "radius": a}
         slope = self.tip.radial_slope(a)
         curv = self.tip.radial_curvature(a)
         with np.errstate(all="ignore"):
@@ -191,7 +191,28 @@ def _closed_level_set(tip: Tip):
     exprs = tip.level_set_expressions()
     if exprs is None:
         return None
-    return sp.lambdify(S.delta0, (exprs["radius"], exprs["volume"], exprs["flux"]), "numpy", cse=True)
+    return sp.lambdify(S.delta0, (exprs["radius"], exprs["volume"], exprs["flux"]), "numpy", cse=True,
+                       printer=_ProductPowers)
+
+
+def _product_powers_printer():
+    from sympy.printing.numpy import NumPyPrinter
+
+    class ProductPowers(NumPyPrinter):
+        """numpy's ``x**3`` is a general ``pow`` (about 12x a multiplication on 1e6 doubles): a power of a symbol
+        to a small integer ``n >= 3`` prints as ``(x*x*...*x)`` (within 2 ulp of ``pow``; overflows alike).
+        """
+
+        def _print_Pow(self, expr, rational=False):
+            n = expr.exp
+            if expr.base.is_Symbol and n.is_Integer and 3 <= n <= 6:
+                return "(" + "*".join([self._print(expr.base)] * int(n)) + ")"
+            return super()._print_Pow(expr, rational=rational)
+
+    return ProductPowers
+
+
+_ProductPowers = _product_powers_printer()
 
 
 #: Gauss-Legendre nodes of the volume quadrature on each smooth piece (:func:`level_set_arrays`)
@@ -209,8 +230,8 @@ def level_set_arrays(tip: Tip, delta0: np.ndarray) -> tuple[np.ndarray, np.ndarr
     closed = _closed_level_set(tip)
     if closed is not None:
         with np.errstate(all="ignore"):
-            a, V, J = (np.broadcast_to(np.asarray(v, dtype=float), d.shape) for v in closed(d))
-        return a, V, J
+            a, V, J = (np.asarray(v, dtype=float) for v in closed(d))
+        return tuple(v if v.shape == d.shape else np.broadcast_to(v, d.shape) for v in (a, V, J))
     a = _invert_profile(tip, d)
     t, w = np.polynomial.legendre.leggauss(GAUSS_NODES)
     edges = [0.0, *sorted(b for b in tip.radial_breakpoints if b > 0), math.inf]
@@ -221,6 +242,14 @@ def level_set_arrays(tip: Tip, delta0: np.ndarray) -> tuple[np.ndarray, np.ndarr
         s = lo + 0.5 * span[..., None] * (t + 1.0)
         V += np.pi * 0.5 * span * np.sum(w * s * s * tip.radial_slope(s.ravel()).reshape(s.shape), axis=-1)
     return a, V, 2 * np.pi * a * tip.radial_slope(a)
+
+
+def _scaled(v: np.ndarray, c: float, d: np.ndarray) -> np.ndarray:
+    """``c * v``, in ``v``'s own memory when it is a writable array of its own (never the depths ``d``)."""
+    if v.flags.writeable and v.flags.owndata and v is not d and v.shape == d.shape and v.ndim:
+        v *= c
+        return v
+    return c * v
 
 
 def _invert_profile(tip: Tip, d: np.ndarray) -> np.ndarray:

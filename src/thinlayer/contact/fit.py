@@ -125,9 +125,10 @@ class FitResult(RichDisplay):
         if self.paraboloid:
             return f"sphere R = {self.R:.6g}"
         values = getattr(self.tip, "values", None)
-        if isinstance(values, tuple) and all(isinstance(v, tuple) and len(v) == 2 for v in values):
+        if isinstance(values, tuple) and all(isinstance(v, tuple) and len(v) == 2 and _is_number(v[1])
+                                             for v in values):
             return f"{self.tip.name} " + ", ".join(f"{k} = {float(v):.6g}" for k, v in values)
-        return self.tip.name
+        return getattr(self.tip, "description", None) or self.tip.name  # a pyramid: its planes are expressions
 
     @property
     def paraboloid(self) -> bool:
@@ -191,6 +192,15 @@ def _paraboloid(R: float):
     from ..punch import Punch
 
     return Punch.paraboloid(R)
+
+
+def _is_number(v: Any) -> bool:
+    """A real number (a Python or numpy number, or a sympy number), not an expression or a tuple."""
+    if isinstance(v, bool):
+        return False
+    if isinstance(v, numbers.Real):
+        return True
+    return bool(getattr(v, "is_number", False)) and bool(getattr(v, "is_real", False))
 
 
 def _problem(tip: Any, nu: float, base: str, H: float):

@@ -69,14 +69,36 @@ class ForceCurve:
     slopes: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None  # (dlogP/dlog delta, dlogP/dlog H)
 
     def _eval(self, delta: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """``(P, A, est, valid)``, fresh arrays of the depths' shape.  No copy or ``np.where`` pass where nothing
+        needs masking (every depth positive and valid: the common case of a fit, benchmarks/bench_tips.py).
+        """
         d = np.asarray(delta, dtype=float)
         pos = d > 0
+        every = bool(pos.all())
+        arg = d if every else np.where(pos, d, 1.0)
         with np.errstate(all="ignore"):
-            P, A, est = (np.asarray(v, dtype=float) for v in self.law(np.where(pos, d, 1.0)))
-            P, A, est = (np.broadcast_to(v, d.shape) for v in (P, A, est))
-            ok = (est <= self.tol) & np.isfinite(P) & (P > 0) & np.isfinite(A) & (A > 0)
-        return (np.where(pos, np.where(ok, P, np.nan), 0.0), np.where(pos, np.where(ok, A, np.nan), 0.0),
-                np.where(pos, est, 0.0), ok | ~pos)
+            out = [_fresh(v, d.shape, (d, arg)) for v in self.law(arg)]
+            P, A, est = out
+            if A is P or est is P or est is A:
+                P, A, est = P, A.copy(), est.copy()
+            ok = est <= self.tol  # P > 0 & P < inf: finite and positive (NaN fails both)
+            ok &= P > 0
+            ok &= P < math.inf
+            ok &= A > 0
+            ok &= A < math.inf
+        if every:
+            if not ok.all():
+                P[~ok] = np.nan
+                A[~ok] = np.nan
+            return P, A, est, ok
+        bad = ~ok & pos
+        P[bad] = np.nan
+        A[bad] = np.nan
+        out_ = ~pos
+        P[out_] = 0.0
+        A[out_] = 0.0
+        est[out_] = 0.0
+        return P, A, est, ok | out_
 
     def force(self, delta: Any) -> np.ndarray:
         """The force at ``mu = 1`` (zero for ``delta <= 0``; NaN where not valid)."""
@@ -113,6 +135,16 @@ class ForceCurve:
     def force_for_radius(self, c: Any) -> np.ndarray:
         """The force at ``mu = 1`` at which the contact radius is ``c``."""
         return self.force(self.depth_for_radius(c))
+
+
+def _fresh(v: Any, shape: tuple, inputs: tuple) -> np.ndarray:
+    """``v`` as a float array of ``shape`` that the caller may write into (a copy unless the law made it)."""
+    a = np.asarray(v, dtype=float)
+    if a.shape != shape:
+        return np.array(np.broadcast_to(a, shape))
+    if not (a.flags.owndata and a.flags.writeable) or any(a is x for x in inputs):
+        return a.copy()
+    return a
 
 
 # =============================================================================================

@@ -27,7 +27,7 @@ import numpy as np
 from ...asymptotics.solution import ValidityError
 from ..indentation import Indentation
 from ..problem import Problem
-from .base import Model, register_model
+from .base import ForceCurve, Model, register_model
 from .common import LazyExtent, depth_for_force
 from .tip_law import tip_law_estimate
 
@@ -52,6 +52,31 @@ def _law(layer, tip):
 
 
 @lru_cache(maxsize=64)
+def _level_set_arrays(tip):
+    """``delta0 -> (a, |omega0|, V, J)`` on arrays: the tip's closed forms (its ``level_set_expressions``, compiled
+    once per tip), else its numeric ``level_set`` depth by depth.
+    """
+    from ... import symbols as S
+    from ...asymptotics.force_law import lambdify_law
+
+    exprs = getattr(tip, "level_set_expressions", None)
+    exprs = exprs() if exprs is not None else None
+    if exprs is not None:
+        keys = ("inradius", "area", "volume", "flux")
+        outs = tuple(exprs[k] for k in keys)
+        if all(not (o.free_symbols - {S.delta0}) for o in outs):
+            fn = lambdify_law((S.delta0,), outs, "numpy")
+            return lambda d: tuple(np.broadcast_to(np.asarray(v, dtype=float), d.shape) for v in fn(d))
+
+    def numeric(d):
+        sets = [tip.level_set(x) for x in d.ravel()]
+        return tuple(np.array([getattr(ls, k) for ls in sets], dtype=float).reshape(d.shape)
+                     for k in ("half_width", "area", "volume", "flux"))
+
+    return numeric
+
+
+@lru_cache(maxsize=64)
 def _edge_shift(layer) -> float:
     from ...asymptotics.wiener_hopf import edge_shift_exact
 
@@ -64,6 +89,7 @@ class PolyhedralLawModel(Model):
     name = "tip-law"
     preference = 16
     asymptotic = True
+    fits = True
     equations = ("1.8", "3.25")
 
     def refuses(self, problem: Problem) -> str | None:
@@ -77,6 +103,39 @@ class PolyhedralLawModel(Model):
         if not problem.layer.has_compressible_expansion:
             return "nu = 1/2 on a bonded base: A = 0 in (2.4), no thin-layer law of order 1"
         return None
+
+    def force_curve(self, problem: Problem) -> ForceCurve | None:
+        """The law at ``mu = 1`` on arrays of depths: ``P0 = c0 V``, ``P1 = c1 J`` (1.8) through the tip's level set,
+        the area ``|omega0| (1 - h^* H/a)^2`` (3.25), the estimate :func:`polyhedral_estimate` (the larger of force and
+        area) and the slopes ``d log P/d log delta0 = delta0 P'/P``, ``d log P/d log H = (P1 - P0)/P``
+        (``P0 ~ 1/H``, ``P1 ~ H``; ``delta0 P' = delta0 c0 |omega0| + c1 J`` since ``dV/d delta0 = |omega0|`` and
+        ``J`` is linear in ``delta0`` on a planar-faced tip).  None for a tip or layer the model refuses.
+        """
+        if self.refuses(problem) or self.applies(problem) or not problem.tip.is_numeric:
+            return None
+        law, H, nu = _law(problem.layer, problem.tip), problem.H, problem.nu
+        c0, c1 = law.constants(H, 1.0, nu)
+        shift = _edge_shift(problem.layer) * H
+        level_set = _level_set_arrays(problem.tip)
+
+        def force(d):
+            a, area0, V, J = level_set(d)
+            P0, P1 = c0 * V, c1 * J
+            x = H / a
+            r1 = np.abs(P1 / P0)
+            est = tip_law_estimate(P0, P1, x)["force"]
+            est_A = AREA_FACTORS[0] * x * x + AREA_FACTORS[1] * r1
+            shrink = 1.0 - shift / a
+            area = np.where(shrink > 0, area0 * shrink * shrink, np.nan)
+            return P0 + P1, area, np.maximum(est, est_A)
+
+        def slopes(d):
+            a, area0, V, J = level_set(d)
+            P0, P1 = c0 * V, c1 * J
+            P = P0 + P1
+            return (d * c0 * area0 + P1) / P, (P1 - P0) / P
+
+        return ForceCurve(self.name, problem.tol, force, slopes=slopes)
 
     def _at(self, problem: Problem, delta0: float) -> tuple[float, float, float, float, dict, float]:
         """``(P, P0, P1, a, estimate, area0)`` at a depth."""

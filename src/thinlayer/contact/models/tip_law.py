@@ -40,6 +40,8 @@ FACTOR = 3.0
 BASE_FORCE, BASE_RADIUS = 0.2, 0.05
 #: the radius's constant on |P1/P0| (measured 0.21 at most)
 RADIUS_FACTOR = 0.5
+#: depths per block of the vectorised force curve (its working arrays stay in the cache)
+BLOCK = 1 << 15
 
 
 def tip_law_estimate(P0: float, P1: float, H_over_a: float) -> dict[str, float]:
@@ -47,9 +49,18 @@ def tip_law_estimate(P0: float, P1: float, H_over_a: float) -> dict[str, float]:
     r1 = abs(P1 / P0)
     x = H_over_a
     x3 = x * x * x
-    force = FACTOR * (r1 * x + r1 * r1 + BASE_FORCE * x3)
+    force = FACTOR * (r1 * (x + r1) + BASE_FORCE * x3)
     radius = RADIUS_FACTOR * r1 + BASE_RADIUS * x3
     return {"force": force, "contact_radius": radius, "contact_area": 2.0 * radius}
+
+
+def _scratch(v: np.ndarray, d: np.ndarray) -> np.ndarray | None:
+    """``v`` as an output buffer when it is a writable array of its own that does not share the depths' memory
+    (else None: numpy allocates).
+    """
+    ok = (isinstance(v, np.ndarray) and v.flags.writeable and v.flags.owndata and v.shape == np.shape(d)
+          and not np.may_share_memory(v, d))
+    return v if ok else None
 
 
 @lru_cache(maxsize=64)
@@ -103,11 +114,42 @@ class TipLawModel(Model):
         shift = _edge_shift(problem.layer) * H
 
         def force(d):
+            # in blocks of BLOCK depths: some 20 passes over arrays that stay in the cache (on 1e6 depths the whole
+            # arrays go through memory each pass: 2x slower, benchmarks/bench_tips.py); elementwise, the same numbers
+            d = np.asarray(d, dtype=float)
+            if d.ndim != 1 or d.size <= BLOCK:
+                return block(d)
+            P, A, est = np.empty_like(d), np.empty_like(d), np.empty_like(d)
+            for i in range(0, d.size, BLOCK):
+                P[i:i + BLOCK], A[i:i + BLOCK], est[i:i + BLOCK] = block(d[i:i + BLOCK])
+            return P, A, est
+
+        def block(d):
+            # tip_law_estimate's formula with few fresh arrays (each costs page faults: benchmarks/bench_tips.py):
+            # est = FACTOR (r1 (x + r1) + BASE_FORCE x^3), area 2 (RADIUS_FACTOR r1 + BASE_RADIUS x^3), the larger;
+            # the law's own arrays are reused once read (never the depths' memory)
             out = law.arrays(d, H, 1.0, nu, derivative=False)
             P0, P1, a = out["P0"], out["P1"], out["radius"]
-            est = tip_law_estimate(P0, P1, H / a)
-            c = a - shift
-            return P0 + P1, np.pi * c * c, np.maximum(est["force"], est["contact_area"])
+            A = np.subtract(a, shift)  # c = a - h* H (3.25), then pi c^2
+            np.multiply(A, A, out=A)
+            A *= np.pi
+            x = np.divide(H, a, out=_scratch(a, d))
+            r1 = np.divide(P1, P0)
+            np.abs(r1, out=r1)
+            P = np.add(P0, P1, out=_scratch(P0, d))
+            est = np.add(x, r1)
+            est *= r1
+            x3 = np.multiply(x, x, out=_scratch(P1, d))
+            x3 *= x
+            r1 *= RADIUS_FACTOR  # r1 becomes the area's estimate
+            np.multiply(x3, BASE_RADIUS, out=x)
+            r1 += x
+            r1 *= 2.0
+            x3 *= BASE_FORCE
+            est += x3
+            est *= FACTOR
+            np.maximum(est, r1, out=est)
+            return P, A, est
 
         def slopes(d):
             out = law.arrays(d, H, 1.0, nu)
