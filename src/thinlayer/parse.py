@@ -102,7 +102,7 @@ _ALLOWED = "numbers, the coordinates x_1, x_2, parameter names, + - * / ** and p
 #: most arguments of one max(...) or min(...)
 MAX_ARGUMENTS = 64
 #: the piecewise-linear calls of a formula in x1, x2: max/min of linear forms (polyhedral tips)
-_PIECEWISE_FUNCTIONS = {"max": sp.Max, "min": sp.Min}
+_PIECEWISE_FUNCTIONS = {"max": "Max", "min": "Min"}  # name -> the sympy function's name (sympy loads lazily)
 _ALLOWED_RADIAL = "numbers, the radius r, parameter names, + - * / **, parentheses, sqrt(...) and abs(...)"
 #: the radius of a radial profile Phi(r) read with ``radial=True``
 _LAZY_SYMBOLS = {"RADIUS": ("r", {"nonnegative": True})}  # RADIUS: a nonnegative Symbol, made on first use
@@ -414,7 +414,7 @@ class _Parser:
                 raise ExpressionError(f"argument {k + 1} of {value}(...) at position {pos}, {sp.sstr(a):.60}, is not "
                                       "a linear form in x1, x2 (a*x1 + b*x2 + c, or max/min of such)")
         # unevaluated: sympy's Max compares its arguments pairwise under assumptions (slow for 64 symbolic forms)
-        return _PIECEWISE_FUNCTIONS[value](*args, evaluate=False)
+        return getattr(sp, _PIECEWISE_FUNCTIONS[value])(*args, evaluate=False)
 
     def atom(self) -> sp.Expr:
         kind, value, pos = self.take()
