@@ -791,7 +791,9 @@ def power_law_half_space(n: Any) -> sp.Expr:
     (pi/2, 2)
     """
     t = sp.Symbol("t", positive=True)
-    nn = sp.nsimplify(n) if isinstance(n, (int, sp.Rational)) else sp.sympify(n)  # a Rational or int from the Tip
+    if isinstance(n, bool) or not isinstance(n, (int, float, sp.Expr)):
+        raise InputError(f"n must be a number or a sympy expression (the tip's exponent), got {n!r}")
+    nn = sp.Integer(n) if isinstance(n, int) else sp.Float(n) if isinstance(n, float) else n  # from the Tip
     integral = sp.integrate(t ** (nn - 1) / sp.sqrt(1 - t**2), (t, 0, 1))
     return sp.simplify(sp.gammasimp(nn * integral))
 
@@ -826,7 +828,7 @@ def thick_power_law_series(n: Any, order: int = 12) -> ThickSeries:
     >>> s.force[1], s.radius[1]
     (2*b_0/pi, b_0/pi)
     """
-    v = sp.Rational(sp.sympify(n)) if isinstance(n, (int, sp.Rational)) else None
+    v = sp.Rational(n) if isinstance(n, (int, sp.Rational)) and not isinstance(n, bool) else None
     if isinstance(n, str):
         from ..parse import parse_number
 
