@@ -29,7 +29,7 @@ from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
 from .common import LazyExtent, depth_for_force
-from .tip_law import tip_law_estimate
+from .tip_law import edge_shift, tip_law_estimate
 
 __all__ = ["AREA_FACTORS", "PolyhedralLawModel", "polyhedral_estimate"]
 
@@ -76,13 +76,6 @@ def _level_set_arrays(tip):
     return numeric
 
 
-@lru_cache(maxsize=64)
-def _edge_shift(layer) -> float:
-    from ...asymptotics.wiener_hopf import edge_shift_exact
-
-    return float(edge_shift_exact(layer.edge_shift_key, dps=12))
-
-
 class PolyhedralLawModel(Model):
     """The thin-layer law (1.8), (3.25) of a polyhedral tip."""
 
@@ -115,7 +108,7 @@ class PolyhedralLawModel(Model):
             return None
         law, H, nu = _law(problem.layer, problem.tip), problem.H, problem.nu
         c0, c1 = law.constants(H, 1.0, nu)
-        shift = _edge_shift(problem.layer) * H
+        shift = edge_shift(problem.layer) * H
         level_set = _level_set_arrays(problem.tip)
 
         def force(d):
@@ -152,7 +145,7 @@ class PolyhedralLawModel(Model):
         else:
             delta0 = problem.delta0
         P, P0, P1, a, est, area0 = self._at(problem, delta0)
-        shrink = 1.0 - _edge_shift(problem.layer) * H / a
+        shrink = 1.0 - edge_shift(problem.layer) * H / a
         if not (P > 0 and math.isfinite(P) and shrink > 0) or max(est.values()) > tol:
             raise ValidityError(f"solve(): tip-law: estimates force {100 * est['force']:.3g} %, contact area "
                                 f"{100 * est['contact_area']:.3g} % exceed tol {100 * tol:.3g} % at H/a = "

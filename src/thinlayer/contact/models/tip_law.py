@@ -32,7 +32,7 @@ from ..problem import Problem
 from .base import ForceCurve, Model, register_model
 from .common import LazyExtent, depth_for_force
 
-__all__ = ["TipLawModel", "tip_law_estimate"]
+__all__ = ["TipLawModel", "edge_shift", "tip_law_estimate"]
 
 #: the factor on the next-order size (module docstring: 1.8x the largest measured constant or more)
 FACTOR = 3.0
@@ -71,7 +71,8 @@ def _law(layer, tip):
 
 
 @lru_cache(maxsize=64)
-def _edge_shift(layer) -> float:
+def edge_shift(layer) -> float:
+    """h* of the layer (3.18), (3.25) in floats, cached per layer (the tip laws' edge shift)."""
     from ...asymptotics.wiener_hopf import edge_shift_exact
 
     return float(edge_shift_exact(layer.edge_shift_key, dps=12))
@@ -111,7 +112,7 @@ class TipLawModel(Model):
         if self.refuses(problem) or self.applies(problem) or not problem.tip.is_numeric:
             return None
         law, H, nu = _law(problem.layer, problem.tip), problem.H, problem.nu
-        shift = _edge_shift(problem.layer) * H
+        shift = edge_shift(problem.layer) * H
 
         def force(d):
             # in blocks of BLOCK depths: some 20 passes over arrays that stay in the cache (on 1e6 depths the whole
@@ -185,7 +186,7 @@ class TipLawModel(Model):
         else:
             delta0 = problem.delta0
         P, P0, P1, a, est = self._at(problem, delta0)
-        c = a - _edge_shift(problem.layer) * H
+        c = a - edge_shift(problem.layer) * H
         if not (P > 0 and math.isfinite(P) and c > 0) or max(est.values()) > tol:
             raise ValidityError(f"solve(): tip-law: estimates force {100 * est['force']:.3g} %, contact radius "
                                 f"{100 * est['contact_radius']:.3g} % exceed tol {100 * tol:.3g} % at H/a = "
