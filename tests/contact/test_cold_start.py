@@ -149,17 +149,19 @@ def test_a_catalogue_punch_with_numbers_answers_as_the_symbolic_one():
 
 CLI = ("import sys\n"
        "from thinlayer.export.cli import main\n"
-       "rc = main(['solve', '--nu', '0.3', '--kind', 'paraboloid', '--param', 'R=10', '--delta0', '0.1', '--H', '0.05',"
-       " '--mu', '1'])\n"
+       "rc = main(['solve', '--nu', '0.3', {tip}, '--delta0', '0.1', '--H', '0.05', '--mu', '1'])\n"
        "print('MODULES', rc, 'sympy' in sys.modules, 'scipy' in sys.modules)\n")
 
 
-def test_thinlayer_solve_of_the_sphere_imports_neither_sympy_nor_scipy(tmp_path):
+@pytest.mark.parametrize("tip", ["'--kind', 'paraboloid', '--param', 'R=10'", "'--tip', 'paraboloid:R=10'"],
+                         ids=["kind-param", "tip-spec"])
+def test_thinlayer_solve_of_the_sphere_imports_neither_sympy_nor_scipy(tmp_path, tip):
     env = {**os.environ, "THINLAYER_CACHE_DIR": str(tmp_path)}
     env.pop("THINLAYER_CACHE", None)
-    first = subprocess.run([sys.executable, "-c", CLI], capture_output=True, text=True, env=env, timeout=600,
+    code = CLI.format(tip=tip)
+    first = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=600,
                            stdin=subprocess.DEVNULL)
-    again = subprocess.run([sys.executable, "-c", CLI], capture_output=True, text=True, env=env, timeout=600,
+    again = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=600,
                            stdin=subprocess.DEVNULL)
     assert first.returncode == again.returncode == 0, again.stderr
     assert again.stdout.splitlines()[-1] == "MODULES 0 False False", again.stdout
@@ -167,6 +169,20 @@ def test_thinlayer_solve_of_the_sphere_imports_neither_sympy_nor_scipy(tmp_path)
     lines = again.stdout.splitlines()
     assert lines[0] == "paraboloid of revolution, Φ = (x₁² + x₂²)/(2R), R = 10"
     assert "P = 21.983295" in again.stdout and "model: compressible" in again.stdout
+
+
+def test_a_tip_spec_with_numbers_answers_as_the_symbolic_punch(capsys):
+    """``--tip elliptic_paraboloid:R1=10,R2=5`` (numeric route) prints the numbers of ``--punch`` with the same Phi
+    (the symbolic route through sympy) and names both radii."""
+    from thinlayer.export.cli import main
+
+    common = ["solve", "--nu", "0.3", "--delta0", "0.1", "--H", "0.05", "--mu", "1"]
+    assert main([*common, "--tip", "elliptic_paraboloid:R1=10,R2=5"]) == 0
+    fast = capsys.readouterr().out.splitlines()
+    assert main([*common, "--punch", "x_1**2/20 + x_2**2/10"]) == 0
+    slow = capsys.readouterr().out.splitlines()
+    assert fast[0] == "elliptic paraboloid, Φ = x₂²/(2R₂) + x₁²/(2R₁), R₁ = 10, R₂ = 5"
+    assert fast[1:] == slow[1:]
 
 
 def test_the_printed_catalogue_formulas_are_the_printers():

@@ -121,6 +121,11 @@ def punch_from_args(args, allow_flat: bool = False):
 
         if args.param:
             raise BadInput("--tip KIND:key=value,... holds the tip's values: leave out --param")
+        if allow_flat:  # solve: a quadric with plain numbers takes the numeric route, no sympy (issue 28 item 6)
+            kind, _, rest = spec.strip().partition(":")
+            numeric = _numeric_kind(kind.strip(), [i for i in rest.split(",") if i.strip()])
+            if numeric is not None:
+                return numeric, False
         tip = tip_from_spec(spec)
         if allow_flat:  # solve: numbers
             tip_needs_values(tip, spec)

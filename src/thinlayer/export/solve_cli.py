@@ -240,7 +240,8 @@ def _punch_text(punch: Any, params: dict[str, float] | None = None) -> str:
     """The punch once: its name and Φ in Unicode maths with its parameters' values, or its own description."""
     formula = getattr(punch, "formula_text", None)
     if formula is not None:  # a catalogue punch with numbers: its symbolic Phi, printed without sympy
-        values = "".join(f", {RADIUS_TEXT.get(k, k)} = {_g(v)}" for k, v in (params or {}).items())
+        given = params or getattr(punch, "formula_values", None) or {}  # --param, or the numbers of --tip
+        values = "".join(f", {RADIUS_TEXT.get(k, k)} = {_g(v)}" for k, v in given.items())
         return f"{punch.name}, Φ = {formula}{values}"
     from ..normal import normal_text, symbol_text
 

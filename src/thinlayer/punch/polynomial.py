@@ -209,6 +209,16 @@ class Punch(Tip):
         """
         return None if self._spec is None else CATALOGUE_TEXT[self._spec[0]]
 
+    @property
+    def formula_values(self) -> dict[str, float]:
+        """The radii of :attr:`formula_text` with their numbers (``{"R": 10}``, ``{"R1": 10, "R2": 5}``), empty for
+        a punch that is not a catalogue punch with numbers.
+        """
+        spec = self._spec
+        if spec is None:
+            return {}
+        return {"R": spec[1]} if spec[0] == "paraboloid" else {"R1": spec[1], "R2": spec[2]}
+
     def _spec_coefficients(self) -> tuple[float, float] | None:
         """``(c1, c2)`` of ``Phi = c1 x1^2 + c2 x2^2`` of a catalogue punch with numbers (``c = 1/(2R)``), else None."""
         spec = self._spec

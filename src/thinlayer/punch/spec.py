@@ -10,7 +10,7 @@ from typing import Any
 
 from ..errors import InputTypeError, WorkLimitError
 from ..parse import MAX_LENGTH, ExpressionError, parse_expression
-from .base import PunchError, Tip, catalogue
+from .base import PunchError, Tip, catalogue, tip_kind
 
 
 class TipSpecError(PunchError):
@@ -53,7 +53,7 @@ def tip_from_spec(spec: Any) -> Tip:
         raise TipSpecError(f"the tip spec has {len(spec)} characters, more than {MAX_LENGTH}")
     kind, _, rest = spec.strip().partition(":")
     kind = kind.strip()
-    row = catalogue().get(kind)
+    row = tip_kind(kind)  # a loaded kind (paraboloid, flat) without importing every tip module (issue 28 item 6)
     if row is None:
         raise TipSpecError(f"unknown tip kind {kind!r} in the tip spec {spec!r:.80}; valid forms: {valid_forms()}")
     keys = {k: p for p in row.parameters for k in (p.name, *p.aliases)}
