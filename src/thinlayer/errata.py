@@ -703,7 +703,9 @@ ENTRIES = ENTRIES + (
         r"\frac{P}{P_S} = 1 + 1.7795\,\frac{2\tan\theta}{\pi^2}\,\frac{\delta}{h} + 16\,(1.7795)^2\tan^2\theta\,"
         r"\frac{\delta^2}{h^2}",
         _CONE_DERIVED,
-        r"The publication's own equation could not be read (only its abstract); both repositories write the form "
+        r"The publication's own equation could not be read (the opening of its author manuscript PMC3492504 and the "
+        r"publisher's abstract page only; the addresses tried are listed in "
+        r"thinlayer.validation.published_tips.READ_ATTEMPTS); both repositories write the form "
         r"above ($P_S = 8E\tan\theta\,\delta^2/(3\pi)$, Sneddon's cone). Derived in "
         r"thinlayer.validation.published_tips (PT.1)--(PT.3): the regular kernel of (T.2) through $b_1$ turns the "
         r"layer into a half-space problem for the punch $r\cot\theta + q r^2$, solved by Sneddon's integrals; "
@@ -727,7 +729,8 @@ ENTRIES = ENTRIES + (
         r"sebastienjanel/pyAF: approximation error over its range",
         r"\frac{P}{P_S} = 1 + 0.721X + 0.650X^2 + 0.491X^3 + 0.225X^4,\ X = \frac{\delta\tan\theta}{h}",
         _CONE_DERIVED,
-        r"The publication's own equation and its stated range could not be read. The first three quoted "
+        r"The publication's own equation and its stated range could not be read: no copy of the article was found "
+        r"(addresses tried: thinlayer.validation.published_tips.READ_ATTEMPTS). The first three quoted "
         r"coefficients are the derived $4 b_0/\pi^2$, $20 b_0^2/\pi^4$, $4(28 b_0^3 - \pi^2 b_1)/\pi^6$ of (PT.3) "
         r"with Dimitriadis's $\alpha_0 = -1.7795$ and $\beta_0 = 1.0079$ put in for $-b_0$ and $b_1/4$ "
         r"($0.7212$, $0.6502$, $0.4909$, rounded as quoted): the $0.5\,\%$ error of $\alpha_0$ carries over. The "

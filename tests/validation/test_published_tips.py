@@ -1,7 +1,8 @@
 """Published bottom-effect corrections of a cone (Gavara & Chadwick 2012, Garcia & Garcia 2018) against the engine.
 
-Sources: neither publication's equations could be read (Gavara & Chadwick: the nature.com page and the first page of
-PMC3492504, title and abstract only; Garcia & Garcia: nothing).  The coefficients are those two repositories
+Sources: neither publication's equations could be read (Gavara & Chadwick: the nature.com page and the opening of
+PMC3492504, title, abstract and first paragraph only; Garcia & Garcia: no copy found); every address tried is in
+``published_tips.READ_ATTEMPTS``.  The coefficients are those two repositories
 attribute to them: sebastienjanel/pyAF src/compute_tools/stiffness_correction.py and jlopezalo/PyFMRheo
 src/pyfmrheo/models/correction_factors.py.  The pyramid of Garcia & Garcia is not compared (PYRAMID_STATUS).
 """
@@ -42,6 +43,19 @@ def test_quoted_series_are_labelled_as_quoted_and_name_their_sources():
         assert all(q.split(",")[0] in e.quoted_from for q in p.quoted_from)
     assert pt.GAVARA_2012.coefficients[0] == pytest.approx(2 * 1.7795 / math.pi**2, rel=1e-15)
     assert pt.GARCIA_2018_CONE.ratio(0.1) == pytest.approx(1 + 0.0721 + 0.0065 + 0.000491 + 0.0000225, rel=1e-15)
+
+
+def test_every_secondary_entry_says_where_the_publication_was_looked_for():
+    # an entry stays "secondary" only with the record of where its publication was sought (issue 24 item 5)
+    for key, name in (("gavara2012", "Gavara 2012"), ("garcia2018", "Garcia 2018")):
+        attempts = pt.READ_ATTEMPTS[key]
+        assert len(attempts) >= 3 and all(where and found for where, found in attempts)
+        (e,) = [e for e in errata.get(name) if "cone" in e.quantity]
+        assert e.kind == "secondary" and "READ_ATTEMPTS" in e.evidence
+        assert "READ_ATTEMPTS" in references.get(key).note
+    # the article's identifiers as its PubMed Central page prints them
+    assert "PMC3492504" in pt.READ_ATTEMPTS["gavara2012"][0][0]
+    assert "PMID 23023646" in references.get("gavara2012").record
 
 
 def test_the_route_reproduces_the_engines_sphere_series():

@@ -7,9 +7,12 @@ AFM users correct Sneddon's cone ``P_S = 4 vartheta tan(theta) delta^2/pi`` (``=
     P/P_S = 1 + sum_n c_n X^n.
 
 Two published series are implemented here as they are quoted (:data:`GAVARA_2012`, :data:`GARCIA_2018_CONE`).
-Neither publication's equations could be read by this project (only its title page and abstract): the coefficients
-are those that two public code repositories attribute to the publications, and every value here is labelled
-"as quoted in" those repositories (a secondary source), never as the paper's own print.
+Neither publication's equations could be read by this project: :data:`READ_ATTEMPTS` lists every address tried and
+what it held (for Gavara & Chadwick the opening of the PubMed Central author manuscript PMC3492504, up to the end of
+its first paragraph, and the publisher's abstract page; for Garcia & Garcia no stored copy at all).  The
+coefficients are those that two public code repositories attribute to the publications, and every value here is
+labelled "as quoted in" those repositories (a secondary source), never as the paper's own print; no equation number
+or page of either paper is cited, because none was seen.
 
 Derivation (PT.1)-(PT.4): the same series, derived
 ------------------------------------------------------
@@ -77,13 +80,40 @@ import sympy as sp
 
 from .._checks import InputError
 
-__all__ = ["PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
+__all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
            "cone_series", "paraboloid_series", "derived_cone_ratio", "direct_cone_ratio", "comparison_table",
            "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table"]
 
 #: the quoting repositories (a secondary source: the publications' own equations were not read)
 PYAF = "sebastienjanel/pyAF, file src/compute_tools/stiffness_correction.py"
 PYFMRHEO = "jlopezalo/PyFMRheo, file src/pyfmrheo/models/correction_factors.py"
+
+#: every address where the publications were looked for (issue 24 item 5, two rounds), and what each held:
+#: ``{citation key: ((address or query, what was found), ...)}``.  The search tool's stored web pages return the
+#: opening of a page only (about 2,400 characters), never its body.
+READ_ATTEMPTS = {
+    "gavara2012": (
+        ("https://pmc.ncbi.nlm.nih.gov/articles/PMC3492504",
+         "the author manuscript in PubMed Central, stored: its opening only (Nat Nanotechnol 2012 Sep 30; "
+         "7(11):733-736, doi 10.1038/nnano.2012.163, PMCID PMC3492504, NIHMSID NIHMS402200, PMID 23023646; "
+         "abstract; the first paragraph of the text). The BECC formula lies past the part returned. (The brief's "
+         "PMC3835343 is not this article's PMCID.)"),
+        ("https://www.nature.com/articles/nnano.2012.163",
+         "the publisher's page: abstract, figure titles and reference list; the text is behind a paywall"),
+        ("pages corpus: queries on the BECC formula, its wording, the supplementary information, Europe PMC",
+         "no other copy of the article or of its supplementary information"),
+        ("docs and issues corpora; find_string 'Bottom Effect Cone Correction', 'Gavara N, Chadwick'",
+         "a README of a MATLAB analysis repository and a reference list citing another Gavara & Chadwick article: no "
+         "equation"),
+    ),
+    "garcia2018": (
+        ("pages corpus: title, 'Biophys J. 2018;114(12):2923-2932', doi 10.1016/j.bpj.2018.05.012, PMC6026379",
+         "no stored page of the article (PubMed Central, Europe PMC, cell.com, PubMed): only later articles of the "
+         "same group (Nanoscale 2021 d1nr03894j, Nanoscale 2025 d5nr01236h), of which only the opening is returned"),
+        ("docs and issues corpora: Garcia 2018 bottom-effect coefficients, cone, pyramid", "nothing on the article"),
+        ("find_string 'single cell cultured on a rigid support'", "no hit"),
+    ),
+}
 
 #: what became of the pyramid of Garcia & Garcia (2018): no source read prints its coefficients, and the 2D solver
 #: for pyramids (Punch.pyramid, solve_2d) had not landed when this module was written
@@ -142,7 +172,8 @@ GAVARA_2012 = PublishedCorrection(
     "gavara2012-becc", "gavara2012", (PYAF, PYFMRHEO),
     r"1 + 1.7795\,\frac{2\tan\theta}{\pi^2}\,\frac{\delta}{h} + 16\,(1.7795)^2\tan^2\theta\,\frac{\delta^2}{h^2}",
     (2 * _A0 / math.pi**2, 16 * _A0**2), 0.5,
-    "not read (the publication's text was not available); the title of its figure 2 on the publisher's page reads "
+    "not read (READ_ATTEMPTS: the publication's text was not available); the title of its figure 2 on the "
+    "publisher's page reads "
     "'Indentations larger than 10% of the sample thickness result in a very large overestimaton of the elastic "
     "modulus' (sic)")
 
@@ -152,7 +183,7 @@ GARCIA_2018_CONE = PublishedCorrection(
     "garcia2018-cone", "garcia2018", (PYFMRHEO, PYAF),
     r"1 + 0.721\,X + 0.650\,X^2 + 0.491\,X^3 + 0.225\,X^4,\ X = \frac{\delta\tan\theta}{h}",
     (0.721, 0.650, 0.491, 0.225), 0.5,
-    "not read (the publication's text was not available)")
+    "not read (READ_ATTEMPTS: no copy of the publication was available)")
 
 PUBLISHED = (GAVARA_2012, GARCIA_2018_CONE)
 
