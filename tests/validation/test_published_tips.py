@@ -146,3 +146,50 @@ def test_bad_inputs_are_refused():
         pt.direct_cone_ratio(-1.0)
     with pytest.raises(ValueError, match="X"):
         pt.direct_cone_ratio(float("nan"))
+
+
+# --------------------------------------------------------------------------- (PT.5): the pyramid through X^2
+def test_homogeneous_tip_series_gives_back_the_cone_series():
+    # (PT.5) with m = 2 and Sneddon's K = 4 vartheta tan(theta)/pi (eps = 2 b_0 X/pi^2) is (PT.3) through X^2
+    y = pt.homogeneous_tip_series(2, 2)
+    assert y == (1, 2, 5)
+    b0 = sp.Symbol("b_0", positive=True)
+    cone = pt.cone_series(2)[0]
+    e = 2 * b0 / sp.pi**2
+    for j in (1, 2):
+        assert sp.expand(y[j] * e**j - cone[j]) == 0, j
+    # m = 3/2 is the paraboloid's P ~ delta^(3/2): not an integer, refused; m = 1 (flat punch) is 1/(1 - eps)
+    assert pt.homogeneous_tip_series(1, 2) == (1, 1, 1)
+    with pytest.raises(ValueError, match="m"):
+        pt.homogeneous_tip_series(1.5)
+    with pytest.raises(ValueError, match="order"):
+        pt.homogeneous_tip_series(2, 3)
+
+
+def test_pyramid_series_against_the_2d_solver_and_the_cone_series_applied_to_it():
+    # 2D solver, n = 128, bonded nu = 0.3, X = 0.1 and 0.05: the pyramid's two terms (PT.5) leave < 4e-4 and 1e-4; the
+    # cone's two terms (what the repositories apply to pyramids) leave 20 times more
+    c1, c2 = pt.pyramid_series(0.3, 4, 128)
+    b0 = _b0_by_quadrature(0.3)
+    cone = (4 * b0 / math.pi**2, 20 * b0**2 / math.pi**4)
+    for H, tol in ((10.0, 4e-4), (20.0, 1e-4)):
+        X = 1 / H
+        r = pt.direct_pyramid_ratio(0.3, H)
+        assert abs(r - (1 + c1 * X + c2 * X * X)) < tol, H
+        assert abs(r - (1 + cone[0] * X + cone[1] * X * X)) > 20 * tol, H
+    # nu = 1/2: the quoted first coefficient of the cone, applied to the pyramid with its face angle, is 13 % low;
+    # with the edge angle (tan = sqrt(2) tan(alpha)) 23 % high
+    p1 = pt.pyramid_series(0.5)[0]
+    quoted = pt.GARCIA_2018_PYRAMID_AS_APPLIED.coefficients[0]
+    assert quoted / p1 - 1 == pytest.approx(-0.133, abs=0.005)
+    assert quoted * math.sqrt(2) / p1 - 1 == pytest.approx(0.226, abs=0.005)
+    assert pt.GARCIA_2018_PYRAMID_AS_APPLIED.quoted_from[1].startswith("yu-efremov/ViscoIndent")
+
+
+@pytest.mark.slow
+def test_pyramid_remainder_falls_like_X_cubed():
+    # THINLAYER_SLOW: n = 256, X = 0.1, 0.05, 0.025: the remainder after (PT.5) falls by about 8 per halving of X
+    c1, c2 = pt.pyramid_series(0.3, 4, 256)
+    rem = [pt.direct_pyramid_ratio(0.3, H, 4, 256) - (1 + c1 / H + c2 / H**2) for H in (10.0, 20.0, 40.0)]
+    assert 6 < rem[0] / rem[1] < 11, rem
+    assert abs(rem[2]) < 2e-5, rem

@@ -64,6 +64,28 @@ against the direct solver: ``nu = 0.3``: ``-0.25``, ``-4.0e-2``, ``-2.1e-3``, ``
 incompressible layer needs a far thinner layer).  There the published series (for ``nu = 1/2``, thick layers) are off
 by factors 20 to 1000; at ``nu = 0.45`` and ``X = 1`` Garcia & Garcia's is ``+19 %`` off (their ``nu = 1/2``).
 
+(PT.5) *Any self-similar tip, through X^2: the pyramid.*  The constant part ``b_0`` of (T.2) shifts the displacement
+uniformly, whatever the contact's shape: the layer at depth delta is the half-space at ``delta + b_0 P/(2 pi vartheta
+H)``, the ``b_1`` part entering at relative order ``(c/H)^3``.  For a tip whose half-space force is ``P_hs = K
+delta^m`` (cone, pyramid: m = 2) the ratio ``y = P/P_hs`` therefore solves ``y = (1 + eps y)^m``, ``eps = b_0
+P_hs(delta)/(2 pi vartheta H delta)``:
+
+    y = 1 + m eps + (3 m^2 - m)/2 eps^2 + O(eps^3)            (:func:`homogeneous_tip_series`, sympy)
+
+The cone (``K = 4 vartheta tan(theta)/pi``, ``eps = 2 b_0 X/pi^2``) gives back the first two terms of (PT.3).  A
+regular pyramid of face angle alpha has ``P_hs = k vartheta tan(alpha) delta^2`` (k does not depend on alpha or nu,
+by scaling), so ``P/P_hs = 1 + (b_0 k/pi) X + 5 (b_0 k/(2 pi))^2 X^2 + O(X^3)``, ``X = delta tan(alpha)/h``.  k is
+measured by the 2D solver on the half-space (:func:`pyramid_half_space_coefficient`): 1.47582, 1.47539, 1.47528 at
+n = 128, 256, 512 for four faces (cf. Sneddon's cone, ``4/pi = 1.27324``).  At ``nu = 1/2`` the pyramid's
+coefficients are ``0.8316``, ``0.8644`` (the cone's ``0.7174``, ``0.6434``).  Checked against the 2D solver on a
+bonded layer (``nu = 0.3``, X = 0.1, 0.05, both forces on one grid): the remainder after the two terms is ``2.9e-4``
+and ``3.4e-5`` at n = 256, falling like ``X^3`` (``THINLAYER_SLOW``); at n = 128 ``2.8e-4`` and ``-2.8e-5`` (a grid
+floor of about ``5e-5``), where the cone's two terms leave ``1.0e-2`` and ``4.7e-3``.  Two repositories (pyAF,
+ViscoIndent) apply the cone's coefficients to pyramids with ``X = delta tan(angle)/h``
+(:data:`GARCIA_2018_PYRAMID_AS_APPLIED`): read with the face angle their first coefficient ``0.721`` is 13 % below
+the pyramid's ``0.8316``, read with the edge angle (``tan = sqrt(2) tan(alpha)``, ``0.721 sqrt(2) = 1.020``) 23 %
+above; the errata registry holds the entry.
+
 The tables put each published series beside the direct axisymmetric solver
 (:func:`thinlayer.numerics.axisymmetric.solve_axisymmetric`, no asymptotics), the derived series (PT.3) and, for
 compressible layers at large ``X``, the thin-layer law of the cone (:mod:`thinlayer.asymptotics.tip_law`).
@@ -82,7 +104,8 @@ from .._checks import InputError
 
 __all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
            "cone_series", "paraboloid_series", "derived_cone_ratio", "direct_cone_ratio", "comparison_table",
-           "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table"]
+           "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table", "GARCIA_2018_PYRAMID_AS_APPLIED",
+           "homogeneous_tip_series", "pyramid_half_space_coefficient", "pyramid_series", "direct_pyramid_ratio"]
 
 #: the quoting repositories (a secondary source: the publications' own equations were not read)
 PYAF = "sebastienjanel/pyAF, file src/compute_tools/stiffness_correction.py"
@@ -115,10 +138,10 @@ READ_ATTEMPTS = {
     ),
 }
 
-#: what became of the pyramid of Garcia & Garcia (2018): no source read prints its coefficients, and the 2D solver
-#: for pyramids (Punch.pyramid, solve_2d) had not landed when this module was written
-PYRAMID_STATUS = ("not compared: no source read quotes Garcia & Garcia's pyramid coefficients (pyAF applies the cone's "
-                  "to pyramids; PyFMRheo has no pyramid entry), and Punch.pyramid/solve_2d were not in this branch")
+#: what became of the pyramid of Garcia & Garcia (2018): the publication was not read (READ_ATTEMPTS); the repositories
+#: that cite it apply the cone's coefficients to pyramids (GARCIA_2018_PYRAMID_AS_APPLIED), compared with (PT.5)
+PYRAMID_STATUS = ("compared through X^2 only (PT.5): pyAF and ViscoIndent apply the cone's coefficients to pyramids; "
+                  "the pyramid's own first two coefficients follow from its half-space force (2D solver) and b_0")
 
 
 @dataclass(frozen=True)
@@ -186,6 +209,18 @@ GARCIA_2018_CONE = PublishedCorrection(
     "not read (READ_ATTEMPTS: no copy of the publication was available)")
 
 PUBLISHED = (GAVARA_2012, GARCIA_2018_CONE)
+
+VISCOINDENT = "yu-efremov/ViscoIndent, file bottom_effect_correction.py (commit 0709d3af)"
+
+#: the cone's series of Garcia & Garcia as two repositories apply it to a pyramid (pyAF: "Sneddon (Cone and Pyramid)";
+#: ViscoIndent: ``modelprobe in ['pyramid', 'cone']``), with X = delta tan(angle)/h; not in :data:`PUBLISHED` (the
+#: tables are the cone's): compared in (PT.5)
+GARCIA_2018_PYRAMID_AS_APPLIED = PublishedCorrection(
+    "garcia2018-pyramid", "garcia2018", (PYAF, VISCOINDENT),
+    r"1 + 0.721\,X + 0.650\,X^2 + 0.491\,X^3 + 0.225\,X^4,\ X = \frac{\delta\tan\alpha}{h}",
+    (0.721, 0.650, 0.491, 0.225), 0.5,
+    "not read (READ_ATTEMPTS: no copy of the publication was available); the repositories use the cone's series "
+    "for pyramids")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -417,3 +452,77 @@ def thin_layer_table(X_values=(2.0, 5.0, 10.0), nu: float = 0.45, published=PUBL
         quoted = tuple((p.key, float(p.ratio(X))) for p in published)
         rows.append(ThinRow(float(X), nu, c, ratio, (p0 + p1) / ps, quoted))
     return tuple(rows)
+
+
+# ---------------------------------------------------------------------------------------------
+# (PT.5): any self-similar tip through X^2; the pyramid
+# ---------------------------------------------------------------------------------------------
+_eps = sp.Symbol("epsilon", positive=True)
+
+
+@lru_cache(maxsize=8)
+def homogeneous_tip_series(m: int = 2, order: int = 2) -> tuple[sp.Expr, ...]:
+    r"""(PT.5): ``P/P_hs = sum_j y_j eps^j`` for a tip with ``P_hs = K delta^m``, ``eps = b_0 P_hs/(2 pi vartheta H
+    delta)``: the fixed point of ``y = (1 + eps y)^m`` to ``eps^order`` (order <= 2: ``b_1`` enters at 3).
+
+    Examples
+    --------
+    >>> homogeneous_tip_series(2)
+    (1, 2, 5)
+    """
+    if isinstance(m, bool) or not isinstance(m, int) or not 1 <= m <= 8:
+        raise InputError(f"m (P_hs ~ delta^m) must be an integer in [1, 8], got {m!r}")
+    if isinstance(order, bool) or not isinstance(order, int) or not 1 <= order <= 2:
+        raise InputError(f"order must be 1 or 2 (b_1 enters at order 3), got {order!r}")
+    y = sp.Integer(1)
+    for _ in range(order):
+        y = _trunc(sp.expand((1 + _eps * y) ** m), _eps, order)
+    return tuple(sp.expand(y).coeff(_eps, j) for j in range(order + 1))
+
+
+def _sides(sides: Any) -> int:
+    if isinstance(sides, bool) or sides not in (3, 4):
+        raise InputError(f"sides must be 3 or 4, got {sides!r}")
+    return int(sides)
+
+
+@lru_cache(maxsize=8)
+def pyramid_half_space_coefficient(sides: int = 4, n: int = 128) -> float:
+    """``k = P_hs/(vartheta tan(alpha) delta^2)`` of a regular pyramid on the half-space, by the 2D solver
+    (:func:`thinlayer.numerics.fft2d.solve_2d`, n x n cells, alpha = 45 deg, delta = 1; k depends on neither).
+    """
+    from ..layers.kernels import HalfSpace
+    from ..numerics.fft2d import solve_2d
+    from ..punch import Punch
+
+    res = solve_2d(HalfSpace(), Punch.pyramid(45, _sides(sides)), delta0=1.0, n=n, nu=0.3, extent=_extent(sides))
+    return res.force * (1 - 0.3)  # vartheta = 1/(1 - nu), tan 45 = 1, delta = 1
+
+
+def _extent(sides: int) -> float:
+    return 1.5 if sides == 4 else 2.2  # corners at 1/cos(pi/N): 1.414, 2.0 (delta tan(alpha) = 1)
+
+
+def pyramid_series(nu: float = 0.5, sides: int = 4, n: int = 128) -> tuple[float, float]:
+    """(PT.5): the pyramid's ``(c_1, c_2)`` of ``P/P_hs = 1 + c_1 X + c_2 X^2``, ``X = delta tan(alpha)/h``."""
+    b0 = float(_moments(nu)[_b0])
+    k = pyramid_half_space_coefficient(sides, n)
+    y = homogeneous_tip_series(2, 2)
+    e = b0 * k / (2 * math.pi)  # eps = e X
+    return float(y[1]) * e, float(y[2]) * e * e
+
+
+@lru_cache(maxsize=16)
+def direct_pyramid_ratio(nu: float, H: float, sides: int = 4, n: int = 128) -> float:
+    """``P/P_hs`` of the pyramid (45 deg, delta = 1, X = 1/H) on a bonded layer (``nu < 1/2``) by the 2D solver,
+    both forces on the same grid.
+    """
+    from ..layers.kernels import BondedLayer
+    from ..numerics.fft2d import solve_2d
+    from ..punch import Punch
+
+    if isinstance(nu, bool) or not isinstance(nu, (int, float)) or not 0 <= nu < 0.5:
+        raise InputError(f"nu must be a number in [0, 0.5) (the 2D solver takes no incompressible layer), got {nu!r}")
+    res = solve_2d(BondedLayer(float(nu)), Punch.pyramid(45, _sides(sides)), delta0=1.0, H=float(H), n=n,
+                   extent=_extent(sides))
+    return res.force * (1 - nu) / pyramid_half_space_coefficient(sides, n)
