@@ -9,6 +9,7 @@ src/pyfmrheo/models/correction_factors.py.  The pyramid of Garcia & Garcia is no
 import math
 
 import mpmath
+import numpy as np
 import pytest
 import sympy as sp
 
@@ -193,3 +194,19 @@ def test_pyramid_remainder_falls_like_X_cubed():
     rem = [pt.direct_pyramid_ratio(0.3, H, 4, 256) - (1 + c1 / H + c2 / H**2) for H in (10.0, 20.0, 40.0)]
     assert 6 < rem[0] / rem[1] < 11, rem
     assert abs(rem[2]) < 2e-5, rem
+
+
+@pytest.mark.slow
+def test_published_series_against_the_any_thickness_cone_law(direct):
+    # THINLAYER_SLOW (the law costs ~3 s to build): the engine's any-thickness cone law agrees with the direct solver
+    # (within 1e-5 here), and gives the published series' worst differences over X <= 0.1, 0.3, 0.5, 1
+    cmp = pt.law_comparison()
+    at = pt.law_comparison(np.array(sorted(direct)))
+    for X, law in zip(at.X, at.law):
+        assert abs(law / direct[X][0] - 1) < 1e-5
+    garcia = [cmp.worst("garcia2018-cone", m)[0] for m in (0.1, 0.3, 0.5, 1.0)]
+    assert 2e-4 < garcia[0] < 5e-4 and abs(garcia[1]) < 1e-3 and abs(garcia[2]) < 1.5e-3 and garcia[3] > 1e-2
+    assert cmp.worst("gavara2012-becc", 0.1)[0] > 0.4
+    assert abs(cmp.worst("derived", 0.1)[0]) < 2e-6 and abs(cmp.worst("derived", 0.5)[0]) < 1e-3
+    with pytest.raises(ValueError, match="X must"):
+        pt.law_comparison(np.array([0.5, 2.0]))
