@@ -134,6 +134,9 @@ READ_ATTEMPTS = {
          "the publisher's page: abstract, figure titles and reference list; the text is behind a paywall"),
         ("pages corpus: queries on the BECC formula, its wording, the supplementary information, Europe PMC",
          "no other copy of the article or of its supplementary information"),
+        ("find_string 'nnano.2012.163', 'Gavara2012', 'Gavara_2012'",
+         "PyFMRheo's bec_gavara_cone citing the nature.com page, and a log of a failed full-text download of "
+         "PMC3492504: no copy of the article"),
         ("docs and issues corpora; find_string 'Bottom Effect Cone Correction', 'Gavara N, Chadwick'",
          "a README of a MATLAB analysis repository and a reference list citing another Gavara & Chadwick article: no "
          "equation"),
@@ -144,6 +147,9 @@ READ_ATTEMPTS = {
          "same group (Nanoscale 2021 d1nr03894j, Nanoscale 2025 d5nr01236h), of which only the opening is returned"),
         ("docs and issues corpora: Garcia 2018 bottom-effect coefficients, cone, pyramid", "nothing on the article"),
         ("find_string 'single cell cultured on a rigid support'", "no hit"),
+        ("find_string 'j.bpj.2018.05.012', 'Garcia2018.pdf'",
+         "code that cites the DOI (yu-efremov/ViscoIndent bottom_effect_correction.py, an Igor HertzFit procedure, a "
+         "PyFMRheo example): a secondary source, the same coefficients; no copy of the article"),
     ),
 }
 
