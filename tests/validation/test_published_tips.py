@@ -4,7 +4,8 @@ Sources: neither publication's equations could be read (Gavara & Chadwick: the n
 PMC3492504, title, abstract and first paragraph only; Garcia & Garcia: no copy found); every address tried is in
 ``published_tips.READ_ATTEMPTS``.  The coefficients are those two repositories
 attribute to them: sebastienjanel/pyAF src/compute_tools/stiffness_correction.py and jlopezalo/PyFMRheo
-src/pyfmrheo/models/correction_factors.py.  The pyramid of Garcia & Garcia is not compared (PYRAMID_STATUS).
+src/pyfmrheo/models/correction_factors.py.  For pyramids pyAF and yu-efremov/ViscoIndent apply the cone's
+coefficients; the pyramid's own first two terms are derived (PT.5) and checked with the 2D solver (PYRAMID_STATUS).
 """
 import math
 
