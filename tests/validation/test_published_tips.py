@@ -213,3 +213,37 @@ def test_published_series_against_the_any_thickness_cone_law(direct):
     assert abs(cmp.worst("derived", 0.1)[0]) < 2e-6 and abs(cmp.worst("derived", 0.5)[0]) < 1e-3
     with pytest.raises(ValueError, match="X must"):
         pt.law_comparison(np.array([0.5, 2.0]))
+
+
+# --------------------------------------------------------------------------- (PT.3) on a frictionless base
+def _frictionless_moments():
+    # b_k = int_0^oo u^(2k) (1 - L(u)) du, L = (cosh 2u - 1)/(sinh 2u + 2u), written out overflow-free (mpmath)
+    def one_minus_L(u):
+        e = mpmath.exp(-2 * u)
+        return (2 * e * (1 + 2 * u) - 2 * e * e) / (1 - e * e + 4 * u * e)
+
+    return [float(mpmath.quad(lambda u, k=k: u ** (2 * k) * one_minus_L(u), [0, 1, 4, 12, 40, mpmath.inf]))
+            for k in (0, 1)]
+
+
+def test_cone_series_on_a_frictionless_base():
+    b0, b1 = _frictionless_moments()
+    m = pt._moments(0.3, "frictionless")
+    assert float(m[sp.Symbol("b_0", positive=True)]) == pytest.approx(b0, rel=1e-12)
+    assert float(m[sp.Symbol("b_1", positive=True)]) == pytest.approx(b1, rel=1e-12)
+    X = np.array([0.05, 0.1, 0.3])
+    fr = pt.derived_cone_ratio(X, 0.3, base="frictionless")
+    assert np.array_equal(fr, pt.derived_cone_ratio(X, 0.45, base="frictionless"))  # the kernel has no nu
+    assert fr[1] == pytest.approx(1 + 4 * b0 / math.pi**2 * 0.1 + 20 * b0**2 / math.pi**4 * 0.01, abs=2e-4)
+    # the bonded nu = 1/2 series (Garcia & Garcia as quoted) on a non-bonded layer: the correction 1.57 times too large
+    assert (pt.GARCIA_2018_CONE.ratio(0.1) - 1) / (fr[1] - 1) == pytest.approx(1.575, abs=0.005)
+    with pytest.raises(ValueError, match="base"):
+        pt.derived_cone_ratio(0.1, 0.3, base="sliding")
+
+
+@pytest.mark.slow
+def test_direct_solver_confirms_the_frictionless_series():
+    # THINLAYER_SLOW (two axisymmetric solves, ~5 s): remainders -6.4e-9, -2.2e-7 at X = 0.05, 0.1 (X^5)
+    rem = [pt.direct_cone_ratio(X, 0.3, base="frictionless")[0]
+           - float(pt.derived_cone_ratio(X, 0.3, base="frictionless")) for X in (0.05, 0.1)]
+    assert abs(rem[0]) < 2e-8 and abs(rem[1]) < 5e-7 and 20 < rem[1] / rem[0] < 45

@@ -41,6 +41,12 @@ problem at ``(delta, theta)`` is ``cot(theta)`` times the problem at ``(delta ta
 route on the paraboloid reproduces the engine's own (T.7) sphere series term by term (the tests), and the direct
 solver confirms the cone's series (remainder ``O(X^5)``).
 
+On a layer lying without friction on the base (``base="frictionless"``, a kernel without nu: ``b_0 = 1.167577``,
+``b_1 = 1.581526``) the same route gives ``1 + 0.47320 X + 0.27990 X^2 + 0.12048 X^3 + 0.02406 X^4``; the direct solver
+leaves ``-6.4e-9``, ``-2.2e-7``, ``-7.9e-6`` at ``X = 0.05``, ``0.1``, ``0.2`` (``X^5``).  No published non-bonded cone
+series was read; the bonded ``nu = 1/2`` series as quoted (Garcia & Garcia) makes the correction 1.57 times too large
+on such a layer at ``X = 0.1``.
+
 (PT.4) *Convergence.*  The series of (T.2) converges for ``c < H``; for the cone ``c = 2 X H/pi (1 + ...)``, so
 ``X`` up to about 1.4.  The comparisons run over ``X <= 1``.
 
@@ -350,47 +356,57 @@ def _check_order(order: Any) -> int:
     return order
 
 
-def _layer(nu: float):
-    from ..layers.kernels import BondedLayer, IncompressibleLayer
+_BASES = ("bonded", "frictionless")
+
+
+def _layer(nu: float, base: str = "bonded"):
+    from ..layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer
 
     if isinstance(nu, bool) or not isinstance(nu, (int, float)) or not 0 <= nu <= 0.5:
         raise InputError(f"nu must be a number in [0, 0.5], got {nu!r}")
+    if base not in _BASES:
+        raise InputError(f"base must be 'bonded' or 'frictionless' (the layer's base), got {base!r}")
+    if base == "frictionless":  # the kernel does not depend on nu; vartheta = mu/(1 - nu) does
+        return FrictionlessLayer(nu=float(nu))
     return IncompressibleLayer() if nu == 0.5 else BondedLayer(float(nu))
 
 
-def _moments(nu: float) -> dict:
+def _moments(nu: float, base: str = "bonded") -> dict:
     from ..asymptotics.thick_layer import thick_moments
 
-    b = thick_moments(_layer(nu), 1)
+    b = thick_moments(_layer(nu, base), 1)
     return {_b0: float(b[0]), _b1: float(b[1])}
 
 
-def derived_cone_ratio(X: Any, nu: float = 0.5, order: int = ORDER) -> np.ndarray:
-    """(PT.3) evaluated: ``P/P_S`` of the cone on a bonded layer at ``X = delta tan(theta)/H``."""
-    coeffs = [float(c.subs(_moments(nu))) for c in cone_series(order)[0]]
+def derived_cone_ratio(X: Any, nu: float = 0.5, order: int = ORDER, base: str = "bonded") -> np.ndarray:
+    """(PT.3) evaluated: ``P/P_S`` of the cone on a layer bonded to (or lying without friction on, ``base =
+    "frictionless"``, independent of nu) a rigid base, at ``X = delta tan(theta)/H``.
+    """
+    coeffs = [float(c.subs(_moments(nu, base))) for c in cone_series(order)[0]]
     return np.polynomial.polynomial.polyval(np.asarray(X, dtype=float), coeffs)
 
 
-def direct_cone_ratio(X: float, nu: float = 0.5, half_angle_deg: float = 45.0, n: int | None = None
-                      ) -> tuple[float, float, float]:
+def direct_cone_ratio(X: float, nu: float = 0.5, half_angle_deg: float = 45.0, n: int | None = None,
+                      base: str = "bonded") -> tuple[float, float, float]:
     """``(P/P_S, c/H, estimated relative error of P)`` by the direct axisymmetric solver (H = mu = 1).
 
-    Cached per ``(X, nu, angle, n)`` within a process (a solve takes seconds).
+    Cached per ``(X, nu, angle, n, base)`` within a process (a solve takes seconds).
     """
     if isinstance(X, bool) or not isinstance(X, (int, float)) or not 0 < X <= 50:
         raise InputError(f"X = delta tan(theta)/h must be a number in (0, 50], got {X!r}")
-    _layer(nu)
-    return _direct(float(X), float(nu), float(half_angle_deg), n)
+    _layer(nu, base)
+    return _direct(float(X), float(nu), float(half_angle_deg), n, base)
 
 
 @lru_cache(maxsize=64)
-def _direct(X: float, nu: float, half_angle_deg: float, n: int | None) -> tuple[float, float, float]:
+def _direct(X: float, nu: float, half_angle_deg: float, n: int | None, base: str = "bonded"
+            ) -> tuple[float, float, float]:
     from ..numerics.axisymmetric import solve_axisymmetric
     from ..punch import Punch
 
     t = math.tan(math.radians(half_angle_deg))
     d = X / t
-    res = solve_axisymmetric(_layer(nu), Punch.cone(half_angle_deg), d, H=1.0, mu=1.0, n=n)
+    res = solve_axisymmetric(_layer(nu, base), Punch.cone(half_angle_deg), d, H=1.0, mu=1.0, n=n)
     ps = 4 / (1.0 - nu) * t * d * d / math.pi  # vartheta = mu/(1 - nu)
     return res.force / ps, res.radius, res.force_error / res.force
 
