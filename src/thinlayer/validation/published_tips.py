@@ -83,13 +83,13 @@ regular pyramid of face angle alpha has ``P_hs = k vartheta tan(alpha) delta^2``
 by scaling), so ``P/P_hs = 1 + (b_0 k/pi) X + 5 (b_0 k/(2 pi))^2 X^2 + O(X^3)``, ``X = delta tan(alpha)/h``.  k is
 measured by the 2D solver on the half-space (:func:`pyramid_half_space_coefficient`): 1.47582, 1.47539, 1.47528 at
 n = 128, 256, 512 for four faces (cf. Sneddon's cone, ``4/pi = 1.27324``).  At ``nu = 1/2`` the pyramid's
-coefficients are ``0.8316``, ``0.8644`` (the cone's ``0.7174``, ``0.6434``).  Checked against the 2D solver on a
-bonded layer (``nu = 0.3``, X = 0.1, 0.05, both forces on one grid): the remainder after the two terms is ``2.9e-4``
-and ``3.4e-5`` at n = 256, falling like ``X^3`` (``THINLAYER_SLOW``); at n = 128 ``2.8e-4`` and ``-2.8e-5`` (a grid
-floor of about ``5e-5``), where the cone's two terms leave ``1.0e-2`` and ``4.7e-3``.  Two repositories (pyAF,
-ViscoIndent) apply the cone's coefficients to pyramids with ``X = delta tan(angle)/h``
+coefficients are ``0.8313``, ``0.8638`` with k at n = 512 (the cone's ``0.7174``, ``0.6434``).  Checked against
+the 2D solver on a bonded layer (``nu = 0.3``, X = 0.1, 0.05, both forces on one grid): the remainder after the two
+terms is ``2.9e-4`` and ``3.4e-5`` at n = 256, falling like ``X^3`` (``THINLAYER_SLOW``); at n = 128 ``2.8e-4`` and
+``-2.8e-5`` (a grid floor of about ``5e-5``), where the cone's two terms leave ``1.0e-2`` and ``4.7e-3``.  Two
+repositories (pyAF, ViscoIndent) apply the cone's coefficients to pyramids with ``X = delta tan(angle)/h``
 (:data:`GARCIA_2018_PYRAMID_AS_APPLIED`): read with the face angle their first coefficient ``0.721`` is 13 % below
-the pyramid's ``0.8316``, read with the edge angle (``tan = sqrt(2) tan(alpha)``, ``0.721 sqrt(2) = 1.020``) 23 %
+the pyramid's ``0.8313``, read with the edge angle (``tan = sqrt(2) tan(alpha)``, ``0.721 sqrt(2) = 1.020``) 23 %
 above; the errata registry holds the entry.
 
 Against the engine's any-thickness cone law (:func:`law_comparison`;
