@@ -101,7 +101,8 @@ ENTRIES: tuple[Reference, ...] = (
         pages="2923",
         record="thinlayer's own citation (thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES)",
         note="Cited as thinlayer records it; title, initials, last page and DOI could not be checked against a "
-             "record of the publication"),
+             "record of the publication (no copy or record of it was found: "
+             "thinlayer.validation.published_tips.READ_ATTEMPTS)"),
     Reference(
         "gavara2012", authors=("N. Gavara", "R. S. Chadwick"),
         title="Determination of the elastic moduli of thin samples and adherent cells using conical atomic force "
@@ -109,9 +110,10 @@ ENTRIES: tuple[Reference, ...] = (
         journal="Nature Nanotechnology", year=2012, volume="7", issue="11", pages="733-736",
         doi="10.1038/nnano.2012.163",
         record="the publisher's page of the article (nature.com, title, abstract and figure titles) and the first "
-               "page of its author manuscript in PubMed Central, PMC3492504 (authors, journal, volume, issue, pages, "
-               "DOI)",
-        note="Only the title page and abstract could be read; the article's equations were not"),
+               "page of its author manuscript in PubMed Central, PMC3492504, NIHMS402200, PMID 23023646 (authors, "
+               "journal, volume, issue, pages, DOI)",
+        note="Only the title page, abstract and first paragraph could be read; the article's equations were not "
+             "(addresses tried: thinlayer.validation.published_tips.READ_ATTEMPTS)"),
     Reference(
         "sneddon1965", authors=("I. N. Sneddon",),
         title="The relation between load and penetration in the axisymmetric Boussinesq problem for a punch of "

@@ -7,9 +7,12 @@ AFM users correct Sneddon's cone ``P_S = 4 vartheta tan(theta) delta^2/pi`` (``=
     P/P_S = 1 + sum_n c_n X^n.
 
 Two published series are implemented here as they are quoted (:data:`GAVARA_2012`, :data:`GARCIA_2018_CONE`).
-Neither publication's equations could be read by this project (only its title page and abstract): the coefficients
-are those that two public code repositories attribute to the publications, and every value here is labelled
-"as quoted in" those repositories (a secondary source), never as the paper's own print.
+Neither publication's equations could be read by this project: :data:`READ_ATTEMPTS` lists every address tried and
+what it held (for Gavara & Chadwick the opening of the PubMed Central author manuscript PMC3492504, up to the end of
+its first paragraph, and the publisher's abstract page; for Garcia & Garcia no stored copy at all).  The
+coefficients are those that two public code repositories attribute to the publications, and every value here is
+labelled "as quoted in" those repositories (a secondary source), never as the paper's own print; no equation number
+or page of either paper is cited, because none was seen.
 
 Derivation (PT.1)-(PT.4): the same series, derived
 ------------------------------------------------------
@@ -38,6 +41,12 @@ problem at ``(delta, theta)`` is ``cot(theta)`` times the problem at ``(delta ta
 route on the paraboloid reproduces the engine's own (T.7) sphere series term by term (the tests), and the direct
 solver confirms the cone's series (remainder ``O(X^5)``).
 
+On a layer lying without friction on the base (``base="frictionless"``, a kernel without nu: ``b_0 = 1.167577``,
+``b_1 = 1.581526``) the same route gives ``1 + 0.47320 X + 0.27990 X^2 + 0.12048 X^3 + 0.02406 X^4``; the direct solver
+leaves ``-6.4e-9``, ``-2.2e-7``, ``-7.9e-6`` at ``X = 0.05``, ``0.1``, ``0.2`` (``X^5``).  No published non-bonded cone
+series was read; the bonded ``nu = 1/2`` series as quoted (Garcia & Garcia) makes the correction 1.57 times too large
+on such a layer at ``X = 0.1``.
+
 (PT.4) *Convergence.*  The series of (T.2) converges for ``c < H``; for the cone ``c = 2 X H/pi (1 + ...)``, so
 ``X`` up to about 1.4.  The comparisons run over ``X <= 1``.
 
@@ -61,6 +70,36 @@ against the direct solver: ``nu = 0.3``: ``-0.25``, ``-4.0e-2``, ``-2.1e-3``, ``
 incompressible layer needs a far thinner layer).  There the published series (for ``nu = 1/2``, thick layers) are off
 by factors 20 to 1000; at ``nu = 0.45`` and ``X = 1`` Garcia & Garcia's is ``+19 %`` off (their ``nu = 1/2``).
 
+(PT.5) *Any self-similar tip, through X^2: the pyramid.*  The constant part ``b_0`` of (T.2) shifts the displacement
+uniformly, whatever the contact's shape: the layer at depth delta is the half-space at ``delta + b_0 P/(2 pi vartheta
+H)``, the ``b_1`` part entering at relative order ``(c/H)^3``.  For a tip whose half-space force is ``P_hs = K
+delta^m`` (cone, pyramid: m = 2) the ratio ``y = P/P_hs`` therefore solves ``y = (1 + eps y)^m``, ``eps = b_0
+P_hs(delta)/(2 pi vartheta H delta)``:
+
+    y = 1 + m eps + (3 m^2 - m)/2 eps^2 + O(eps^3)            (:func:`homogeneous_tip_series`, sympy)
+
+The cone (``K = 4 vartheta tan(theta)/pi``, ``eps = 2 b_0 X/pi^2``) gives back the first two terms of (PT.3).  A
+regular pyramid of face angle alpha has ``P_hs = k vartheta tan(alpha) delta^2`` (k does not depend on alpha or nu,
+by scaling), so ``P/P_hs = 1 + (b_0 k/pi) X + 5 (b_0 k/(2 pi))^2 X^2 + O(X^3)``, ``X = delta tan(alpha)/h``.  k is
+measured by the 2D solver on the half-space (:func:`pyramid_half_space_coefficient`): 1.47582, 1.47539, 1.47528 at
+n = 128, 256, 512 for four faces (cf. Sneddon's cone, ``4/pi = 1.27324``).  At ``nu = 1/2`` the pyramid's
+coefficients are ``0.8313``, ``0.8638`` with k at n = 512 (the cone's ``0.7174``, ``0.6434``).  Checked against
+the 2D solver on a bonded layer (``nu = 0.3``, X = 0.1, 0.05, both forces on one grid): the remainder after the two
+terms is ``2.9e-4`` and ``3.4e-5`` at n = 256, falling like ``X^3`` (``THINLAYER_SLOW``); at n = 128 ``2.8e-4`` and
+``-2.8e-5`` (a grid floor of about ``5e-5``), where the cone's two terms leave ``1.0e-2`` and ``4.7e-3``.  Two
+repositories (pyAF, ViscoIndent) apply the cone's coefficients to pyramids with ``X = delta tan(angle)/h``
+(:data:`GARCIA_2018_PYRAMID_AS_APPLIED`): read with the face angle their first coefficient ``0.721`` is 13 % below
+the pyramid's ``0.8313``, read with the edge angle (``tan = sqrt(2) tan(alpha)``, ``0.721 sqrt(2) = 1.020``) 23 %
+above; the errata registry holds the entry.
+
+Against the engine's any-thickness cone law (:func:`law_comparison`;
+:func:`thinlayer.contact.any_thickness_tips.cone_law`, ``chi = c_0/H = 2X/pi``, within its estimate, at most
+``7.4e-5`` for ``X <= 1``, of the direct solver) on 400 points of ``0.005 <= X <= 1`` at ``nu = 1/2``, the largest
+relative differences are: Garcia & Garcia as quoted ``3.8e-4``, ``7.9e-4``, ``-1.09e-3``, ``+1.40e-2`` over
+``X <= 0.1``, ``0.3``, ``0.5``, ``1``; Gavara & Chadwick as quoted ``+0.43``, ``+3.4``, ``+7.6``, ``+16``; the
+derived four terms (PT.3) ``-9.5e-7``, ``-1.3e-4``, ``-4.7e-4``, ``+3.5e-2`` (``THINLAYER_SLOW`` test: building the
+law costs about 3 s).
+
 The tables put each published series beside the direct axisymmetric solver
 (:func:`thinlayer.numerics.axisymmetric.solve_axisymmetric`, no asymptotics), the derived series (PT.3) and, for
 compressible layers at large ``X``, the thin-layer law of the cone (:mod:`thinlayer.asymptotics.tip_law`).
@@ -68,7 +107,7 @@ compressible layers at large ``X``, the thin-layer law of the cone (:mod:`thinla
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
@@ -77,18 +116,53 @@ import sympy as sp
 
 from .._checks import InputError
 
-__all__ = ["PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
+__all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
            "cone_series", "paraboloid_series", "derived_cone_ratio", "direct_cone_ratio", "comparison_table",
-           "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table"]
+           "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table", "GARCIA_2018_PYRAMID_AS_APPLIED",
+           "homogeneous_tip_series", "pyramid_half_space_coefficient", "pyramid_series", "direct_pyramid_ratio",
+           "LawComparison", "law_comparison"]
 
 #: the quoting repositories (a secondary source: the publications' own equations were not read)
 PYAF = "sebastienjanel/pyAF, file src/compute_tools/stiffness_correction.py"
 PYFMRHEO = "jlopezalo/PyFMRheo, file src/pyfmrheo/models/correction_factors.py"
 
-#: what became of the pyramid of Garcia & Garcia (2018): no source read prints its coefficients, and the 2D solver
-#: for pyramids (Punch.pyramid, solve_2d) had not landed when this module was written
-PYRAMID_STATUS = ("not compared: no source read quotes Garcia & Garcia's pyramid coefficients (pyAF applies the cone's "
-                  "to pyramids; PyFMRheo has no pyramid entry), and Punch.pyramid/solve_2d were not in this branch")
+#: every address where the publications were looked for (issue 24 item 5, two rounds), and what each held:
+#: ``{citation key: ((address or query, what was found), ...)}``.  The search tool's stored web pages return the
+#: opening of a page only (about 2,400 characters), never its body.
+READ_ATTEMPTS = {
+    "gavara2012": (
+        ("https://pmc.ncbi.nlm.nih.gov/articles/PMC3492504",
+         "the author manuscript in PubMed Central, stored: its opening only (Nat Nanotechnol 2012 Sep 30; "
+         "7(11):733-736, doi 10.1038/nnano.2012.163, PMCID PMC3492504, NIHMSID NIHMS402200, PMID 23023646; "
+         "abstract; the first paragraph of the text). The BECC formula lies past the part returned. (The brief's "
+         "PMC3835343 is not this article's PMCID.)"),
+        ("https://www.nature.com/articles/nnano.2012.163",
+         "the publisher's page: abstract, figure titles and reference list; the text is behind a paywall"),
+        ("pages corpus: queries on the BECC formula, its wording, the supplementary information, Europe PMC",
+         "no other copy of the article or of its supplementary information"),
+        ("find_string 'nnano.2012.163', 'Gavara2012', 'Gavara_2012'",
+         "PyFMRheo's bec_gavara_cone citing the nature.com page, and a log of a failed full-text download of "
+         "PMC3492504: no copy of the article"),
+        ("docs and issues corpora; find_string 'Bottom Effect Cone Correction', 'Gavara N, Chadwick'",
+         "a README of a MATLAB analysis repository and a reference list citing another Gavara & Chadwick article: no "
+         "equation"),
+    ),
+    "garcia2018": (
+        ("pages corpus: title, 'Biophys J. 2018;114(12):2923-2932', doi 10.1016/j.bpj.2018.05.012, PMC6026379",
+         "no stored page of the article (PubMed Central, Europe PMC, cell.com, PubMed): only later articles of the "
+         "same group (Nanoscale 2021 d1nr03894j, Nanoscale 2025 d5nr01236h), of which only the opening is returned"),
+        ("docs and issues corpora: Garcia 2018 bottom-effect coefficients, cone, pyramid", "nothing on the article"),
+        ("find_string 'single cell cultured on a rigid support'", "no hit"),
+        ("find_string 'j.bpj.2018.05.012', 'Garcia2018.pdf'",
+         "code that cites the DOI (yu-efremov/ViscoIndent bottom_effect_correction.py, an Igor HertzFit procedure, a "
+         "PyFMRheo example): a secondary source, the same coefficients; no copy of the article"),
+    ),
+}
+
+#: what became of the pyramid of Garcia & Garcia (2018): the publication was not read (READ_ATTEMPTS); the repositories
+#: that cite it apply the cone's coefficients to pyramids (GARCIA_2018_PYRAMID_AS_APPLIED), compared with (PT.5)
+PYRAMID_STATUS = ("compared through X^2 only (PT.5): pyAF and ViscoIndent apply the cone's coefficients to pyramids; "
+                  "the pyramid's own first two coefficients follow from its half-space force (2D solver) and b_0")
 
 
 @dataclass(frozen=True)
@@ -142,7 +216,8 @@ GAVARA_2012 = PublishedCorrection(
     "gavara2012-becc", "gavara2012", (PYAF, PYFMRHEO),
     r"1 + 1.7795\,\frac{2\tan\theta}{\pi^2}\,\frac{\delta}{h} + 16\,(1.7795)^2\tan^2\theta\,\frac{\delta^2}{h^2}",
     (2 * _A0 / math.pi**2, 16 * _A0**2), 0.5,
-    "not read (the publication's text was not available); the title of its figure 2 on the publisher's page reads "
+    "not read (READ_ATTEMPTS: the publication's text was not available); the title of its figure 2 on the "
+    "publisher's page reads "
     "'Indentations larger than 10% of the sample thickness result in a very large overestimaton of the elastic "
     "modulus' (sic)")
 
@@ -152,9 +227,21 @@ GARCIA_2018_CONE = PublishedCorrection(
     "garcia2018-cone", "garcia2018", (PYFMRHEO, PYAF),
     r"1 + 0.721\,X + 0.650\,X^2 + 0.491\,X^3 + 0.225\,X^4,\ X = \frac{\delta\tan\theta}{h}",
     (0.721, 0.650, 0.491, 0.225), 0.5,
-    "not read (the publication's text was not available)")
+    "not read (READ_ATTEMPTS: no copy of the publication was available)")
 
 PUBLISHED = (GAVARA_2012, GARCIA_2018_CONE)
+
+VISCOINDENT = "yu-efremov/ViscoIndent, file bottom_effect_correction.py (commit 0709d3af)"
+
+#: the cone's series of Garcia & Garcia as two repositories apply it to a pyramid (pyAF: "Sneddon (Cone and Pyramid)";
+#: ViscoIndent: ``modelprobe in ['pyramid', 'cone']``), with X = delta tan(angle)/h; not in :data:`PUBLISHED` (the
+#: tables are the cone's): compared in (PT.5)
+GARCIA_2018_PYRAMID_AS_APPLIED = PublishedCorrection(
+    "garcia2018-pyramid", "garcia2018", (PYAF, VISCOINDENT),
+    r"1 + 0.721\,X + 0.650\,X^2 + 0.491\,X^3 + 0.225\,X^4,\ X = \frac{\delta\tan\alpha}{h}",
+    (0.721, 0.650, 0.491, 0.225), 0.5,
+    "not read (READ_ATTEMPTS: no copy of the publication was available); the repositories use the cone's series "
+    "for pyramids")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -269,47 +356,57 @@ def _check_order(order: Any) -> int:
     return order
 
 
-def _layer(nu: float):
-    from ..layers.kernels import BondedLayer, IncompressibleLayer
+_BASES = ("bonded", "frictionless")
+
+
+def _layer(nu: float, base: str = "bonded"):
+    from ..layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer
 
     if isinstance(nu, bool) or not isinstance(nu, (int, float)) or not 0 <= nu <= 0.5:
         raise InputError(f"nu must be a number in [0, 0.5], got {nu!r}")
+    if base not in _BASES:
+        raise InputError(f"base must be 'bonded' or 'frictionless' (the layer's base), got {base!r}")
+    if base == "frictionless":  # the kernel does not depend on nu; vartheta = mu/(1 - nu) does
+        return FrictionlessLayer(nu=float(nu))
     return IncompressibleLayer() if nu == 0.5 else BondedLayer(float(nu))
 
 
-def _moments(nu: float) -> dict:
+def _moments(nu: float, base: str = "bonded") -> dict:
     from ..asymptotics.thick_layer import thick_moments
 
-    b = thick_moments(_layer(nu), 1)
+    b = thick_moments(_layer(nu, base), 1)
     return {_b0: float(b[0]), _b1: float(b[1])}
 
 
-def derived_cone_ratio(X: Any, nu: float = 0.5, order: int = ORDER) -> np.ndarray:
-    """(PT.3) evaluated: ``P/P_S`` of the cone on a bonded layer at ``X = delta tan(theta)/H``."""
-    coeffs = [float(c.subs(_moments(nu))) for c in cone_series(order)[0]]
+def derived_cone_ratio(X: Any, nu: float = 0.5, order: int = ORDER, base: str = "bonded") -> np.ndarray:
+    """(PT.3) evaluated: ``P/P_S`` of the cone on a layer bonded to (or lying without friction on, ``base =
+    "frictionless"``, independent of nu) a rigid base, at ``X = delta tan(theta)/H``.
+    """
+    coeffs = [float(c.subs(_moments(nu, base))) for c in cone_series(order)[0]]
     return np.polynomial.polynomial.polyval(np.asarray(X, dtype=float), coeffs)
 
 
-def direct_cone_ratio(X: float, nu: float = 0.5, half_angle_deg: float = 45.0, n: int | None = None
-                      ) -> tuple[float, float, float]:
+def direct_cone_ratio(X: float, nu: float = 0.5, half_angle_deg: float = 45.0, n: int | None = None,
+                      base: str = "bonded") -> tuple[float, float, float]:
     """``(P/P_S, c/H, estimated relative error of P)`` by the direct axisymmetric solver (H = mu = 1).
 
-    Cached per ``(X, nu, angle, n)`` within a process (a solve takes seconds).
+    Cached per ``(X, nu, angle, n, base)`` within a process (a solve takes seconds).
     """
     if isinstance(X, bool) or not isinstance(X, (int, float)) or not 0 < X <= 50:
         raise InputError(f"X = delta tan(theta)/h must be a number in (0, 50], got {X!r}")
-    _layer(nu)
-    return _direct(float(X), float(nu), float(half_angle_deg), n)
+    _layer(nu, base)
+    return _direct(float(X), float(nu), float(half_angle_deg), n, base)
 
 
 @lru_cache(maxsize=64)
-def _direct(X: float, nu: float, half_angle_deg: float, n: int | None) -> tuple[float, float, float]:
+def _direct(X: float, nu: float, half_angle_deg: float, n: int | None, base: str = "bonded"
+            ) -> tuple[float, float, float]:
     from ..numerics.axisymmetric import solve_axisymmetric
     from ..punch import Punch
 
     t = math.tan(math.radians(half_angle_deg))
     d = X / t
-    res = solve_axisymmetric(_layer(nu), Punch.cone(half_angle_deg), d, H=1.0, mu=1.0, n=n)
+    res = solve_axisymmetric(_layer(nu, base), Punch.cone(half_angle_deg), d, H=1.0, mu=1.0, n=n)
     ps = 4 / (1.0 - nu) * t * d * d / math.pi  # vartheta = mu/(1 - nu)
     return res.force / ps, res.radius, res.force_error / res.force
 
@@ -386,3 +483,115 @@ def thin_layer_table(X_values=(2.0, 5.0, 10.0), nu: float = 0.45, published=PUBL
         quoted = tuple((p.key, float(p.ratio(X))) for p in published)
         rows.append(ThinRow(float(X), nu, c, ratio, (p0 + p1) / ps, quoted))
     return tuple(rows)
+
+
+# ---------------------------------------------------------------------------------------------
+# (PT.5): any self-similar tip through X^2; the pyramid
+# ---------------------------------------------------------------------------------------------
+_eps = sp.Symbol("epsilon", positive=True)
+
+
+@lru_cache(maxsize=8)
+def homogeneous_tip_series(m: int = 2, order: int = 2) -> tuple[sp.Expr, ...]:
+    r"""(PT.5): ``P/P_hs = sum_j y_j eps^j`` for a tip with ``P_hs = K delta^m``, ``eps = b_0 P_hs/(2 pi vartheta H
+    delta)``: the fixed point of ``y = (1 + eps y)^m`` to ``eps^order`` (order <= 2: ``b_1`` enters at 3).
+
+    Examples
+    --------
+    >>> homogeneous_tip_series(2)
+    (1, 2, 5)
+    """
+    if isinstance(m, bool) or not isinstance(m, int) or not 1 <= m <= 8:
+        raise InputError(f"m (P_hs ~ delta^m) must be an integer in [1, 8], got {m!r}")
+    if isinstance(order, bool) or not isinstance(order, int) or not 1 <= order <= 2:
+        raise InputError(f"order must be 1 or 2 (b_1 enters at order 3), got {order!r}")
+    y = sp.Integer(1)
+    for _ in range(order):
+        y = _trunc(sp.expand((1 + _eps * y) ** m), _eps, order)
+    return tuple(sp.expand(y).coeff(_eps, j) for j in range(order + 1))
+
+
+def _sides(sides: Any) -> int:
+    if isinstance(sides, bool) or sides not in (3, 4):
+        raise InputError(f"sides must be 3 or 4, got {sides!r}")
+    return int(sides)
+
+
+@lru_cache(maxsize=8)
+def pyramid_half_space_coefficient(sides: int = 4, n: int = 128) -> float:
+    """``k = P_hs/(vartheta tan(alpha) delta^2)`` of a regular pyramid on the half-space, by the 2D solver
+    (:func:`thinlayer.numerics.fft2d.solve_2d`, n x n cells, alpha = 45 deg, delta = 1; k depends on neither).
+    """
+    from ..layers.kernels import HalfSpace
+    from ..numerics.fft2d import solve_2d
+    from ..punch import Punch
+
+    res = solve_2d(HalfSpace(), Punch.pyramid(45, _sides(sides)), delta0=1.0, n=n, nu=0.3, extent=_extent(sides))
+    return res.force * (1 - 0.3)  # vartheta = 1/(1 - nu), tan 45 = 1, delta = 1
+
+
+def _extent(sides: int) -> float:
+    return 1.5 if sides == 4 else 2.2  # corners at 1/cos(pi/N): 1.414, 2.0 (delta tan(alpha) = 1)
+
+
+def pyramid_series(nu: float = 0.5, sides: int = 4, n: int = 128) -> tuple[float, float]:
+    """(PT.5): the pyramid's ``(c_1, c_2)`` of ``P/P_hs = 1 + c_1 X + c_2 X^2``, ``X = delta tan(alpha)/h``."""
+    b0 = float(_moments(nu)[_b0])
+    k = pyramid_half_space_coefficient(sides, n)
+    y = homogeneous_tip_series(2, 2)
+    e = b0 * k / (2 * math.pi)  # eps = e X
+    return float(y[1]) * e, float(y[2]) * e * e
+
+
+@lru_cache(maxsize=16)
+def direct_pyramid_ratio(nu: float, H: float, sides: int = 4, n: int = 128) -> float:
+    """``P/P_hs`` of the pyramid (45 deg, delta = 1, X = 1/H) on a bonded layer (``nu < 1/2``) by the 2D solver,
+    both forces on the same grid.
+    """
+    from ..layers.kernels import BondedLayer
+    from ..numerics.fft2d import solve_2d
+    from ..punch import Punch
+
+    if isinstance(nu, bool) or not isinstance(nu, (int, float)) or not 0 <= nu < 0.5:
+        raise InputError(f"nu must be a number in [0, 0.5) (the 2D solver takes no incompressible layer), got {nu!r}")
+    res = solve_2d(BondedLayer(float(nu)), Punch.pyramid(45, _sides(sides)), delta0=1.0, H=float(H), n=n,
+                   extent=_extent(sides))
+    return res.force * (1 - nu) / pyramid_half_space_coefficient(sides, n)
+
+
+# ---------------------------------------------------------------------------------------------
+# the published series against the engine's any-thickness cone law
+# ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LawComparison:
+    """:func:`law_comparison`: the law's ``P/P_S`` on a grid of ``X`` and each series' relative difference from it."""
+
+    X: np.ndarray = field(repr=False)
+    law: np.ndarray = field(repr=False)
+    differences: tuple[tuple[str, np.ndarray], ...] = field(repr=False)
+
+    def worst(self, key: str, X_max: float) -> tuple[float, float]:
+        """``(difference, X)`` of the largest ``|difference|`` of series ``key`` over ``X <= X_max``."""
+        d = dict(self.differences)[key]
+        m = self.X <= X_max
+        i = int(np.argmax(np.abs(d[m])))
+        return float(d[m][i]), float(self.X[m][i])
+
+
+def law_comparison(X: Any = None, nu: float = 0.5, published=(*PUBLISHED,)) -> LawComparison:
+    """Each published series and the derived one (PT.3, key ``"derived"``) against the any-thickness cone law
+    (:func:`thinlayer.contact.any_thickness_tips.cone_law_from`, the packaged table, without its estimate), on
+    ``X = delta tan(theta)/h`` (default 400 points in ``[0.005, 1]``).
+    """
+    from ..contact.any_thickness_tips import TIPS_TABLE_PATH, cone_law_from
+
+    X = np.linspace(0.005, 1.0, 400) if X is None else np.asarray(X, dtype=float)
+    if X.ndim != 1 or X.size == 0 or not np.all((X > 0) & (X <= 1.5)):
+        raise InputError("X must be a non-empty 1D array of values in (0, 1.5] (the thick range, c < H)")
+    _layer(nu)
+    with np.load(TIPS_TABLE_PATH) as z:
+        data = {k: z[k] for k in z.files}
+    law = cone_law_from(data, float(nu), "bonded", with_estimate=False).ratios(2 * X / math.pi)[0]
+    diffs = [(p.key, p.ratio(X) / law - 1) for p in published]
+    diffs.append(("derived", derived_cone_ratio(X, nu) / law - 1))
+    return LawComparison(X, law, tuple(diffs))

@@ -44,6 +44,20 @@ and with the direct solver, independently):
   ``delta0 = C n c^n sqrt(pi) Gamma(n/2)/(2 Gamma((n+1)/2))`` and, with ``D(t) = delta0 (t/c)^n``,
   ``P = 4 vartheta c delta0 n/(n + 1)`` (Sneddon 1965's punch ``C r^n``; Galin 1946).
 
+(S3) *An independent check: Boussinesq's Green function.*  The derivation above passes through the Abel inversion and
+Copson's representation.  :func:`boussinesq_check` checks its result by a route that uses neither: the pressure
+
+    p(r) = -int_r^c g'(t)/sqrt(t^2 - r^2) dt = (2 vartheta/pi) int_0^{arccosh(c/r)} D'(r cosh u) du   (g(c) = 0)
+
+is put into Boussinesq's point-load solution ``u3(x) = (1/(2 pi vartheta)) iint p(y)/|x - y| dy`` (``(1 - nu)/(2 pi
+mu)`` of (2.1) with ``L = 1``), whose ring average is ``int_0^{2 pi} d phi/|x - y| = 4 K(m)/(r + s)``,
+``m = 4 r s/(r + s)^2`` (K the complete elliptic integral of the first kind), and the displacement is compared with
+the contact condition ``u3 = delta0 - Phi(r)`` (1.5) at radii inside the contact; the force is ``2 pi int_0^c p s ds``.
+With ``D'(t)`` of each tip (cone ``(pi/2) cot(alpha)``, power law ``n D(t)/t``, exact sphere
+``(1/2) ln((R + t)/(R - t)) + t R/(R^2 - t^2)``) mpmath quadrature gives ``u3 - (delta0 - Phi)`` below ``1e-9 delta0``
+and the force of (S2) to ``1e-10`` (``tests/validation/test_sneddon_independent.py``): the half-space limits used
+against the direct solver rest on this check, not on any quoted formula.
+
 Equation numbers of Sneddon's paper are not quoted: the formulas here are derived, not transcribed, and each is
 checked against quadrature and the direct solver.  Only the first page of Sneddon (1965) could be read by this
 project; :data:`QUOTED` holds the closed forms as a secondary source (nanite's models) writes them, and
@@ -58,8 +72,8 @@ from dataclasses import dataclass
 
 import mpmath
 
-__all__ = ["HalfSpaceIndentation", "half_space_by_quadrature", "sneddon_cone", "sneddon_power_law",
-           "sneddon_sphere", "sneddon_symbolic", "QUOTED"]
+__all__ = ["HalfSpaceIndentation", "BoussinesqCheck", "boussinesq_check", "half_space_by_quadrature", "sneddon_cone",
+           "sneddon_power_law", "sneddon_sphere", "sneddon_symbolic", "QUOTED"]
 
 #: Sneddon's half-space closed forms as a secondary source writes them (the publication's own pages with these
 #: formulas could not be read): ``(file, formula)``, with ``E/(1 - nu^2) = 2 vartheta``, ``a`` the contact radius.
@@ -134,3 +148,60 @@ def sneddon_symbolic(slope, r, c):
     d = sp.integrate(f, (t, 0, sp.pi / 2))
     p = 4 * c * sp.integrate(sp.expand(sp.sin(t) ** 2 * f), (t, 0, sp.pi / 2))
     return sp.simplify(d), sp.simplify(p)
+
+
+@dataclass(frozen=True)
+class BoussinesqCheck:
+    """(S3): the derived half-space solution put back into Boussinesq's Green function.
+
+    Attributes
+    ----------
+    radii : tuple of float
+        Radii inside the contact where the displacement was computed.
+    residuals : tuple of float
+        ``(u3(r) - (delta0 - Phi(r)))/delta0`` at each radius (zero for the exact solution).
+    force : float
+        ``2 pi int_0^c p(s) s ds`` of the pressure (S3).
+    edge_pressure : float
+        ``p(0.999 c)/p(c/2)``: small for a pressure that vanishes continuously at the edge (1.5).
+    """
+
+    radii: tuple[float, ...]
+    residuals: tuple[float, ...]
+    force: float
+    edge_pressure: float
+
+
+def boussinesq_check(depth_slope: Callable, profile: Callable, delta0: float, c: float, radii=(0.3, 0.9),
+                     vartheta: float = 1.0, dps: int = 12) -> BoussinesqCheck:
+    """(S3) by mpmath quadrature: the pressure of ``D'(t)`` in Boussinesq's solution, against ``delta0 - Phi(r)``.
+
+    Parameters
+    ----------
+    depth_slope : callable
+        ``D'(t)`` for ``0 < t <= c`` (mpmath-callable), D of (S1).
+    profile : callable
+        ``Phi(r)``.
+    delta0, c : float
+        Depth and contact radius of the solution under test.
+    radii : tuple of float
+        Radii as fractions of c, in (0, 1).
+    """
+    with mpmath.workdps(dps):
+        c_ = mpmath.mpf(c)
+
+        def pressure(s):
+            top = mpmath.acosh(max(c_ / s, mpmath.mpf(1)))
+            return 2 * vartheta / mpmath.pi * mpmath.quad(lambda u: depth_slope(s * mpmath.cosh(u)), [0, top],
+                                                          maxdegree=5)
+
+        def u3(r):
+            def ring(s):  # 4 s K(m)/(r + s), m <= 1 (rounding kept below the log singularity at s = r)
+                return pressure(s) * 4 * s / (r + s) * mpmath.ellipk(min(4 * r * s / (r + s) ** 2, 1 - mpmath.eps))
+            return mpmath.quad(ring, [0, r, c_]) / (2 * mpmath.pi * vartheta)
+
+        rr = tuple(float(f) * c for f in radii)
+        res = tuple(float((u3(mpmath.mpf(r)) - (delta0 - profile(mpmath.mpf(r)))) / delta0) for r in rr)
+        force = float(2 * mpmath.pi * mpmath.quad(lambda s: pressure(s) * s, [0, c_]))
+        edge = float(pressure(mpmath.mpf(0.999) * c_) / pressure(c_ / 2))
+        return BoussinesqCheck(rr, res, force, edge)
