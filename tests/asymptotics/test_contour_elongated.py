@@ -266,26 +266,49 @@ MIXED = {(2, 0): 1e-20, (0, 2): 1.0, (4, 0): 1e-40, (2, 2): 5e-21, (1, 1): 3e-11
 def _polar_reference(coeffs: dict, d0: float, scale: float):
     """Area and perimeter of ``sum c_ij x1^i x2^j < d0`` by polar quadrature in ``X = x1/scale``, ``Y = x2``.
 
-    ``rho(t)`` the boundary radius (mpmath.findroot from the quadratic estimate, then checked to be the
-    first crossing: ``dPhi/drho > 0``); ``x1' = scale (rho' cos t - rho sin t)``, ``x2' = rho' sin t + rho cos t``
-    with ``rho' = -Phi_t/Phi_rho``; the perimeter integrand is split at the tips (``x1' = 0``, findroot).
+    ``rho(t)`` the boundary radius (Newton's method on the polynomial in rho from the quadratic estimate, then
+    checked to be the first crossing: ``dPhi/drho > 0``); ``x1' = scale (rho' cos t - rho sin t)``,
+    ``x2' = rho' sin t + rho cos t`` with ``rho' = -Phi_t/Phi_rho``; the perimeter integrand is split at the tips (``x1' = 0``, findroot).
     """
     with mpmath.workdps(30):
         sc = mpmath.mpf(scale)
         C = {(i, j): mpmath.mpf(v) * sc**i for (i, j), v in coeffs.items()}
 
-        def phi(r, t):
-            return sum(cc * (r * mpmath.cos(t)) ** i * (r * mpmath.sin(t)) ** j for (i, j), cc in C.items())
+        def coefficients(t):  # Phi(rho, t) = sum_k A_k rho^k, A_k = sum_{i+j=k} c_ij cos^i t sin^j t
+            cs, sn = mpmath.cos(t), mpmath.sin(t)
+            A = [mpmath.mpf(0)] * 5
+            for (i, j), cc in C.items():
+                A[i + j] += cc * cs**i * sn**j
+            return A, cs, sn
+
+        def phi_t(r, cs, sn):  # dPhi/dt, differentiated term by term
+            return sum(cc * r ** (i + j) * ((j * cs ** (i + 1) * sn ** (j - 1) if j else 0)
+                                            - (i * cs ** (i - 1) * sn ** (j + 1) if i else 0))
+                       for (i, j), cc in C.items())
+
+        def rho_at(t):
+            """The boundary radius by Newton's method on the polynomial in rho, from the quadratic estimate."""
+            A, cs, sn = coefficients(t)
+            r = mpmath.sqrt(d0 / A[2])
+            for _ in range(60):
+                p = sum(a * r**k for k, a in enumerate(A)) - d0
+                dp = sum(k * a * r ** (k - 1) for k, a in enumerate(A) if k)
+                step = p / dp
+                r -= step
+                if abs(step) < mpmath.mpf(10) ** -28 * r:
+                    break
+            else:
+                raise AssertionError("Newton did not converge")
+            dp = sum(k * a * r ** (k - 1) for k, a in enumerate(A) if k)
+            assert dp > 0  # the first crossing: Phi increases through d0
+            return r, dp, cs, sn
 
         def rho(t):
-            a2 = sum(cc * mpmath.cos(t) ** i * mpmath.sin(t) ** j for (i, j), cc in C.items() if i + j == 2)
-            r = mpmath.findroot(lambda r: phi(r, t) - d0, mpmath.sqrt(d0 / a2))
-            assert mpmath.diff(lambda q: phi(q, t), r) > 0
-            return r
+            return rho_at(t)[0]
 
         def drho(t):
-            r = rho(t)
-            return r, -mpmath.diff(lambda q: phi(r, q), t) / mpmath.diff(lambda q: phi(q, t), r)
+            r, dp, cs, sn = rho_at(t)
+            return r, -phi_t(r, cs, sn) / dp
 
         def dx1(t):
             r, rp = drho(t)
