@@ -268,7 +268,8 @@ def _polar_reference(coeffs: dict, d0: float, scale: float):
 
     ``rho(t)`` the boundary radius (Newton's method on the polynomial in rho from the quadratic estimate, then
     checked to be the first crossing: ``dPhi/drho > 0``); ``x1' = scale (rho' cos t - rho sin t)``,
-    ``x2' = rho' sin t + rho cos t`` with ``rho' = -Phi_t/Phi_rho``; the perimeter integrand is split at the tips (``x1' = 0``, findroot).
+    ``x2' = rho' sin t + rho cos t`` with ``rho' = -Phi_t/Phi_rho``; the perimeter integrand is split at the tips
+    (``x1' = 0``, findroot).
     """
     with mpmath.workdps(30):
         sc = mpmath.mpf(scale)
