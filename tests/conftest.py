@@ -9,8 +9,16 @@ import os
 import shutil
 import tempfile
 
-import mpmath
-import pytest
+# One BLAS/OpenMP thread per process, set before numpy loads in the xdist workers and in every process a test starts
+# (they inherit the environment): the suite runs two workers on two cores, and OpenBLAS's own threads on top of
+# them spin against each other.  Measured on tests/numerics/test_axisymmetric.py at load 8: 33.2 s user CPU and
+# 69 s wall with the default threads, 6.5 s and 17 s with one (the Galerkin matrix G^T diag(v) G at c/H = 80:
+# 0.27 s -> 0.01 s CPU).  A value the caller set is kept.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import mpmath  # noqa: E402 - after the thread settings
+import pytest  # noqa: E402
 
 TESTS = os.path.dirname(os.path.abspath(__file__))
 _CACHE_ENV = "THINLAYER_CACHE_DIR"
