@@ -1,0 +1,455 @@
+r"""Adhesion (JKR) on a thin layer: the edge stress intensity from the boundary layer, and the JKR relations.
+
+Equation tags ``J.n`` continue those of :mod:`thinlayer.numerics.adhesion` (J.1)-(J.6), the direct solver this
+module's results are measured against (in ``tests/adhesion``; this stage never imports the numerics).
+Assumptions: frictionless contact, layer bonded to a rigid base (kernel (2.3)), compressible (``A > 0``),
+JKR adhesion (short-range: the work of adhesion ``w`` is spent at the contact edge; tension inside the contact).
+
+(J.7) *Half-space (L = 1), from the superposition (J.1).*  With ``L = 1`` the Fredholm equation (F.6) has no
+kernel, so Copson's function (F.3) is ``phi(t) = (2 vartheta/pi) G(t)`` with the Abel transform of the surface
+displacement ``G(t) = delta - t int_0^t Phi'(r) (t^2 - r^2)^{-1/2} dr`` (F.4).  Then ``P = 2 pi int_0^c phi``,
+the edge strength is ``phi(c)``, ``K_I = -phi(c) sqrt(pi/c)`` (J.2), ``G = K_I^2/(4 vartheta)`` (J.3) and
+``G = d^2 S'(c)/(4 pi c)`` with ``S = dP/d delta = 4 vartheta c`` (J.4).  :func:`half_space_jkr` carries this out
+in sympy for ``Phi = r^2/(2R)`` and finds JKR (1971) with ``E* = 2 vartheta``.
+
+(J.8) *The adhesive edge layer (compressible thin layer).*  Near the edge the outer (inner-expansion) pressure
+(2.29) is ``p_out(n) = p_e + p_s n + ...``, ``n`` the distance from the contact edge into the contact.  With
+adhesion ``p_e`` need not vanish.  In the boundary layer (``tau = n/H``) the equation (3.15) with this right side
+is solved by the factorisation ``F = F+ F-`` of :mod:`thinlayer.asymptotics.wiener_hopf` exactly as in (F.11)
+(constant part) and (3.22) (linear part, edge at ``tau = 0``, no condition (3.18))::
+
+    q(tau) = p_e g(tau) + p_s H l(tau),
+    int_0^oo g e^{-p tau} dtau = 1/(p Phi(p)),       int_0^oo l e^{-p tau} dtau = (1/Phi(p)) (1/p^2 - h/p),
+
+``Phi(p) = F+(ip)/F+(0) = 1 - h p + ...`` and ``h = h*`` the exact edge shift (3.18).  Hence, with ``qhat`` the
+smooth solution (transform ``1/(p^2 Phi)``), ``g = qhat'`` and ``l = qhat - h qhat'``: the adhesive edge layer is
+
+    q(tau) = (p_e - h H p_s) qhat'(tau) + p_s H qhat(tau).
+
+*Edge.*  ``F ~ 1/|s|`` at infinity and ``F+(0)^2 = A`` give ``1/Phi(p) ~ sqrt(A p)`` as ``p -> oo`` *exactly*
+(``log Phi - log Phi0 = O(1/p)`` for every normaliser ``Phi0``; for Alexandrov's (3.19) ``sqrt(B/C) = sqrt(A)``
+by (3.20)), so ``qhat' ~ sqrt(A/(pi tau))`` and ``qhat ~ 2 sqrt(A tau/pi)`` (bounded).  With
+``sigma_zz = -q`` and ``n = H tau``::
+
+    K_I = -sqrt(2 A H) (p_e - h H p_s) = -sqrt(2 A H) p_out(-h H).                                      (J.8)
+
+The stress intensity is the outer pressure extrapolated to the shifted contour ``Gamma_0`` (``n = -h H``), times
+``sqrt(2 A H)``: the new layer constant is ``sqrt(2 A)``, *exact* (it does not depend on the factorisation's
+precision; ``h`` does, and enters only through the position ``-h H``).  The smooth-edge condition (3.18) is
+``K_I = 0``, i.e. ``p_out(-h H) = 0``: the edge shift (3.25) again.  By (J.3)
+
+    G = K_I^2/(4 vartheta) = A H p_out(-h H)^2/(2 vartheta)                                             (J.9)
+
+with a relative remainder ``O(H/c)`` (the edge's curvature ``1/c`` enters the boundary layer at the next order).
+
+(J.10) *First order (the curvature).*  The energy route fixes that order for a disc: the adhesive state is the
+smooth one plus a flat punch (J.1), whose ``G = vartheta d^2 (lambda kappa)'/(pi c)`` (J.4) with the thin-layer
+stiffness ``kappa_r = (pi/(4A)) (lambda + h)^2/lambda`` (F.12)::
+
+    G = vartheta d^2 (c + h H)/(2 A H c) = (J.9) x (1 + h H/c),                                         (J.10)
+
+i.e. the straight-edge ``K_I`` of (J.8) times ``sqrt(a_e/c)``, ``a_e = c + h H``.
+
+(J.11) *Thin-layer JKR for the paraboloid* ``Phi = r^2/(2R)``.  ``p_out = vartheta (delta - r^2/(2R))/(A H)``
+(2.29) (the ``m_1`` term of (2.31) is ``O((H/c)^2)`` relative and is left out); the smooth state at radius ``c``
+has its outer contour at ``a_e = c + h H``: ``delta_1 = a_e^2/(2R)``, ``P_1 = pi vartheta a_e^4/(4 A R H)``.
+``G = w`` in (J.10)::
+
+    delta = a_e^2/(2R) - sqrt(2 A H w c/(vartheta a_e)),
+    P     = pi vartheta a_e^4/(4 A R H) - pi a_e^2 sqrt(2 vartheta w c/(A H a_e)).                       (J.11)
+
+``order=0`` (``a_e = c``): relative remainder ``O(H/c)``; ``order=1``: ``O((H/c)^2)``.  Measured against the
+direct solver (``tests/adhesion``, nu = 0.3, ``R = c^2/(2H)``, ``w = 0.05 vartheta H``, c/H = 5 ... 80): order 0
+falls with slope -1.0 in ``delta`` and ``P``; order 1 with slope -2.0 in ``delta`` and -3.0 in ``P``.
+
+(J.12) *Pull-off on the thin layer.*  From (J.11) at order 0, ``P = a X^2 - b X`` in ``X = c^2`` has its minimum
+``-b^2/(4a)``: the load-controlled pull-off force is ``2 pi w R`` (the value of DMT and of a Winkler foundation),
+at ``c^2 = 2 R sqrt(2 A H w/vartheta)``.  ``delta(c)`` increases with ``c``: under displacement control the contact
+is lost at ``c = O(H)``, outside the thin-layer law (no thin-layer value: the direct solver answers).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from .. import symbols as S
+from .._checks import InputError, check_choice, positive
+from ..display import RichDisplay
+from ..layers.kernels import BondedLayer, GenericLayer
+from ..punch import Punch
+from .flat_punch import thin_flat_punch_derivation
+from .inner import inner_pressure
+from .wiener_hopf import edge_shift_exact, wiener_hopf_solution
+
+__all__ = ["AdhesiveEdgeLayer", "HalfSpaceJKR", "ThinLayerJKR", "adhesive_edge_layer", "half_space_jkr",
+           "thin_layer_jkr"]
+
+c, R, w, E_star = sp.symbols("c R w E^*", positive=True)
+r, t = sp.symbols("r t", positive=True)
+d = sp.Symbol("d", real=True)
+A = GenericLayer.A_symbol
+h = sp.Symbol("h^*", real=True)
+p_e, p_s = sp.symbols("p_e p_s", real=True)
+vt, H, delta = S.vartheta, S.H, S.delta0
+_H, _R = H, R  # the symbols, for methods whose arguments are named H and R
+
+
+# --------------------------------------------------------------------------- (J.7) the half-space
+@dataclass(frozen=True)
+class HalfSpaceJKR(RichDisplay):
+    """JKR on the half-space derived from the superposition (J.1) with ``L = 1`` (J.7).
+
+    Attributes
+    ----------
+    force, depth : sympy.Expr
+        sympy.Expr
+        ``P(c)`` and ``delta(c)`` at ``G = w`` in ``c, R, w, E*`` (``E* = 2 vartheta``).
+    release_rate_sif, release_rate_energy : sympy.Expr
+        sympy.Expr
+        ``G`` from ``K_I`` (J.3) and from the compliance (J.4) in ``vartheta, c, d``.
+    pull_off_load, pull_off_displacement : sympy.Expr
+        sympy.Expr
+        ``-min P`` under load and displacement control (J.6).
+    jump_in_radius : sympy.Expr
+        Radius of the stable state at ``delta = 0`` (displacement-controlled jump-in).
+    """
+
+    force: sp.Expr
+    depth: sp.Expr
+    release_rate_sif: sp.Expr
+    release_rate_energy: sp.Expr
+    pull_off_load: sp.Expr
+    pull_off_displacement: sp.Expr
+    jump_in_radius: sp.Expr
+
+    equation = "J.7"
+
+    def latex(self) -> str:
+        return (rf"P = {sp.latex(self.force)},\quad \delta = {sp.latex(self.depth)},\quad "
+                rf"P_{{\mathrm{{off}}}} = {sp.latex(self.pull_off_load)}\ (\text{{load}}),\ "
+                rf"{sp.latex(self.pull_off_displacement)}\ (\text{{displacement}}) \tag{{J.7}}")
+
+    def text_lines(self) -> list[str]:
+        return ["HalfSpaceJKR: JKR from the superposition (J.1) with L = 1   (J.7)",
+                f"  P(c) = {self.force}", f"  delta(c) = {self.depth}",
+                f"  pull-off: load control {self.pull_off_load}, displacement control {self.pull_off_displacement}"]
+
+
+def _linear_root(expr: sp.Expr, var: sp.Symbol) -> sp.Expr:
+    """The root of ``expr``, linear in ``var`` (checked)."""
+    a = sp.diff(expr, var)
+    if sp.diff(a, var) != 0:
+        raise ArithmeticError(f"{expr} is not linear in {var}")
+    return sp.cancel(-expr.subs(var, 0) / a)
+
+
+def _positive_roots(expr: sp.Expr) -> list:
+    """Positive roots ``c`` of ``expr(c)``, a polynomial in ``sqrt(c)`` (``c = x^2``)."""
+    x = sp.Symbol("x", positive=True)
+    num = sp.numer(sp.together(sp.expand(expr.subs(c, x**2))))
+    roots = sp.roots(sp.Poly(num, x))
+    return [sp.simplify(rt**2) for rt in roots if rt.is_positive]
+
+
+@lru_cache(maxsize=1)
+def half_space_jkr() -> HalfSpaceJKR:
+    """(J.7) in sympy: Copson's function with ``L = 1``, the paraboloid ``r^2/(2R)``, both routes for ``G``.
+
+    Examples
+    --------
+    >>> jkr = half_space_jkr()
+    >>> jkr.pull_off_load
+    3*pi*R*w/2
+    """
+    Phi = r**2 / (2 * R)
+    G_abel = delta - t * sp.integrate(sp.diff(Phi, r) / sp.sqrt(t**2 - r**2), (r, 0, t))  # (F.4)
+    phi = 2 * vt / sp.pi * G_abel  # (F.6) with no kernel
+    P = 2 * sp.pi * sp.integrate(phi, (t, 0, c))  # (F.3)
+    delta1 = _linear_root(phi.subs(t, c), delta)  # smooth edge: phi(c) = 0
+    S_c = sp.diff(P, delta)  # stiffness at fixed c: 4 vartheta c
+    K = -sp.sqrt(sp.pi / c) * (phi.subs(t, c).subs(delta, delta1 + d))  # (J.2)
+    G_K = sp.expand(K**2 / (4 * vt))  # (J.3)
+    G_E = sp.expand(d**2 * sp.diff(S_c, c) / (4 * sp.pi * c))  # (J.4)
+    d_jkr = -sp.sqrt(sp.pi * c * w / vt)  # G = w, tensile root (J.5)
+    if sp.simplify(G_K.subs(d, d_jkr) - w) != 0:
+        raise ArithmeticError("(J.5): the tensile root does not solve G = w")
+    P_c = sp.expand((P.subs(delta, delta1) + S_c * d_jkr).subs(vt, E_star / 2))
+    delta_c = sp.expand((delta1 + d_jkr).subs(vt, E_star / 2))
+    (c_load,), (c_disp,) = _positive_roots(sp.diff(P_c, c)), _positive_roots(sp.diff(delta_c, c))
+    (c_jump,) = _positive_roots(delta_c)
+    P_load = sp.simplify(-P_c.subs(c, c_load))
+    P_disp = sp.simplify(-P_c.subs(c, c_disp))
+    return HalfSpaceJKR(P_c, delta_c, G_K, G_E, P_load, P_disp, c_jump)
+
+
+# --------------------------------------------------------------------------- (J.8)-(J.9) the edge layer
+@dataclass(frozen=True)
+class AdhesiveEdgeLayer(RichDisplay):
+    """The adhesive boundary layer's stress intensity (J.8) and energy release rate (J.9).
+
+    Attributes
+    ----------
+    nu : float
+        Poisson ratio of the bonded layer.
+    A, h : float
+        float
+        ``A`` (2.4) and the exact edge shift ``h*`` (3.18).
+    edge_coefficient : float
+        ``lim sqrt(tau) qhat'(tau) = sqrt(A/pi)`` (J.8), exact.
+    edge_coefficient_table : float
+        The same limit read off the Wiener-Hopf table of :func:`~thinlayer.asymptotics.wiener_hopf.
+        wiener_hopf_solution` (de Hoog inversion): the numerical check of the factorisation.
+    stress_intensity_expr, release_rate_expr : sympy.Expr
+        sympy.Expr
+        ``K_I`` in ``p_e, p_s, A, H, h*`` and ``G`` in ``p_e, p_s, A, H, h*, vartheta``.
+    """
+
+    nu: float
+    A: float
+    h: float
+    edge_coefficient: float
+    edge_coefficient_table: float
+    stress_intensity_expr: sp.Expr
+    release_rate_expr: sp.Expr
+
+    equation = "J.8"
+
+    def stress_intensity(self, p_edge: Any, p_slope: Any, H: Any) -> np.ndarray:
+        """``K_I = -sqrt(2 A H) (p_e - h* H p_s)`` (J.8), vectorised; ``p`` positive in compression."""
+        Hv = np.asarray(H, dtype=float)
+        if np.any(Hv <= 0):
+            raise InputError("H must be > 0")
+        return -np.sqrt(2 * self.A * Hv) * (np.asarray(p_edge, float) - self.h * Hv * np.asarray(p_slope, float))
+
+    def release_rate(self, p_edge: Any, p_slope: Any, H: Any, vartheta: Any) -> np.ndarray:
+        """``G = K_I^2/(4 vartheta)`` (J.9)."""
+        return self.stress_intensity(p_edge, p_slope, H) ** 2 / (4 * np.asarray(vartheta, dtype=float))
+
+    def latex(self) -> str:
+        return (rf"K_I = {sp.latex(self.stress_intensity_expr)},\quad G = {sp.latex(self.release_rate_expr)},"
+                rf"\quad \mathcal{{A}} = {self.A:.10g},\ h^* = {self.h:.10g} \tag{{J.8}}")
+
+    def text_lines(self) -> list[str]:
+        return [f"AdhesiveEdgeLayer: bonded layer nu = {self.nu:g}   (J.8), (J.9)",
+                f"  K_I = {self.stress_intensity_expr}", f"  G = {self.release_rate_expr}",
+                f"  A = {self.A:.12g}, h* = {self.h:.12g}; edge coefficient sqrt(A/pi) = {self.edge_coefficient:.12g}"
+                f" (Wiener-Hopf table: {self.edge_coefficient_table:.12g})"]
+
+
+def _edge_limit_symbolic() -> None:
+    """``1/Phi(p) ~ sqrt(A p)`` and its inverse Laplace ``sqrt(A/(pi tau))`` (J.8), checked in sympy."""
+    p, tau, Bs, Cs = sp.symbols("p tau B C", positive=True)
+    phi0 = sp.sqrt(1 + p / Bs) / (1 + p / sp.sqrt(Cs))  # Alexandrov's normaliser (3.19), B = A C (3.20)
+    lim = sp.limit((1 / phi0) / sp.sqrt(p), p, sp.oo).subs(Bs, A * Cs)
+    if sp.simplify(lim - sp.sqrt(A)) != 0:
+        raise ArithmeticError("(J.8): 1/Phi ~ sqrt(A p) fails for Alexandrov's normaliser")
+    inv = sp.inverse_laplace_transform(sp.sqrt(A) / sp.sqrt(p), p, tau)
+    if sp.simplify(inv - sp.sqrt(A / (sp.pi * tau))) != 0:
+        raise ArithmeticError("(J.8): the inverse Laplace transform of sqrt(A/p) is not sqrt(A/(pi tau))")
+
+
+@lru_cache(maxsize=16)
+def _edge_layer(nu: float) -> AdhesiveEdgeLayer:
+    _edge_limit_symbolic()
+    lay = BondedLayer(nu)
+    sol = wiener_hopf_solution(nu)
+    zmax = math.sqrt(sol.tau_max)
+    # qhat - tau = g(z), z = sqrt(tau), a Chebyshev series in x = 2 z/zmax - 1:  sqrt(tau) qhat' -> g'(0)/2
+    dcheb = np.polynomial.chebyshev.chebder(np.asarray(sol.cheb)) * (2.0 / zmax)
+    table = 0.5 * float(np.polynomial.chebyshev.chebval(-1.0, dcheb))
+    K = -sp.sqrt(2 * A * H) * (p_e - h * H * p_s)
+    return AdhesiveEdgeLayer(float(nu), float(lay.A), float(sol.h), float(mpmath.sqrt(sol.A / mpmath.pi)), table,
+                             K, sp.factor(sp.expand(K**2 / (4 * vt))))
+
+
+def adhesive_edge_layer(nu: Any) -> AdhesiveEdgeLayer:
+    """The adhesive edge layer of the compressible bonded layer (J.8), (J.9); cached per nu (~3 s the first time).
+
+    Parameters
+    ----------
+    nu : float
+        Poisson ratio, ``-1 < nu < 1/2`` (the compressible layer, ``A > 0``).
+
+    Returns
+    -------
+    AdhesiveEdgeLayer
+    """
+    try:
+        val = float(nu)
+    except (TypeError, ValueError):
+        raise InputError(f"nu must be a number in (-1, 1/2), got {nu!r}") from None
+    if not -1.0 < val < 0.5:
+        raise InputError(f"nu must lie in (-1, 1/2) (the compressible layer, A > 0), got {nu!r}")
+    return _edge_layer(val)
+
+
+# --------------------------------------------------------------------------- (J.10)-(J.12) thin-layer JKR
+@dataclass(frozen=True)
+class ThinLayerJKR(RichDisplay):
+    """Thin-layer JKR relations for the paraboloid ``r^2/(2R)`` on a compressible bonded layer (J.10)-(J.12).
+
+    Attributes
+    ----------
+    nu, A, h : float
+        float
+        Poisson ratio, ``A`` (2.4), exact edge shift ``h*`` (3.18).
+    order : int
+        0 (relative remainder ``O(H/c)``) or 1 (``O((H/c)^2)``).
+    depth, force : sympy.Expr
+        sympy.Expr
+        ``delta(c)`` and ``P(c)`` at ``G = w`` in ``c, R, w, H, vartheta, A, h*`` (J.11).
+    release_rate : sympy.Expr
+        ``G`` in ``d = delta - delta_1(c)`` (J.10).
+    pull_off_leading : sympy.Expr
+        ``2 pi w R`` (J.12).
+    depth_display, force_display : sympy.Expr
+        sympy.Expr
+        The same in ``a_e`` (``= c + h* H`` at order 1, ``c`` at order 0), as printed by ``latex()``.
+    """
+
+    nu: float
+    A: float
+    h: float
+    order: int
+    depth: sp.Expr
+    force: sp.Expr
+    release_rate: sp.Expr
+    pull_off_leading: sp.Expr
+    depth_display: sp.Expr
+    force_display: sp.Expr
+
+    equation = "J.11"
+
+    def evaluate(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[np.ndarray,
+                                                                                                     np.ndarray]:
+        """``(delta, P)`` of (J.11), vectorised in the contact radius; ``vartheta = mu/(1 - nu)``."""
+        fd, fP = _compiled(self.order, self.A, self.h)
+        cv = np.asarray(radius, dtype=float)
+        if np.any(cv <= 0):
+            raise InputError("radius must be > 0")
+        vals = (cv, positive(H, "H"), positive(R, "R"), float(work_of_adhesion), positive(mu, "mu") / (1 - self.nu))
+        if not vals[3] >= 0:
+            raise InputError("work_of_adhesion must be >= 0")
+        return np.asarray(fd(*vals), dtype=float), np.asarray(fP(*vals), dtype=float)
+
+    def pull_off(self, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[float, float]:
+        """``(c, -min P)`` under load control from (J.11) (numerical minimum; order 0: ``2 pi w R``)."""
+        Hv, Rv, wv = positive(H, "H"), positive(R, "R"), positive(work_of_adhesion, "work_of_adhesion")
+        vtv = positive(mu, "mu") / (1 - self.nu)
+        c0 = math.sqrt(2 * Rv * math.sqrt(2 * self.A * Hv * wv / vtv))  # (J.12)
+        res = _minimise(lambda x: float(self.evaluate(x, Hv, Rv, wv, mu)[1]), c0)
+        return res
+
+    def latex(self) -> str:
+        ae = r"a_e = c + h^* H" if self.order == 1 else r"a_e = c"
+        return (rf"\delta = {sp.latex(self.depth_display)},\quad P = {sp.latex(self.force_display)},\quad {ae}"
+                rf"\quad (\text{{order {self.order}}}) \tag{{J.11}}")
+
+    def text_lines(self) -> list[str]:
+        return [f"ThinLayerJKR: paraboloid on a bonded layer, nu = {self.nu:g}, order {self.order}   (J.10)-(J.12)",
+                f"  delta = {self.depth_display}", f"  P = {self.force_display}",
+                "  a_e = " + ("c + h* H" if self.order == 1 else "c"),
+                f"  A = {self.A:.12g}, h* = {self.h:.12g}; pull-off (order 0) {self.pull_off_leading}"]
+
+
+@lru_cache(maxsize=32)
+def _compiled(order: int, A_val: float, h_val: float) -> tuple:
+    """Numpy functions ``(c, H, R, w, vartheta) -> delta, P`` of (J.11)."""
+    depth, force = _thin_symbolic(order)[:2]
+    args = (c, _H, _R, w, vt)
+    num = {A: A_val, h: h_val}
+    return sp.lambdify(args, depth.subs(num), "numpy"), sp.lambdify(args, force.subs(num), "numpy")
+
+
+def _minimise(f, c0: float) -> tuple[float, float]:
+    """Golden-section minimum of ``f`` on ``[c0/4, 4 c0]`` (f unimodal there), to 1e-12 relative in c."""
+    a, b = 0.25 * c0, 4.0 * c0
+    g = (math.sqrt(5) - 1) / 2
+    x1, x2 = b - g * (b - a), a + g * (b - a)
+    f1, f2 = f(x1), f(x2)
+    while b - a > 1e-12 * c0:
+        if f1 < f2:
+            b, x2, f2 = x2, x1, f1
+            x1 = b - g * (b - a)
+            f1 = f(x1)
+        else:
+            a, x1, f1 = x1, x2, f2
+            x2 = a + g * (b - a)
+            f2 = f(x2)
+    x = 0.5 * (a + b)
+    return x, -f(x)
+
+
+@lru_cache(maxsize=2)
+def _thin_symbolic(order: int) -> tuple[sp.Expr, sp.Expr, sp.Expr, sp.Expr]:
+    """(J.10)-(J.12) in sympy with the engine's stages: (2.29) via ``inner_pressure``, (F.12) via the flat punch."""
+    ip = inner_pressure(GenericLayer(), Punch.paraboloid(R)).pressure
+    m1 = [s for s in ip.free_symbols if s.name == "m_1"]
+    p_out = ip.subs({m: 0 for m in m1}).subs({S.x1: r, S.x2: 0})  # (2.29); the m_1 term is O((H/c)^2)
+    hh = h if order == 1 else 0
+    a_e = sp.Symbol("a_e", positive=True)  # the outer contour c + h* H (order 1) or c (order 0)
+    delta1 = _linear_root(p_out.subs(r, a_e), delta)  # K_I = 0 at radius c: (3.25)
+    P_of = 2 * sp.pi * sp.integrate(p_out * r, (r, 0, a_e))  # outer pressure over the disc of radius a_e
+    P1 = sp.expand(P_of.subs(delta, delta1))
+    S_c = sp.diff(P_of, delta)  # flat-punch stiffness at fixed c: pi vartheta a_e^2/(A H), i.e. (F.12)
+    lam = sp.Symbol("lambda", positive=True)
+    der = thin_flat_punch_derivation()
+    kr = der.resummed.subs({der.h: hh, der.A: A})
+    if sp.simplify((S_c - 4 * vt * c * kr.subs(lam, c / H)).subs(a_e, c + hh * H)) != 0:
+        raise ArithmeticError("(J.10): the outer stiffness is not (F.12)")
+    f1sq = sp.diff(lam * kr, lam).subs(lam, c / H)  # Krein (F.9)
+    G = sp.factor(vt * d**2 * f1sq / (sp.pi * c))  # (J.4), (J.10)
+    d_jkr = -sp.sqrt(w * c / sp.factor(G * c / d**2).subs(c + hh * H, a_e))
+    depth_ae = delta1 + d_jkr
+    force_ae = P1 + sp.expand(S_c * d_jkr)
+    depth, force = depth_ae.subs(a_e, c + hh * H), force_ae.subs(a_e, c + hh * H)
+    if order == 0:
+        depth_ae, force_ae = depth, force
+    # (J.12) order 0: P = a X^2 - b X, X = c^2
+    P0 = force.subs(h, 0)
+    X = sp.Symbol("X", positive=True)
+    PX = sp.expand(P0.subs(c, sp.sqrt(X)))
+    a2, b1 = PX.coeff(X, 2), -PX.coeff(X, 1)
+    pull = sp.simplify(b1**2 / (4 * a2))
+    # leading order of (J.10) equals the straight-edge boundary layer (J.9)
+    # p_out at the distance n = x1 from the edge
+    p_lin = sp.expand(p_out.subs(delta, delta1.subs(a_e, c + hh * H) + d).subs(r, c - S.x1))
+    pe, ps = p_lin.subs(S.x1, 0), sp.diff(p_lin, S.x1).subs(S.x1, 0)
+    G9 = (sp.sqrt(2 * A * H) * (pe - h * H * ps)) ** 2 / (4 * vt)
+    ratio = sp.series((G / G9).subs(H, t * H), t, 0, 2).removeO().subs(t, 1)
+    if order == 1 and sp.simplify(ratio - (1 + h * H / c)) != 0:
+        raise ArithmeticError("(J.10): G / (J.9) is not 1 + h* H/c + O(H^2)")
+    return depth, force, G, pull, depth_ae, force_ae
+
+
+def thin_layer_jkr(nu: Any, order: int = 1) -> ThinLayerJKR:
+    """Thin-layer JKR for the paraboloid on a compressible bonded layer (J.10)-(J.12).
+
+    Parameters
+    ----------
+    nu : float
+        Poisson ratio, ``-1 < nu < 1/2``.
+    order : int
+        0 or 1 (see the module docstring); the law is valid for ``c >> H``.
+
+    Returns
+    -------
+    ThinLayerJKR
+    """
+    check_choice(order, (0, 1), "order")
+    try:
+        val = float(nu)
+    except (TypeError, ValueError):
+        raise InputError(f"nu must be a number in (-1, 1/2), got {nu!r}") from None
+    if not -1.0 < val < 0.5:
+        raise InputError(f"nu must lie in (-1, 1/2) (the compressible layer, A > 0), got {nu!r}")
+    lay = BondedLayer(val)
+    depth, force, G, pull, depth_ae, force_ae = _thin_symbolic(order)
+    return ThinLayerJKR(val, float(lay.A), float(edge_shift_exact(val, dps=16)), order, depth, force, G, pull,
+                        depth_ae, force_ae)
