@@ -66,6 +66,16 @@ falls with slope -1.0 in ``delta`` and ``P``; order 1 with slope -2.0 in ``delta
 ``-b^2/(4a)``: the load-controlled pull-off force is ``2 pi w R`` (the value of DMT and of a Winkler foundation),
 at ``c^2 = 2 R sqrt(2 A H w/vartheta)``.  ``delta(c)`` increases with ``c``: under displacement control the contact
 is lost at ``c = O(H)``, outside the thin-layer law (no thin-layer value: the direct solver answers).
+
+(J.13) *Flat punch on the thin layer (Kendall's thin-film problem).*  The detachment force
+``P_off = 4 vartheta a kappa sqrt(pi a w/vartheta)/f(1)`` of :mod:`thinlayer.numerics.adhesion` with (F.12) and
+Krein's ``f(1)^2 = (lambda kappa)'`` (F.9)::
+
+    P_off = pi a_e^{3/2} a^{1/2} sqrt(2 vartheta w/(A H)),     a_e = a + h* H (order 1),  a (order 0),
+
+i.e. Kendall's thin-film law ``pi a^2 sqrt(2 K w/H)`` with the confined modulus ``K = vartheta/A =
+2 mu (1 - nu)/(1 - 2 nu)``, here derived with its first correction.  Relative remainders: order 0
+``(3/2) h* H/a``; order 1 ``O((H/a)^2)`` (measured in ``tests/adhesion``).
 """
 from __future__ import annotations
 
@@ -87,8 +97,8 @@ from .flat_punch import thin_flat_punch_derivation
 from .inner import inner_pressure
 from .wiener_hopf import edge_shift_exact, wiener_hopf_solution
 
-__all__ = ["AdhesiveEdgeLayer", "HalfSpaceJKR", "ThinLayerJKR", "adhesive_edge_layer", "half_space_jkr",
-           "thin_layer_jkr"]
+__all__ = ["AdhesiveEdgeLayer", "HalfSpaceJKR", "ThinFlatDetachment", "ThinLayerJKR", "adhesive_edge_layer",
+           "half_space_jkr", "thin_flat_detachment", "thin_layer_jkr"]
 
 c, R, w, E_star = sp.symbols("c R w E^*", positive=True)
 r, t = sp.symbols("r t", positive=True)
@@ -161,11 +171,7 @@ def _positive_roots(expr: sp.Expr) -> list:
 def half_space_jkr() -> HalfSpaceJKR:
     """(J.7) in sympy: Copson's function with ``L = 1``, the paraboloid ``r^2/(2R)``, both routes for ``G``.
 
-    Examples
-    --------
-    >>> jkr = half_space_jkr()
-    >>> jkr.pull_off_load
-    3*pi*R*w/2
+    Cached; a few seconds of sympy (``tests/adhesion`` compares it with JKR (1971) as printed).
     """
     Phi = r**2 / (2 * R)
     G_abel = delta - t * sp.integrate(sp.diff(Phi, r) / sp.sqrt(t**2 - r**2), (r, 0, t))  # (F.4)
@@ -453,3 +459,86 @@ def thin_layer_jkr(nu: Any, order: int = 1) -> ThinLayerJKR:
     depth, force, G, pull, depth_ae, force_ae = _thin_symbolic(order)
     return ThinLayerJKR(val, float(lay.A), float(edge_shift_exact(val, dps=16)), order, depth, force, G, pull,
                         depth_ae, force_ae)
+
+
+# --------------------------------------------------------------------------- (J.13) the flat punch
+@dataclass(frozen=True)
+class ThinFlatDetachment(RichDisplay):
+    """Thin-layer detachment force of a flat punch (J.13) on a compressible bonded layer.
+
+    Attributes
+    ----------
+    nu, A, h : float
+        float
+        Poisson ratio, ``A`` (2.4), ``h*`` (3.18).
+    order : int
+        0 or 1.
+    force : sympy.Expr
+        ``P_off`` in ``a, H, w, vartheta, A, h*`` (``a`` is the symbol ``c``).
+    """
+
+    nu: float
+    A: float
+    h: float
+    order: int
+    force: sp.Expr
+
+    equation = "J.13"
+
+    def __call__(self, radius: Any, H: Any, work_of_adhesion: Any, mu: Any = 1.0) -> np.ndarray:
+        """``P_off`` (a magnitude), vectorised in the radius."""
+        a = np.asarray(radius, dtype=float)
+        if np.any(a <= 0):
+            raise InputError("radius must be > 0")
+        Hv, wv = positive(H, "H"), float(work_of_adhesion)
+        if not wv >= 0:
+            raise InputError("work_of_adhesion must be >= 0")
+        vtv = positive(mu, "mu") / (1 - self.nu)
+        ae = a + self.h * Hv if self.order == 1 else a
+        return math.pi * ae**1.5 * np.sqrt(a) * math.sqrt(2 * vtv * wv / (self.A * Hv))
+
+    def latex(self) -> str:
+        return rf"P_{{\mathrm{{off}}}} = {sp.latex(self.force)} \tag{{J.13}}"
+
+    def text_lines(self) -> list[str]:
+        return [f"ThinFlatDetachment: flat punch, bonded layer nu = {self.nu:g}, order {self.order}   (J.13)",
+                f"  P_off = {self.force}", f"  A = {self.A:.12g}, h* = {self.h:.12g}"]
+
+
+@lru_cache(maxsize=2)
+def _flat_symbolic(order: int) -> sp.Expr:
+    lam = sp.Symbol("lambda", positive=True)
+    der = thin_flat_punch_derivation()
+    kr = der.resummed.subs({der.h: h if order == 1 else 0, der.A: A})
+    f1sq = sp.diff(lam * kr, lam)  # Krein (F.9)
+    P = 4 * vt * c * kr * sp.sqrt(sp.pi * c * w / vt) / sp.sqrt(f1sq)
+    P = sp.powsimp(sp.factor(P.subs(lam, c / H)), force=True)
+    ref = sp.pi * (c + (h if order == 1 else 0) * H) ** sp.Rational(3, 2) * sp.sqrt(c) * sp.sqrt(2 * vt * w / (A * H))
+    if sp.simplify(sp.expand_power_base(P / ref, force=True)) != 1:
+        raise ArithmeticError("(J.13): the detachment force is not pi a_e^(3/2) a^(1/2) sqrt(2 vartheta w/(A H))")
+    return ref
+
+
+def thin_flat_detachment(nu: Any, order: int = 1) -> ThinFlatDetachment:
+    """Kendall's thin-film detachment force with its first correction (J.13); valid for ``a >> H``.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson ratio, ``-1 < nu < 1/2``.
+    order : int
+        0 or 1.
+
+    Returns
+    -------
+    ThinFlatDetachment
+    """
+    check_choice(order, (0, 1), "order")
+    try:
+        val = float(nu)
+    except (TypeError, ValueError):
+        raise InputError(f"nu must be a number in (-1, 1/2), got {nu!r}") from None
+    if not -1.0 < val < 0.5:
+        raise InputError(f"nu must lie in (-1, 1/2) (the compressible layer, A > 0), got {nu!r}")
+    lay = BondedLayer(val)
+    return ThinFlatDetachment(val, float(lay.A), float(edge_shift_exact(val, dps=16)), order, _flat_symbolic(order))
