@@ -15,7 +15,7 @@ from thinlayer import BondedLayer, HalfSpace
 from thinlayer.asymptotics.adhesion import E_star, R, c, half_space_jkr, thin_flat_detachment, thin_layer_jkr, w
 from thinlayer.asymptotics.wiener_hopf import edge_shift_exact
 from thinlayer.errors import InputError
-from thinlayer.numerics.adhesion import adhesive_state, flat_punch_detachment, jkr_curve
+from thinlayer.numerics.adhesion import adhesive_state, flat_punch_detachment, flat_release_rate_factor, jkr_curve
 
 
 def _jkr_printed(a, Rv, wv, Es):
@@ -169,3 +169,34 @@ def test_thin_layer_pull_off_leading():
     assert abs(th1.pull_off(1.0, 1000.0, 0.05)[1] / P - 1) < 0.02
     assert th1.h == pytest.approx(float(edge_shift_exact(0.3, dps=16)), rel=1e-14)
 
+
+
+def test_edge_layer():
+    """(J.8)-(J.9): K_I = -sqrt(2AH)(p_e - h* H p_s), G = K_I^2/(4 vartheta), the exact constant sqrt(A/pi)."""
+    from thinlayer.asymptotics.adhesion import A, H, adhesive_edge_layer, h, p_e, p_s
+    from thinlayer.symbols import vartheta
+
+    e = adhesive_edge_layer(0.3)
+    assert sp.expand(e.stress_intensity_expr + sp.sqrt(2 * A * H) * (p_e - h * H * p_s)) == 0
+    assert sp.expand(e.release_rate_expr - A * H * (p_e - h * H * p_s) ** 2 / (2 * vartheta)) == 0
+    assert e.A == pytest.approx(4 * 0.8 / 2.8**2, rel=1e-14)  # (2.4), kappa = 3 - 4 nu
+    # (J.9) against the flat punch's exact energy release rate at a/H = 40 (J.4): p_e = vartheta d/(A H), p_s = 0
+    d, lam = -0.1, 40.0
+    vt = 1 / 0.7
+    G9 = float(e.release_rate(vt * d / (e.A * 1.0), 0.0, 1.0, vt))
+    f1sq = flat_release_rate_factor(BondedLayer(0.3), lam, energy_route=False)[1]
+    G_exact = vt * d * d * f1sq / (math.pi * lam)  # (J.3)
+    assert G9 / G_exact - 1 == pytest.approx(-e.h / lam, rel=0.05)  # (J.10): the curvature factor
+    with pytest.raises(InputError, match="nu"):
+        adhesive_edge_layer(0.5)
+
+
+@pytest.mark.slow
+def test_edge_layer_wiener_hopf_table():
+    """(J.8) against the engine's Wiener-Hopf table (de Hoog inversion): sqrt(tau) qhat' -> sqrt(A/pi), 1e-8."""
+    from thinlayer.asymptotics.adhesion import adhesive_edge_layer
+
+    for nu in (0.0, 0.3):
+        e = adhesive_edge_layer(nu, table=True)
+        assert e.edge_coefficient == pytest.approx(math.sqrt(e.A / math.pi), rel=1e-14)
+        assert e.edge_coefficient_table == pytest.approx(e.edge_coefficient, rel=1e-8)

@@ -84,7 +84,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
-import mpmath
 import numpy as np
 import sympy as sp
 
@@ -210,7 +209,8 @@ class AdhesiveEdgeLayer(RichDisplay):
         ``lim sqrt(tau) qhat'(tau) = sqrt(A/pi)`` (J.8), exact.
     edge_coefficient_table : float
         The same limit read off the Wiener-Hopf table of :func:`~thinlayer.asymptotics.wiener_hopf.
-        wiener_hopf_solution` (de Hoog inversion): the numerical check of the factorisation.
+        wiener_hopf_solution` (de Hoog inversion): the numerical check of the factorisation (``nan`` unless
+        asked for).
     stress_intensity_expr, release_rate_expr : sympy.Expr
         sympy.Expr
         ``K_I`` in ``p_e, p_s, A, H, h*`` and ``G`` in ``p_e, p_s, A, H, h*, vartheta``.
@@ -261,26 +261,34 @@ def _edge_limit_symbolic() -> None:
 
 
 @lru_cache(maxsize=16)
-def _edge_layer(nu: float) -> AdhesiveEdgeLayer:
+def _edge_layer(nu: float, table: bool) -> AdhesiveEdgeLayer:
     _edge_limit_symbolic()
     lay = BondedLayer(nu)
-    sol = wiener_hopf_solution(nu)
-    zmax = math.sqrt(sol.tau_max)
-    # qhat - tau = g(z), z = sqrt(tau), a Chebyshev series in x = 2 z/zmax - 1:  sqrt(tau) qhat' -> g'(0)/2
-    dcheb = np.polynomial.chebyshev.chebder(np.asarray(sol.cheb)) * (2.0 / zmax)
-    table = 0.5 * float(np.polynomial.chebyshev.chebval(-1.0, dcheb))
+    tab = math.nan
+    if table:
+        sol = wiener_hopf_solution(nu)
+        zmax = math.sqrt(sol.tau_max)
+        # qhat - tau = g(z), z = sqrt(tau), a Chebyshev series in x = 2 z/zmax - 1:  sqrt(tau) qhat' -> g'(0)/2
+        dcheb = np.polynomial.chebyshev.chebder(np.asarray(sol.cheb)) * (2.0 / zmax)
+        tab = 0.5 * float(np.polynomial.chebyshev.chebval(-1.0, dcheb))
     K = -sp.sqrt(2 * A * H) * (p_e - h * H * p_s)
-    return AdhesiveEdgeLayer(float(nu), float(lay.A), float(sol.h), float(mpmath.sqrt(sol.A / mpmath.pi)), table,
-                             K, sp.factor(sp.expand(K**2 / (4 * vt))))
+    if sp.solve(K, p_e) != [h * H * p_s]:  # K_I = 0 is the smooth edge (3.18): p_out(-h* H) = 0
+        raise ArithmeticError("(J.8): K_I = 0 is not the smooth-edge condition")
+    Af = float(lay.A)
+    return AdhesiveEdgeLayer(float(nu), Af, float(edge_shift_exact(nu, dps=16)), math.sqrt(Af / math.pi), tab, K,
+                             sp.factor(sp.expand(K**2 / (4 * vt))))
 
 
-def adhesive_edge_layer(nu: Any) -> AdhesiveEdgeLayer:
-    """The adhesive edge layer of the compressible bonded layer (J.8), (J.9); cached per nu (~3 s the first time).
+def adhesive_edge_layer(nu: Any, table: bool = False) -> AdhesiveEdgeLayer:
+    """The adhesive edge layer of the compressible bonded layer (J.8), (J.9); cached per nu.
 
     Parameters
     ----------
     nu : float
         Poisson ratio, ``-1 < nu < 1/2`` (the compressible layer, ``A > 0``).
+    table : bool
+        Also read the edge coefficient off the Wiener-Hopf table (``edge_coefficient_table``; builds the table,
+        10-25 s the first time per nu); otherwise that field is ``nan``.
 
     Returns
     -------
@@ -292,7 +300,7 @@ def adhesive_edge_layer(nu: Any) -> AdhesiveEdgeLayer:
         raise InputError(f"nu must be a number in (-1, 1/2), got {nu!r}") from None
     if not -1.0 < val < 0.5:
         raise InputError(f"nu must lie in (-1, 1/2) (the compressible layer, A > 0), got {nu!r}")
-    return _edge_layer(val)
+    return _edge_layer(val, bool(table))
 
 
 # --------------------------------------------------------------------------- (J.10)-(J.12) thin-layer JKR
