@@ -362,7 +362,8 @@ class ThinLayerJKR(RichDisplay):
 
     def latex(self) -> str:
         ae = r"a_e = c + h^* H" if self.order == 1 else r"a_e = c"
-        return (rf"\delta = {sp.latex(self.depth_display)},\quad P = {sp.latex(self.force_display)},\quad {ae}"
+        return (rf"G = {sp.latex(self.release_rate)} = w:\quad "
+                rf"\delta = {sp.latex(self.depth_display)},\quad P = {sp.latex(self.force_display)},\quad {ae}"
                 rf"\quad (\text{{order {self.order}}}) \tag{{J.11}}")
 
     def text_lines(self) -> list[str]:
