@@ -200,3 +200,23 @@ def test_edge_layer_wiener_hopf_table():
         e = adhesive_edge_layer(nu, table=True)
         assert e.edge_coefficient == pytest.approx(math.sqrt(e.A / math.pi), rel=1e-14)
         assert e.edge_coefficient_table == pytest.approx(e.edge_coefficient, rel=1e-8)
+
+
+@pytest.mark.slow
+def test_thin_layer_pull_off_against_direct():
+    """(J.6), (J.12): the direct pull-off force on the layer tends to 2 pi w R like H/c_p; order 1 is within
+    (H/c_p)^3-like remainders (measured: R/H = 100: 0.97965 direct, 0.98073 order 1; 1000: 0.993884, 0.993920)."""
+    nu = 0.3
+    lay, vt, H = BondedLayer(nu), 1 / (1 - nu), 1.0
+    wv = 0.05 * vt
+    th1 = thin_layer_jkr(nu, 1)
+    rem0, rem1 = [], []
+    for Rv in (100.0, 1000.0):
+        cp0 = math.sqrt(2 * Rv * math.sqrt(2 * float(lay.A) * H * wv / vt))
+        curve = jkr_curve(lay, lambda r, Rv=Rv: r * r / (2 * Rv), np.linspace(0.6 * cp0, 2 * cp0, 6), H,
+                          work_of_adhesion=wv)
+        ratio = -curve.pull_off_load.force / (2 * math.pi * wv * Rv)
+        rem0.append(abs(ratio - 1))
+        rem1.append(abs(ratio - th1.pull_off(H, Rv, wv)[1] / (2 * math.pi * wv * Rv)))
+    assert 2.5 < rem0[0] / rem0[1] < 4.5  # c_p grows like R^(1/2): H/c_p falls by 3.2
+    assert rem1[1] < 1e-4 and rem1[0] / rem1[1] > 10
