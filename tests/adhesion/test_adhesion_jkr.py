@@ -220,3 +220,15 @@ def test_thin_layer_pull_off_against_direct():
         rem1.append(abs(ratio - th1.pull_off(H, Rv, wv)[1] / (2 * math.pi * wv * Rv)))
     assert 2.5 < rem0[0] / rem0[1] < 4.5  # c_p grows like R^(1/2): H/c_p falls by 3.2
     assert rem1[1] < 1e-4 and rem1[0] / rem1[1] > 10
+
+
+def test_derivation_steps_latex():
+    """Every step (J.7)-(J.13) prints as LaTeX with its tag (built from the cached stages above)."""
+    from thinlayer.asymptotics.adhesion import adhesion_derivation
+
+    der = adhesion_derivation(0.3)
+    tags = [tag for tag, _ in der.steps()]
+    assert tags == ["J.7", "J.8", "J.11 (order 0)", "J.11 (order 1)", "J.12", "J.13"]
+    for tag, tex in der.steps():
+        assert r"\tag{" + tag.split()[0] + "}" in tex
+    assert "h^{*}" in der.steps()[3][1] and "h^{*}" not in der.steps()[2][1]

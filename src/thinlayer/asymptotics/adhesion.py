@@ -96,8 +96,8 @@ from .flat_punch import thin_flat_punch_derivation
 from .inner import inner_pressure
 from .wiener_hopf import edge_shift_exact, wiener_hopf_solution
 
-__all__ = ["AdhesiveEdgeLayer", "HalfSpaceJKR", "ThinFlatDetachment", "ThinLayerJKR", "adhesive_edge_layer",
-           "half_space_jkr", "thin_flat_detachment", "thin_layer_jkr"]
+__all__ = ["AdhesionDerivation", "AdhesiveEdgeLayer", "HalfSpaceJKR", "ThinFlatDetachment", "ThinLayerJKR",
+           "adhesion_derivation", "adhesive_edge_layer", "half_space_jkr", "thin_flat_detachment", "thin_layer_jkr"]
 
 c, R, w, E_star = sp.symbols("c R w E^*", positive=True)
 r, t = sp.symbols("r t", positive=True)
@@ -551,3 +551,58 @@ def thin_flat_detachment(nu: Any, order: int = 1) -> ThinFlatDetachment:
         raise InputError(f"nu must lie in (-1, 1/2) (the compressible layer, A > 0), got {nu!r}")
     lay = BondedLayer(val)
     return ThinFlatDetachment(val, float(lay.A), float(edge_shift_exact(val, dps=16)), order, _flat_symbolic(order))
+
+
+# --------------------------------------------------------------------------- every step
+@dataclass(frozen=True)
+class AdhesionDerivation(RichDisplay):
+    """The steps (J.7)-(J.13) for one compressible bonded layer, each a result with its LaTeX.
+
+    Attributes
+    ----------
+    nu : float
+        Poisson ratio.
+    assumptions : str
+        The assumptions, as printed.
+    half_space : HalfSpaceJKR
+        (J.7).
+    edge_layer : AdhesiveEdgeLayer
+        (J.8), (J.9).
+    jkr : tuple of ThinLayerJKR
+        (J.10)-(J.12) at orders 0 and 1.
+    flat : ThinFlatDetachment
+        (J.13) at order 1.
+    """
+
+    nu: float
+    assumptions: str
+    half_space: HalfSpaceJKR
+    edge_layer: AdhesiveEdgeLayer
+    jkr: tuple
+    flat: ThinFlatDetachment
+
+    equation = "J.7-J.13"
+
+    def steps(self) -> list[tuple[str, str]]:
+        """``(tag, LaTeX)`` of every step, in order."""
+        return [("J.7", self.half_space.latex()), ("J.8", self.edge_layer.latex()),
+                *((f"J.11 (order {t.order})", t.latex()) for t in self.jkr),
+                ("J.12", rf"P_{{\mathrm{{off}}}} = {sp.latex(self.jkr[0].pull_off_leading)}"
+                         r"\quad (\text{load control, order 0}) \tag{J.12}"),
+                ("J.13", self.flat.latex())]
+
+    def latex(self) -> str:
+        return "\n".join(rf"\[ {tex} \]" for _, tex in self.steps())
+
+    def text_lines(self) -> list[str]:
+        return [f"AdhesionDerivation: JKR on a bonded layer, nu = {self.nu:g}   (J.7)-(J.13)",
+                f"  assumptions: {self.assumptions}", *(f"  ({tag}) see .latex()" for tag, _ in self.steps())]
+
+
+def adhesion_derivation(nu: Any) -> AdhesionDerivation:
+    """Every step (J.7)-(J.13) for the compressible bonded layer of Poisson ratio ``nu`` (a few seconds of sympy)."""
+    edge = adhesive_edge_layer(nu)
+    return AdhesionDerivation(edge.nu, "frictionless contact, layer bonded to a rigid base (no slip), compressible "
+                              "(A > 0), JKR adhesion (short-range: w spent at the contact edge), c >> H for "
+                              "(J.8)-(J.13)", half_space_jkr(), edge,
+                              (thin_layer_jkr(nu, 0), thin_layer_jkr(nu, 1)), thin_flat_detachment(nu, 1))
