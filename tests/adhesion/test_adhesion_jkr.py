@@ -123,6 +123,22 @@ def test_flat_punch_detachment_half_space_and_thin_limit():
     assert abs(r1[0]) < 1e-4 and abs(r1[0] / r1[1]) > 6.0  # at least second order (observed: 7.95, third)
 
 
+def test_flat_punch_detachment_incompressible():
+    """(J.14) at nu = 1/2: order 0 errs like H/a (0.286, 0.161 at a/H = 10, 20); with a_e = a + h H, h = 1.4591
+    (I.12), the remainder is 3.5e-3 and 5.4e-4 (direct solver on the IncompressibleLayer)."""
+    from thinlayer import IncompressibleLayer
+
+    lams = (10.0, 20.0)
+    exact = [flat_punch_detachment(IncompressibleLayer(), lam, 1.0, work_of_adhesion=0.05).force for lam in lams]
+    th0, th1 = thin_flat_detachment(0.5, 0), thin_flat_detachment(0.5, 1)
+    assert float(th0(10.0, 1.0, 0.05)) == pytest.approx(math.sqrt(3) * math.pi / 4 * math.sqrt(2 * 0.05) * 1e3,
+                                                        rel=1e-14)  # vartheta = 2 mu
+    r0 = [float(th0(lam, 1.0, 0.05)) / P - 1 for lam, P in zip(lams, exact)]
+    r1 = [float(th1(lam, 1.0, 0.05)) / P - 1 for lam, P in zip(lams, exact)]
+    assert 1.5 < r0[0] / r0[1] < 2.2
+    assert abs(r1[0]) < 5e-3 and abs(r1[0] / r1[1]) > 5.0
+
+
 # --------------------------------------------------------------------------- (J.10)-(J.12) thin layer
 def _remainders(lams, nu=0.3, orders=(0, 1)):
     lay = BondedLayer(nu)
