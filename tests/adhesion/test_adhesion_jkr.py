@@ -99,6 +99,15 @@ def test_bad_input():
         adhesive_state(BondedLayer(0.3), lambda r: r * r / 20.0, 1.0, 1.0, delta=1.0)
     with pytest.raises(InputError, match="radii"):
         jkr_curve(HalfSpace(), lambda r: r * r, [1.0, 0.5, 2.0], work_of_adhesion=0.1, nu=0.3)
+    with pytest.raises(InputError, match="radii"):
+        jkr_curve(HalfSpace(), lambda r: r * r, ["1", "2", "x"], work_of_adhesion=0.1, nu=0.3)
+    with pytest.raises(InputError, match="delta"):
+        adhesive_state(HalfSpace(), lambda r: r * r, 1.0, delta="__import__('os')", nu=0.3)
+    th = thin_layer_jkr(0.3, 0)
+    with pytest.raises(InputError, match="work_of_adhesion"):
+        th.evaluate(10.0, 1.0, 50.0, "w")
+    with pytest.raises(InputError, match="radius"):
+        th.evaluate([10.0, -1.0], 1.0, 50.0, 0.01)
 
 
 # --------------------------------------------------------------------------- Kendall flat punch

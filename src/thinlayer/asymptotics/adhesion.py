@@ -118,6 +118,26 @@ vt, H, delta = S.vartheta, S.H, S.delta0
 _H, _R = H, R  # the symbols, for methods whose arguments are named H and R
 
 
+def _radii(radius: Any) -> np.ndarray:
+    try:
+        a = np.asarray(radius, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"radius must be a positive number or array, got {radius!r}") from None
+    if not np.all(np.isfinite(a)) or np.any(a <= 0):
+        raise InputError("radius must be finite and > 0")
+    return a
+
+
+def _work(value: Any) -> float:
+    try:
+        wv = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}") from None
+    if not (math.isfinite(wv) and wv >= 0):
+        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}")
+    return wv
+
+
 # --------------------------------------------------------------------------- (J.7) the half-space
 @dataclass(frozen=True)
 class HalfSpaceJKR(RichDisplay):
@@ -353,12 +373,8 @@ class ThinLayerJKR(RichDisplay):
                                                                                                      np.ndarray]:
         """``(delta, P)`` of (J.11), vectorised in the contact radius; ``vartheta = mu/(1 - nu)``."""
         fd, fP = _compiled(self.order, self.A, self.h)
-        cv = np.asarray(radius, dtype=float)
-        if np.any(cv <= 0):
-            raise InputError("radius must be > 0")
-        vals = (cv, positive(H, "H"), positive(R, "R"), float(work_of_adhesion), positive(mu, "mu") / (1 - self.nu))
-        if not vals[3] >= 0:
-            raise InputError("work_of_adhesion must be >= 0")
+        cv = _radii(radius)
+        vals = (cv, positive(H, "H"), positive(R, "R"), _work(work_of_adhesion), positive(mu, "mu") / (1 - self.nu))
         return np.asarray(fd(*vals), dtype=float), np.asarray(fP(*vals), dtype=float)
 
     def pull_off(self, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[float, float]:
@@ -505,12 +521,8 @@ class ThinFlatDetachment(RichDisplay):
 
     def __call__(self, radius: Any, H: Any, work_of_adhesion: Any, mu: Any = 1.0) -> np.ndarray:
         """``P_off`` (a magnitude), vectorised in the radius."""
-        a = np.asarray(radius, dtype=float)
-        if np.any(a <= 0):
-            raise InputError("radius must be > 0")
-        Hv, wv = positive(H, "H"), float(work_of_adhesion)
-        if not wv >= 0:
-            raise InputError("work_of_adhesion must be >= 0")
+        a = _radii(radius)
+        Hv, wv = positive(H, "H"), _work(work_of_adhesion)
         vtv = positive(mu, "mu") / (1 - self.nu)
         return np.asarray(_flat_compiled(self.force, self.A, self.h)(a, Hv, wv, vtv), dtype=float)
 

@@ -274,7 +274,10 @@ def adhesive_state(layer: LayerKernel, punch: Any, radius: float, H: float | Non
         w = _work(work_of_adhesion)
         d = -math.sqrt(math.pi * c * w / vt / f1sq)  # (J.5)
     else:
-        dval = float(delta)
+        try:
+            dval = float(delta)
+        except (TypeError, ValueError):
+            raise InputError(f"delta must be a finite number, got {delta!r}") from None
         if not math.isfinite(dval):
             raise InputError(f"delta must be finite, got {delta!r}")
         d = dval - smooth.delta0
@@ -387,7 +390,10 @@ def jkr_curve(layer: LayerKernel, punch: Any, radii: Any, H: float | None = None
     -------
     JKRCurve
     """
-    c = np.asarray(radii, dtype=float)
+    try:
+        c = np.asarray(radii, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError("radii must be 3 to 400 increasing positive contact radii (numbers)") from None
     if c.ndim != 1 or c.size < 3 or c.size > 400 or not np.all(np.isfinite(c)) or np.any(c <= 0) \
             or np.any(np.diff(c) <= 0):
         raise InputError("radii must be 3 to 400 increasing positive contact radii")
