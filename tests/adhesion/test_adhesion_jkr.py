@@ -158,7 +158,10 @@ def _remainders(lams, nu=0.3, orders=(0, 1)):
         cv, Rv = float(lam), lam * lam / 2.0  # delta_1 ~ H, d ~ H: the thin-layer scaling (1.2)
         st = adhesive_state(lay, lambda r, Rv=Rv: r * r / (2 * Rv), cv, H, work_of_adhesion=wv, energy_route=False)
         for o in orders:
-            d, P = thin_layer_jkr(nu, o).evaluate(cv, H, Rv, wv)
+            law = thin_layer_jkr(nu, o)
+            d, P = law.evaluate(cv, H, Rv, wv)
+            ed, eP = law.error_estimate(cv, H, Rv, wv)
+            assert abs(float(d) - st.delta) <= float(ed) and abs(float(P) - st.force) <= float(eP)  # true estimate
             out[o].append((abs(float(d) - st.delta), abs(float(P) - st.force) / abs(st.force)))
     return out
 
@@ -182,6 +185,7 @@ def test_thin_layer_remainder_order_long():
     s1d = [math.log2(rem[1][i][0] / rem[1][i + 1][0]) for i in range(len(lams) - 1)]
     assert all(0.9 < s < 1.1 for s in s0[1:])
     assert all(1.9 < s < 2.1 for s in s1d[1:])
+    _remainders([10.0, 20.0, 40.0], nu=0.45)  # the error estimates hold near incompressibility too (m_1 = 2.18)
 
 
 def test_thin_layer_pull_off_leading():
