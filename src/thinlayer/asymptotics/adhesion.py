@@ -422,12 +422,14 @@ class ThinLayerJKR(RichDisplay):
 
     def latex(self) -> str:
         ae = r"a_e = c + h^* H" if self.order == 1 else r"a_e = c"
+        tag = "J.15" if self.A == 0 else "J.11"
         return (rf"G = {sp.latex(self.release_rate)} = w:\quad "
                 rf"\delta = {sp.latex(self.depth_display)},\quad P = {sp.latex(self.force_display)},\quad {ae}"
-                rf"\quad (\text{{order {self.order}}}) \tag{{J.11}}")
+                rf"\quad (\text{{order {self.order}}}) \tag{{{tag}}}")
 
     def text_lines(self) -> list[str]:
-        return [f"ThinLayerJKR: paraboloid on a bonded layer, nu = {self.nu:g}, order {self.order}   (J.10)-(J.12)",
+        tags = "(J.15)" if self.A == 0 else "(J.10)-(J.12)"
+        return [f"ThinLayerJKR: paraboloid on a bonded layer, nu = {self.nu:g}, order {self.order}   {tags}",
                 f"  delta = {self.depth_display}", f"  P = {self.force_display}",
                 "  a_e = " + ("c + h* H" if self.order == 1 else "c"),
                 f"  A = {self.A:.12g}, h* = {self.h:.12g}; pull-off (order 0) {self.pull_off_leading}"]
