@@ -291,6 +291,12 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.solve(F().L, F().P, delta0=0.1, H=0.05, mu=1.0, terms=s),
         lambda s: tl.solve(F().L, F().P, delta0=0.1, H=0.05, mu=1.0, boundary_layer=s),
         lambda s: tl.solve(F().L, tl.Punch.flat(1), delta0=0.1, H=0.05, mu=s),
+        # adhesion (issue 26 item 5)
+        lambda s: tl.solve(F().L, F().P, delta0=0.1, H=0.05, mu=1.0, work_of_adhesion=s),
+        lambda s: tl.solve(F().L, F().P, delta0=0.1, H=0.05, mu=1.0, work_of_adhesion=0.01, branch=s),
+        lambda s: tl.solve(F().L, F().P, delta0=s, H=0.05, mu=1.0, work_of_adhesion=0.01),
+        lambda s: tl.solve(F().L, F().P, force=s, H=0.05, mu=1.0, work_of_adhesion=0.01),
+        lambda s: tl.solve(F().L, F().P, delta0=0.1, H=0.05, mu=1.0, work_of_adhesion=0.01, model=s),
     ],
     "thinlayer.Indentation": [lambda s: tl.Indentation(*([s] * 17))],
     "thinlayer.Indentation.pressure": [lambda s: F().ind.pressure(s, 0.0), lambda s: F().ind.pressure(0.0, s)],

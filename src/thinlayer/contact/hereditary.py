@@ -281,7 +281,7 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
     HH = positive(H, "H")
     if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not tol > 0:
         raise InputError(f"tol must be a positive number (the elastic law's largest relative error), got {tol!r}")
-    names = ("auto", *dict.fromkeys(m.name for m in MODEL_REGISTRY if m.solves))
+    names = ("auto", *dict.fromkeys(m.name for m in MODEL_REGISTRY if m.solves and not m.adhesive))
     if not isinstance(model, str) or model not in names:
         raise InputError(f"model must be one of {', '.join(names)}; got {model!r}")
     for name, v in (("times", times), ("depths", depths)):

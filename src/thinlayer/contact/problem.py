@@ -17,7 +17,7 @@ from typing import Any, ClassVar
 
 from .._checks import InputError, InputTypeError, positive
 
-__all__ = ["Depth", "ELASTIC_HINT", "Elastic", "Force", "Frictionless", "Problem"]
+__all__ = ["Adhesive", "Depth", "ELASTIC_HINT", "Elastic", "Force", "Frictionless", "Problem"]
 
 ELASTIC_HINT = "give exactly one of mu= (shear modulus) or E= (Young's modulus), with the Poisson ratio nu"
 
@@ -52,6 +52,17 @@ class Frictionless:
     """The interaction: frictionless, non-adhesive contact (the paper's (1.5)-(1.7))."""
 
     adhesive: ClassVar[bool] = False
+
+
+@dataclass(frozen=True)
+class Adhesive:
+    """The interaction: frictionless JKR adhesion with work of adhesion ``w`` (J.5); ``branch`` of the JKR curve
+    (``"stable"`` or ``"unstable"``) that the answer lies on (:mod:`thinlayer.contact.adhesion`).
+    """
+
+    work_of_adhesion: float
+    branch: str = "stable"
+    adhesive: ClassVar[bool] = True
 
 
 @dataclass(frozen=True)
@@ -93,7 +104,7 @@ class Problem:
     layer: Any
     tip: Any
     material: Elastic
-    interaction: Frictionless
+    interaction: Frictionless | Adhesive
     loading: Depth | Force
     H: float
     tol: float

@@ -35,6 +35,7 @@ linearly in the cell size).  ``model="asymptotic"`` refuses instead, naming each
 """
 from __future__ import annotations
 
+import math
 import numbers
 from typing import Any
 
@@ -46,9 +47,9 @@ from ..layers.kernels import LayerKernel
 from ..punch import Tip, is_polynomial_tip
 from .indentation import DirectComparison, Indentation
 from .indentation import tex_num as _tex_num  # noqa: F401 - the name tests and older callers import from here
-from .models import model_names, walk
+from .models import MODEL_REGISTRY, model_names, walk
 from .models.direct import MAX_CELLS_2D  # noqa: F401 - kept importable from here
-from .problem import ELASTIC_HINT, Depth, Elastic, Force, Frictionless, Problem
+from .problem import ELASTIC_HINT, Adhesive, Depth, Elastic, Force, Frictionless, Problem
 
 __all__ = ["Indentation", "DirectComparison", "MODELS", "solve", "ELASTIC_HINT"]
 
@@ -62,7 +63,8 @@ MODELS = model_names()
 @boundary
 def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = None, *, E: Any = None,
           force: Any = None, nu: Any = None, model: str = "auto", tol: Any = DEFAULT_TOL,
-          parameters: dict | None = None, n: int | None = None, **options: Any) -> Indentation:
+          parameters: dict | None = None, n: int | None = None, work_of_adhesion: Any = None,
+          branch: str = "stable", **options: Any) -> Indentation:
     r"""Force, contact size and pressure of a rigid punch pressed into a layer, by the model that holds.
 
     Parameters
@@ -91,6 +93,13 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         Values of the punch's parameters.
     n : int, optional
         Modes (axisymmetric) or cells per side (2D) of the direct solver.
+    work_of_adhesion : Any, optional
+        ``w >= 0``: JKR adhesion (:mod:`thinlayer.contact.adhesion`); the paraboloid of revolution or the flat
+        punch; ``delta0`` and ``force`` may then be negative (force: compressive positive).  The answer is an
+        :class:`~thinlayer.contact.adhesion.AdhesiveIndentation` (``force`` a magnitude, ``tensile``, ``branch``,
+        ``pull_off``); models ``"thin-layer-jkr"`` (J.11)/(J.15) and ``"direct"`` (J.1)-(J.6), (J.13).
+    branch : str
+        With adhesion: ``"stable"`` (default) or ``"unstable"`` state of the JKR curve.
     options
         For the compressible model: ``order``, ``terms``, ``boundary_layer``
         (:func:`thinlayer.asymptotics.solution.compressible_solution`).
@@ -131,14 +140,21 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     """
     layer, nu_v = _check_model_layer(layer, nu)
     material = Elastic.from_moduli(mu, E, nu_v)
-    choice = check_choice(model, model_names(), "model")
+    adhesive = work_of_adhesion is not None
+    choice = check_choice(model, adhesive_model_names() if adhesive else model_names(), "model")
     if H is None:
         raise InputTypeError("solve() needs the layer thickness H")
     HH = positive(H, "H")
     tol_v = _tol(tol)
     if (delta0 is None) == (force is None):
         raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
-    loading = Depth(positive(delta0, "delta0")) if delta0 is not None else Force(positive(force, "force"))
+    if adhesive:
+        interaction: Any = Adhesive(non_negative(work_of_adhesion, "work_of_adhesion"),
+                                    check_choice(branch, ("stable", "unstable"), "branch"))
+        loading = Depth(finite(delta0, "delta0")) if delta0 is not None else Force(finite(force, "force"))
+    else:
+        interaction = Frictionless()
+        loading = Depth(positive(delta0, "delta0")) if delta0 is not None else Force(positive(force, "force"))
     if isinstance(punch, Tip) and not is_polynomial_tip(punch):  # flat punch, tips of revolution: no options
         if options:
             raise InputTypeError(f"the {punch.name} takes no model options, got {sorted(options)}")
@@ -153,7 +169,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         tip = numeric_punch(punch, parameters)
     if layer.numeric_nu is None or layer.incompressible_at(nu_v):  # a frictionless base's nu; bonded at nu = 1/2
         layer = layer.with_nu(nu_v)
-    problem = Problem(layer, tip, material, Frictionless(), loading, HH, tol_v, n, dict(options))
+    problem = Problem(layer, tip, material, interaction, loading, HH, tol_v, n, dict(options))
     return walk(problem, choice)
 
 
@@ -170,6 +186,29 @@ def _check_model_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:
     given = layer.poisson_ratio(nu)
     nv = parse_nu(given, floats="float", upper_closed=True, symbols=False, example="0.3, '3/10' or 0.5")
     return layer, float(nv)
+
+
+def adhesive_model_names() -> tuple[str, ...]:
+    """``solve(work_of_adhesion=...)``'s choices of ``model``."""
+    return ("auto", "asymptotic", *dict.fromkeys(m.name for m in MODEL_REGISTRY if m.adhesive and m.solves))
+
+
+def finite(value: Any, name: str) -> float:
+    """A finite real number (either sign), as a float; one-line refusal naming the input."""
+    if isinstance(value, bool) or not isinstance(value, (numbers.Real, *loaded_types("sympy", "Number"))):
+        raise InputError(f"{name} must be a finite real number, got {value!r}")
+    v = float(value)
+    if not math.isfinite(v):
+        raise InputError(f"{name} must be a finite real number, got {value!r}")
+    return v
+
+
+def non_negative(value: Any, name: str) -> float:
+    """A finite number ``>= 0``."""
+    v = finite(value, name)
+    if v < 0:
+        raise InputError(f"{name} must be a finite number >= 0, got {value!r}")
+    return v
 
 
 def _tol(tol: Any) -> float:

@@ -173,6 +173,8 @@ class Model(ABC):
     fits: ClassVar[bool] = False
     #: exceptions after which ``model="auto"`` goes on to the next entry (non-asymptotic entries)
     declines: ClassVar[tuple[type[BaseException], ...]] = ()
+    #: True: an adhesive (JKR) entry, offered only problems with a work of adhesion (and those only such entries)
+    adhesive: ClassVar[bool] = False
 
     def refuses(self, problem: Problem) -> str | None:
         """None, or why this model is not one for this kind of problem at all (an InputError when named)."""
@@ -273,7 +275,7 @@ def model_names() -> tuple[str, ...]:
     """``solve()``'s choices of ``model``: ``"auto"``, ``"asymptotic"``, then the public names by preference."""
     out = ["auto", "asymptotic"]
     for m in MODEL_REGISTRY:
-        if m.solves and m.selectable and m.name not in out:
+        if m.solves and m.selectable and m.name not in out and not m.adhesive:
             out.append(m.name)
     return tuple(out)
 
@@ -288,9 +290,11 @@ def fit_entry(name: str) -> Model:
     return next(m for m in MODEL_REGISTRY if m.fits and m.name == name)
 
 
-def entries_named(name: str) -> list[Model]:
-    """The entries that answer to the public name ``name`` (their own name or an alias), by preference."""
-    return [m for m in MODEL_REGISTRY if m.solves and (m.name == name or name in m.aliases)]
+def entries_named(name: str, adhesive: bool = False) -> list[Model]:
+    """The entries that answer to the public name ``name`` (their own name or an alias), by preference; the
+    adhesive ones (``adhesive=True``) or the others.
+    """
+    return [m for m in MODEL_REGISTRY if m.solves and (m.name == name or name in m.aliases) and m.adhesive == adhesive]
 
 
 def estimate_ok(est: dict, tol: float) -> bool:

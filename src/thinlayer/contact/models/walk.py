@@ -80,7 +80,7 @@ def _try_asymptotic(entry: Model, problem: Problem, tried: list[str], named: boo
 
 
 def _named(problem: Problem, choice: str) -> Any:
-    candidates = entries_named(choice)
+    candidates = entries_named(choice, problem.interaction.adhesive)
     if not candidates:
         raise InputError(f"no model named {choice!r} is registered")
     live = [m for m in candidates if m.refuses(problem) is None]
@@ -107,7 +107,8 @@ def walk(problem: Problem, choice: str) -> Any:
     tried: list[str] = []
     guess = None
     for entry in list(MODEL_REGISTRY):
-        if not entry.solves or entry.skips(problem) or (choice == "asymptotic" and not entry.asymptotic):
+        if not entry.solves or entry.adhesive != problem.interaction.adhesive or entry.skips(problem) \
+                or (choice == "asymptotic" and not entry.asymptotic):
             continue
         if entry.asymptotic:
             ans, depth = _try_asymptotic(entry, problem, tried, named=False)
