@@ -421,6 +421,9 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                                                           "was rejected")
     s.add_argument("--quiet", action="store_true", help="no 'wrote ...' message (errors still go to stderr)")
     s.add_argument("--json", action="store_true", help="machine-readable JSON output (keys above)")
+    from .adhesion_cli import add_adhesion_args
+
+    add_adhesion_args(s, _finite)
     s.add_argument("--latex", action="store_true", help="print the LaTeX of the result (one value only)")
     s.set_defaults(func=cmd_solve)
     return s
@@ -458,6 +461,10 @@ def cmd_solve(args: argparse.Namespace) -> int:
         raise _bad("give exactly one of --delta0 (indentation) and --force (total force P)")
     if (args.mu is None) == (args.E is None):
         raise _bad("give exactly one of --mu (shear modulus) and --E (Young's modulus)")
+    if args.work_of_adhesion is not None:  # JKR adhesion (thinlayer.export.adhesion_cli)
+        from .adhesion_cli import cmd_solve_adhesive
+
+        return cmd_solve_adhesive(args, _bad, _punch_text)
     swept, values = _sweep(args)
     if swept is not None and args.latex:
         raise _bad(f"--latex prints one result: give one value of --{swept}, or --format csv|json for the sweep")

@@ -63,6 +63,10 @@ def _nu_arg(problem: Problem) -> float | None:
 
 def _answer(problem: Problem, model: str, P: float, delta: float, c: float, est: dict, branch: str,
             equations: tuple, detail: Any, pull_off: Any) -> AdhesiveIndentation:
+    if problem.force is not None:  # the given value itself (the root meets it to the solver's tolerance)
+        P = problem.force
+    else:
+        delta = problem.delta0
     return AdhesiveIndentation(layer=problem.layer, punch=problem.tip, H=problem.H, mu=problem.mu, nu=problem.nu,
                                work_of_adhesion=problem.interaction.work_of_adhesion, delta0=float(delta),
                                force=abs(float(P)), tensile=bool(P < 0), contact_radius=float(c), branch=branch,
