@@ -120,8 +120,7 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
         epilog="examples:\n  thinlayer fit curve.csv --R 5e-6 --H 3e-6 --nu 0.5 --json\n"
                "  thinlayer fit curve.csv --columns depth,force --R 10 --H 2 --nu 0.3 --fit-offset --model hertz\n"
                "  thinlayer fit curve.csv --cone 70 --H 0.2 --nu 0.3\n"
-               "  thinlayer fit curve.csv --blunted-cone 0.5 70 --H 0.2 --nu 0.3 --model tip-law --json\n"
-               "  thinlayer fit tip_position.csv --R 5e-6 --nu 0.5 --depth-sign -1     # the half-space (Hertz)")
+               "  thinlayer fit curve.csv --blunted-cone 0.5 70 --H 0.2 --nu 0.3 --model tip-law --json")
     s.add_argument("csv", help="CSV file: a depth column and a force column (same length units as --R, --H)")
     s.add_argument("--R", type=finite, help="radius (> 0) of the sphere as a paraboloid r^2/(2R); or one tip below")
     s.add_argument("--tip", metavar="KIND:key=value,...", help="a tip of thinlayer.punch.TIPS with its values, e.g. "
