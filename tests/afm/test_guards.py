@@ -115,7 +115,7 @@ def test_flags_in_fit_and_solve():
             base="frictionless")
     assert len(r.flags) == 2 and r.flags[0].startswith("delta/H = 4 > 0.1") and "delta/R = 0.2" in r.flags[1]
     assert str(r).count("FLAG:") == 2 and r.as_dict()["flags"] == list(r.flags)
-    small = fit(d[:10] * 0.01, _hertz(d[:10] * 0.01), punch=10.0, H=1.0)
+    small = fit(d[:10] * 0.01, _hertz(d[:10] * 0.01), punch=10.0, H=1.0, base="frictionless")
     assert small.flags == () and "FLAG" not in str(small)
     ans = solve(FrictionlessLayer(0.5), Punch.paraboloid(10), delta0=2.0, H=1.0, E=1.0, model="any-thickness")
     assert len(ans.flags) == 2 and "delta/H = 2 > 0.1" in ans.flags[0] and "FLAG: delta/H" in str(ans)

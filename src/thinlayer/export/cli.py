@@ -534,7 +534,7 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                               "  thinlayer codegen incompressible --tip elliptic_paraboloid --lang c,python\n"
                               "  thinlayer codegen two-term --tip paraboloid --nu 0.45 --lang julia\n"
                               "  thinlayer codegen any-thickness --nu 0.45 --lang python,c --out gen\n"
-                              "  thinlayer codegen nanite --tip sphere --base bonded --nu 0.5 --out gen")
+                              "  thinlayer codegen nanite --tip sphere --base frictionless --nu 0.45 --out gen")
     g.add_argument("result", choices=CODEGEN_RESULTS, help="what to generate")
     g.add_argument("--law", choices=("thin", "thick", "any-thickness"), default="thin",
                    help="flat-punch: the thin-layer law (F.12)-(F.16), the thick series (F.18), or the exact kappa "
