@@ -19,7 +19,20 @@ import numpy as np
 from .._checks import InputError
 from .indentation import Indentation
 
-__all__ = ["half_space_answer"]
+__all__ = ["HERTZ", "half_space_answer"]
+
+
+class _HertzEntry:
+    """What the answer says of its model (``Indentation.equations``): Hertz's law, not an equation of the paper."""
+
+    name = "half-space"
+
+    def result_equations(self, ans: Indentation) -> tuple[str, str]:
+        return "Hertz", "Hertz"
+
+
+#: the half-space's answers carry this entry (it is not a row of the model registry: solve() takes H = inf to it)
+HERTZ = _HertzEntry()
 
 
 def half_space_answer(layer: Any, tip: Any, delta0: float | None, force: float | None, mu: float, nu: float,
@@ -43,4 +56,4 @@ def half_space_answer(layer: Any, tip: Any, delta0: float | None, force: float |
                        contact_area=math.pi * a * a, contact_radius=a, semi_axes=None, model="half-space",
                        reason="half-space: H = inf, Hertz's law (exact for the paraboloid)",
                        error_estimate={"force": 0.0, "contact_area": 0.0, "contact_radius": 0.0}, tol=tol,
-                       detail=None, _pressure=pressure, _extent=a)
+                       detail=None, _pressure=pressure, _extent=a, entry=HERTZ)
