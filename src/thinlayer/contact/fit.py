@@ -420,6 +420,8 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
 
 def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign) -> FitResult:
     d, f = _points(delta, force)
+    if sigma is not None:  # refused before any law is built (bounded work)
+        check_array_size(sigma, "sigma", MAX_POINTS, "one standard deviation per point")
     d = oriented_depths(d, f, depth_sign)
     if punch is None:
         raise InputTypeError("fit() needs punch= (the sphere radius R, Punch.paraboloid(R) or another tip)")
@@ -454,7 +456,6 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, 
     if sigma is None:
         w = np.ones_like(f)
     else:
-        check_array_size(sigma, "sigma", MAX_POINTS, "one standard deviation per point")
         try:
             s = np.broadcast_to(np.asarray(sigma, dtype=float), f.shape)
         except (TypeError, ValueError, OverflowError):
