@@ -323,7 +323,8 @@ class Pyramid(Polyhedral):
     ----------
     half_angle : number or str, optional
         The face angle in DEGREES, ``0 < alpha < 90`` (a string is read by the restricted grammar).  Left out, the
-        symbol ``alpha`` (in degrees; the expressions carry ``pi alpha/180``) for a symbolic law.  Not the edge angle (axis to ridge), which is larger.
+        symbol ``alpha`` (in degrees; the expressions carry ``pi alpha/180``) for a symbolic law.
+        Not the edge angle (axis to ridge), which is larger.
     sides : int
         3 or 4.
 
