@@ -144,7 +144,7 @@ def symmetric_moments(sides: int, top: int) -> dict[sp.Symbol, sp.Expr]:
                 eqs.append(sp.Add(*[cf * _mu(*m) for m, cf in image.terms()]) - _mu(a, b))
         unknowns = [_mu(a, b) for a, b in mons]
         sol = sp.solve(eqs, unknowns, dict=True)[0]
-        out.update({k: sp.nsimplify(v) if v.is_number else v for k, v in sol.items()})
+        out.update({k: sp.expand(v) for k, v in sol.items()})
     return out
 
 
@@ -370,9 +370,28 @@ def _law_coefficients(sides: int):
 
 @lru_cache(maxsize=4)
 def _series_known(sides: int) -> tuple[sp.Expr, ...]:
-    """The coefficients ``f_0 .. f_5`` in ``b_k, K, m_2, m_4`` (the law's; no unknowns below order 6)."""
-    coefs = _derive(LAW_ORDER, sides, unknowns=False)
-    return _invariants(coefs, sides)
+    """The coefficients ``f_0 .. f_5`` in ``b_k, K, m_2, m_4`` (the law's; no unknowns below order 6), kept in the
+    disk cache (thinlayer._cache) as exact rational terms in ``g_k = b_k/pi`` (times K): a fresh process reads them
+    instead of deriving them again (2 s).
+    """
+    from .._cache import cached
+
+    b = moment_symbols(2)
+    gens = (*(q / sp.pi for q in b), K_sym, m2_sym, m4_sym)
+
+    def compute() -> tuple:
+        coefs = _invariants(_derive(LAW_ORDER, sides, unknowns=False), sides)
+        out = []
+        for c in coefs:
+            poly = sp.Poly(sp.expand(K_sym * c.xreplace({q: g_ * sp.pi for q, g_ in zip(b, sp.symbols("g_0:3"))})),
+                           *sp.symbols("g_0:3"), K_sym, m2_sym, m4_sym)
+            out.append(tuple((*mon, int(sp.Rational(cf).p), int(sp.Rational(cf).q)) for mon, cf in poly.terms()))
+        return tuple(out)
+
+    stored = cached("pyramid_thick_series", (sides, LAW_ORDER), compute)
+    # stored times K (f_5 holds b_2 m_2^2/K)
+    return tuple(sp.expand(sp.Add(*[sp.Rational(t[-2], t[-1]) * sp.Mul(*[g_**e for g_, e in zip(gens, t[:-2])])
+                                    for t in c]) / K_sym) for c in stored)
 
 
 def _invariants(coefs: tuple, sides: int) -> tuple[sp.Expr, ...]:
