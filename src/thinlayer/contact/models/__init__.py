@@ -6,7 +6,18 @@ by the first entry that holds.  A new model is one module here with one ``regist
 """
 from __future__ import annotations
 
-from . import any_thickness, compressible, direct, flat, incompressible, published, pyramid_law, tip_law, two_term  # noqa: F401,E501 - they register
+from . import (  # noqa: F401,E501 - they register
+    any_thickness,
+    compressible,
+    direct,
+    flat,
+    incompressible,
+    published,
+    pyramid_law,
+    pyramid_thick,
+    tip_law,
+    two_term,
+)
 from .base import (
     MODEL_REGISTRY,
     ForceCurve,
