@@ -268,7 +268,16 @@ _COORDINATE_NAMES = frozenset({"x_1", "x_2", "x1", "x2"})
 
 
 def piecewise_linear_form(e: sp.Expr, coords: tuple) -> bool:
-    """Whether ``e`` is a linear form in ``coords`` or a max/min/sum/multiple of such (the grammar's max/min rule)."""
+    """Whether ``e`` is a linear form in ``coords`` or a max/min/sum/multiple of such (the grammar's max/min rule).
+
+    ``e`` is a sympy expression (a string is read by :func:`parse_expression` first), ``coords`` a tuple of sympy
+    Symbols.
+    """
+    if not isinstance(e, sp.Basic):
+        raise InputTypeError(f"piecewise_linear_form takes a sympy expression (parse a string with "
+                             f"parse_expression first), got {type(e).__name__}")
+    if not isinstance(coords, tuple) or not all(isinstance(c, sp.Symbol) for c in coords):
+        raise InputTypeError(f"piecewise_linear_form takes a tuple of sympy Symbols as coords, got {coords!r:.60}")
     return _piecewise_linear(e, coords)
 
 
