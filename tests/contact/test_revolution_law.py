@@ -207,3 +207,20 @@ if __name__ == "__main__":  # the grid's table for the report
                 r = grid_row(t, lay, chi)
                 print(f"{t:9} {lay:15} {chi:5g} {r['c/H']:7.3g} {r['dP']:9.2e} {r['eP']:9.2e} {r['dc']:9.2e} "
                       f"{r['ec']:9.2e}", flush=True)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("nu", "base", "s"), [(0.45, "bonded", 1.0), (0.45, "bonded", 20.0), (0.5, "bonded", 8.0),
+                                               (0.3, "frictionless", 25.0)])
+def test_the_cone_table_within_its_estimate_of_the_equation(nu, base, s):
+    # cross-check of the packaged cone table (direct spectral solutions, interpolated in chi and nu) by the equation
+    from thinlayer.contact.any_thickness_tips import cone_law
+
+    lay = tl.FrictionlessLayer(0.3) if base == "frictionless" else tl.BondedLayer(nu)
+    res = revolution_contact_for_radius(lay, tl.Punch.cone(45), s, 1.0, nu=nu if base == "frictionless" else None)
+    c0 = 2 / math.pi * res.delta0
+    law = cone_law(nu, base)
+    (Pr,), (cr,) = law.ratios([c0])
+    (eP,), (ec,) = law.error_estimate([c0])
+    assert abs(Pr / (res.force / (4 / math.pi * res.vartheta * res.delta0**2)) - 1) <= eP + res.force_error
+    assert abs(cr / (s / c0) - 1) <= ec + res.delta0_error
