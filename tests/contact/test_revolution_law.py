@@ -152,10 +152,10 @@ def _table_check(law, n: float, layer, nu: float, radii) -> float:
 
 
 def test_the_power_law_table_law_holds_off_its_nodes_within_its_estimate():
-    # a small table (7 radii c/H in [0.05, 0.8]) of r^1.5 on the frictionless base, checked between its nodes
+    # a small table (5 radii c/H in [0.05, 0.6]) of r^1.5 on the frictionless base, checked between its nodes
     n, nu = 1.5, 0.3
-    law = law_from_table(power_law_table(n, nu, "frictionless", (0.05, 0.8, 7)), n, nu, "frictionless")
-    assert _table_check(law, n, tl.FrictionlessLayer(0.3), nu, (0.11, 0.37)) < 5e-3  # h = 0.46 in log c; GRID has 0.18
+    law = law_from_table(power_law_table(n, nu, "frictionless", (0.05, 0.6, 5)), n, nu, "frictionless")
+    assert _table_check(law, n, tl.FrictionlessLayer(0.3), nu, (0.2,)) < 2e-2  # h = 0.62 in log c; GRID has 0.18
 
 
 @pytest.mark.slow
