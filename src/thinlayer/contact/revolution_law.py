@@ -180,8 +180,11 @@ def law_from_table(data: dict, n: float, nu: float, base: str) -> PowerLawLaw:
     Sy, Sz = CubicSpline(x, y), CubicSpline(x, z)
     # interpolation: the spline through every other node, at the nodes left out; a cubic spline's error falls like
     # h^4: the full spline's error is ~1/16 of it (a quarter taken), the largest of the two neighbouring intervals
-    hy, hz = CubicSpline(x[::2], y[::2]), CubicSpline(x[::2], z[::2])
-    iy, iz = np.abs(hy(x[1::2]) - y[1::2]) / 4, np.abs(hz(x[1::2]) - z[1::2]) / 4
+    m_odd = (x.size - 1) // 2  # the nodes 2j + 1 that lie between two nodes of the coarse spline (no extrapolation)
+    even = slice(0, 2 * m_odd + 1, 2)
+    hy, hz = CubicSpline(x[even], y[even]), CubicSpline(x[even], z[even])
+    odd = slice(1, 2 * m_odd, 2)
+    iy, iz = np.abs(hy(x[odd]) - y[odd]) / 4, np.abs(hz(x[odd]) - z[odd]) / 4
     iy_n, iz_n = np.zeros_like(x), np.zeros_like(x)
     for j, (a, b) in enumerate(zip(iy, iz)):  # node 2j+1 is inside [x_2j, x_2j+2]
         for m in (2 * j, 2 * j + 1, 2 * j + 2):
