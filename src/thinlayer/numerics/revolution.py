@@ -69,6 +69,9 @@ _GRADE, _GRADED = 0.2, 10
 #: the largest c/H of a punch of revolution at a prescribed radius (the y-rule has ~3 U_MAX c/H panels, 290 nodes
 #: there; about 1 s per solve with its estimate)
 MAX_C_OVER_H_TIP = 90.0
+#: the estimates never read below this: the level to which the equation is verified against the direct spectral solver
+#: (whose own rounding floor is 5e-13; the collocation's rounding is ~1e-14 at small c/H)
+VERIFIED_FLOOR = 1e-12
 #: the largest half-space radius over thickness ``c_0/H`` at a prescribed depth or force (c is up to 1.4 c_0 there)
 MAX_C0_OVER_H = 30.0
 
@@ -287,7 +290,7 @@ def revolution_contact_for_radius(layer: LayerKernel, tip: Any, radius: float, H
     ed = eP = 0.0
     if error_estimate:
         d0c, Pvc, _, _ = _tip_at(layer, data, c, HH, N, coarse=True)
-        floor = rounding_floor(layer, c / HH) if layer.has_thickness else 4 * np.finfo(float).eps
+        floor = max(rounding_floor(layer, c / HH) if layer.has_thickness else 0.0, VERIFIED_FLOOR)
         ed = max(abs(d0c / d0 - 1.0), floor)
         eP = max(abs(Pvc / Pv - 1.0), floor)
     return RevolutionContact(layer, c, HH, mu_val, nu_val, vt, d0, vt * Pv, ed, eP, 0.0, kappa, N)
@@ -335,7 +338,7 @@ def revolution_contact(layer: LayerKernel, tip: Any, delta0: float | None = None
     ec = eP = ed = 0.0
     if error_estimate:
         d0c, Pvc, _, _ = _tip_at(layer, data, c, HH, N, coarse=True)
-        floor = rounding_floor(layer, c / HH) if layer.has_thickness else 4 * np.finfo(float).eps
+        floor = max(rounding_floor(layer, c / HH) if layer.has_thickness else 0.0, VERIFIED_FLOOR)
         e_d, e_P = max(abs(d0c / d0 - 1.0), floor), max(abs(Pvc / Pv - 1.0), floor)
         d1, P1, _, _ = _tip_at(layer, data, c * 1.0001, HH, N)  # the slopes, same nodes
         s_d, s_P = math.log(d1 / d0) / math.log(1.0001), math.log(P1 / Pv) / math.log(1.0001)
