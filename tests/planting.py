@@ -226,8 +226,24 @@ def _state(path: Path) -> str:
     return "dir" if path.is_dir() else "missing"
 
 
+#: outcomes of the attacks run in this process: tests/export/test_symlink_safety.py and the acceptance table
+#: (tests/acceptance/cases_files.py) try the same inputs; they share one xdist group, and each input runs once
+_OUTCOMES: dict[tuple, Outcome] = {}
+
+
 def attack(writer: Writer, rels: list[str], kind: str, overwrite: bool, work: Path) -> Outcome:
-    """Plant ``kind`` links at ``rels`` of ``writer``'s ``--out``, run it (with ``--overwrite`` or not)."""
+    """Plant ``kind`` links at ``rels`` of ``writer``'s ``--out``, run it (with ``--overwrite`` or not).
+
+    The outcome (exit code, stderr, the independent checks of the sentinel and of the planted paths) of one input is
+    kept for the process: a second caller with the same input gets the same run's outcome.
+    """
+    key = (writer.name, tuple(rels), kind, bool(overwrite))
+    if key not in _OUTCOMES:
+        _OUTCOMES[key] = _attack(writer, rels, kind, overwrite, work)
+    return _OUTCOMES[key]
+
+
+def _attack(writer: Writer, rels: list[str], kind: str, overwrite: bool, work: Path) -> Outcome:
     out = work / "out"
     if out.exists():
         shutil.rmtree(out)

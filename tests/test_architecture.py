@@ -49,7 +49,7 @@ RANK = {
 STAGES = [
     "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "tip_law", "composite",
     "pyramid_law", "second_order",
-    "incompressible", "thick_layer", "thick_tips", "flat_punch", "adhesion", "solution",
+    "incompressible", "thick_layer", "thick_tips", "pyramid_thick", "flat_punch", "adhesion", "solution",
 ]
 
 #: modules whose import must not load scipy (the symbolic pipeline)

@@ -359,6 +359,8 @@ INVENTORY: dict[str, list] = {
     "thinlayer.parse.sympy_value": [lambda s: PA.sympy_value(s, "x"), lambda s: PA.sympy_value(s, "x", symbol=True)],
     "thinlayer.parse.check_cost": [lambda s: PA.check_cost(s)],
     "thinlayer.parse.expression_cost": [lambda s: PA.expression_cost(s)],
+    "thinlayer.parse.piecewise_linear_form": [lambda s: PA.piecewise_linear_form(s, (sp.Symbol("r"),)),
+                                              lambda s: PA.piecewise_linear_form(sp.Symbol("r"), s)],
     "thinlayer.parse.Cost": [lambda s: PA.Cost(s, s, s)],
     # the direct solvers' other doors
     "thinlayer.numerics.contact_for_radius": [

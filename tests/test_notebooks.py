@@ -40,7 +40,9 @@ SMALL = {
     "08_fitting": [("THICKNESS = [20.0, 10.0, 4.0, 2.0, 1.0]", "THICKNESS = [10.0, 1.5]"),
                    ("N_POINTS = 30", "N_POINTS = 6"),
                    ("chis = np.geomspace(0.05, 10.0, 14)", "chis = np.geomspace(0.05, 3.0, 6)")],
-    "09_afm_tips": [("RATIOS = [0.1, 0.2, 0.5, 1.0, 2.0, 5.0]", "RATIOS = [0.2, 5.0]")],
+    "09_afm_tips": [("RATIOS = [0.1, 0.2, 0.5, 1.0, 2.0, 5.0]", "RATIOS = [0.2, 5.0]"),
+                    ("N_GRID = 160   # cells per side of the square [-1.25, 1.25]^2",
+                     "N_GRID = 64   # cells per side of the square [-1.25, 1.25]^2")],
 }
 #: what a user's notebook never holds
 PLUMBING = re.compile(r"os\.environ|getenv|THINLAYER_|pytest|\bSMALL\b")

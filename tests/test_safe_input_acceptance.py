@@ -22,7 +22,12 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import pytest
 from acceptance import Tally, case_modules
+
+#: tests/export/test_symlink_safety.py tries the data-loss inputs of tests/acceptance/cases_files.py: one worker
+#: runs both, and planting.attack runs each input once
+pytestmark = pytest.mark.xdist_group("file-attacks")
 
 #: the first round's inputs (issue 12) plus at least 150 new ones (issue 23)
 MIN_TRIED = 257 + 150

@@ -28,12 +28,13 @@ max/min/sum/multiple of such, at most :data:`MAX_ARGUMENTS` arguments per call; 
 A radial profile ``Phi(r)`` of a tip of revolution (``parse_expression(text, radial=True)``,
 :meth:`thinlayer.Punch.revolution`) is read by the same grammar with three additions and the same bounds::
 
-    atom  := number | name | "(" expr ")" | ("sqrt" | "abs") "(" expr ")"
+    atom  := number | name | "(" expr ")" | ("sqrt" | "abs") "(" expr ")" | ("max" | "min") "(" expr ("," expr)* ")"
     power := atom ("**" unary)?        (the exponent a number: an integer or an exact rational p/q, |p|, q <= 1000)
 
 The name ``r`` is the radius (``thinlayer.parse.RADIUS``, a nonnegative Symbol), the coordinates ``x_1, x_2`` are
-not names there, ``sqrt`` and ``abs`` are the only calls (any other call, attribute or keyword stays an error), and a
-decimal exponent is exact (``r**1.5`` is ``r**(3/2)``).
+not names there, ``sqrt``, ``abs``, ``max`` and ``min`` are the only calls (any other call, attribute or keyword stays
+an error; each argument of max/min a linear form ``a*r + c`` or a max/min/sum/multiple of such, at most
+:data:`MAX_ARGUMENTS`), and a decimal exponent is exact (``r**1.5`` is ``r**(3/2)``).
 
 Work is bounded before it starts, by cost and not by shape (each limit a :class:`~thinlayer.errors.WorkLimitError`
 naming it and why): the text's length (:data:`MAX_LENGTH`), the nesting depth, each exponent (an integer of
@@ -75,6 +76,7 @@ sp = lazy_module("sympy")  # imported on first use: a numeric solve() never need
 
 __all__ = ["Cost", "ExpressionError", "MAX_BITS", "MAX_DIGITS", "MAX_EXPONENT", "MAX_FLOAT_DIGITS", "MAX_LENGTH",  # noqa: F822
            "MAX_PARAMETERS", "MAX_TERMS", "MAX_TOTAL_DEGREE", "RADIUS", "as_expr", "check_cost", "expression_cost",
+           "piecewise_linear_form",
            "parse_expression", "parse_number", "sympy_value"]
 
 #: longest formula read (characters)
@@ -103,7 +105,8 @@ _ALLOWED = "numbers, the coordinates x_1, x_2, parameter names, + - * / ** and p
 MAX_ARGUMENTS = 64
 #: the piecewise-linear calls of a formula in x1, x2: max/min of linear forms (polyhedral tips)
 _PIECEWISE_FUNCTIONS = {"max": "Max", "min": "Min"}  # name -> the sympy function's name (sympy loads lazily)
-_ALLOWED_RADIAL = "numbers, the radius r, parameter names, + - * / **, parentheses, sqrt(...) and abs(...)"
+_ALLOWED_RADIAL = ("numbers, the radius r, parameter names, + - * / **, parentheses, sqrt(...), abs(...) and "
+                   "max(...)/min(...) of linear forms in r")
 #: the radius of a radial profile Phi(r) read with ``radial=True``
 _LAZY_SYMBOLS = {"RADIUS": ("r", {"nonnegative": True})}  # RADIUS: a nonnegative Symbol, made on first use
 
@@ -264,18 +267,34 @@ def check_cost(expr: sp.Basic, what: str = "formula", *, cost: Cost | None = Non
 _COORDINATE_NAMES = frozenset({"x_1", "x_2", "x1", "x2"})
 
 
-def _piecewise_linear(e: sp.Expr) -> bool:
-    """Whether ``e`` is a linear form in the coordinates x1, x2 or a max/min/sum/multiple of such."""
-    coords = (S.x1, S.x2)
+def piecewise_linear_form(e: sp.Expr, coords: tuple) -> bool:
+    """Whether ``e`` is a linear form in ``coords`` or a max/min/sum/multiple of such (the grammar's max/min rule).
+
+    ``e`` is a sympy expression (a string is read by :func:`parse_expression` first), ``coords`` a tuple of sympy
+    Symbols.
+    """
+    if not isinstance(e, sp.Basic):
+        raise InputTypeError(f"piecewise_linear_form takes a sympy expression (parse a string with "
+                             f"parse_expression first), got {type(e).__name__}")
+    if not isinstance(coords, tuple) or not all(isinstance(c, sp.Symbol) for c in coords):
+        raise InputTypeError(f"piecewise_linear_form takes a tuple of sympy Symbols as coords, got {coords!r:.60}")
+    return _piecewise_linear(e, coords)
+
+
+def _piecewise_linear(e: sp.Expr, coords: tuple | None = None) -> bool:
+    """Whether ``e`` is a linear form in the coordinates x1, x2 (or the radius ``r`` when given as ``coords``) or a
+    max/min/sum/multiple of such.
+    """
+    coords = (S.x1, S.x2) if coords is None else coords
     if not e.has(*coords):
         return True
     if e in coords:
         return True
     if isinstance(e, (sp.Max, sp.Min, sp.Add)):
-        return all(_piecewise_linear(a) for a in e.args)
+        return all(_piecewise_linear(a, coords) for a in e.args)
     if isinstance(e, sp.Mul):
         moving = [f for f in e.args if f.has(*coords)]
-        return len(moving) == 1 and _piecewise_linear(moving[0])
+        return len(moving) == 1 and _piecewise_linear(moving[0], coords)
     return False
 _DECIMAL = re.compile(r"(\d*)\.?(\d*)(?:[eE]([+-]?\d+))?")
 
@@ -398,7 +417,9 @@ class _Parser:
         return base
 
     def piecewise_linear(self, value: str, pos: int) -> sp.Expr:
-        """``max(f_1, ..., f_m)`` / ``min(...)`` of linear forms in x1, x2 (the ``(`` is next)."""
+        """``max(f_1, ..., f_m)`` / ``min(...)`` of linear forms in x1, x2, or in the radius r for a radial profile
+        (the ``(`` is next).
+        """
         self.take("(")
         self.deeper()
         args = [self.expr()]
@@ -409,10 +430,12 @@ class _Parser:
                 raise FormulaTooLargeError(f"{value}(...) at position {pos} has more than {MAX_ARGUMENTS} arguments")
         self.depth -= 1
         self.take(")")
+        coords = (self.names["r"],) if self.radial else None
         for k, a in enumerate(args):
-            if not _piecewise_linear(a):
+            if not _piecewise_linear(a, coords):
+                what = "r (a*r + c" if self.radial else "x1, x2 (a*x1 + b*x2 + c"
                 raise ExpressionError(f"argument {k + 1} of {value}(...) at position {pos}, {sp.sstr(a):.60}, is not "
-                                      "a linear form in x1, x2 (a*x1 + b*x2 + c, or max/min of such)")
+                                      f"a linear form in {what}, or max/min of such)")
         # unevaluated: sympy's Max compares its arguments pairwise under assumptions (slow for 64 symbolic forms)
         return getattr(sp, _PIECEWISE_FUNCTIONS[value])(*args, evaluate=False)
 
@@ -422,7 +445,7 @@ class _Parser:
             return _number(value, pos)
         if kind == "name":
             nxt = self.peek()
-            if nxt is not None and nxt[1] == "(" and not self.radial and value in _PIECEWISE_FUNCTIONS:
+            if nxt is not None and nxt[1] == "(" and value in _PIECEWISE_FUNCTIONS:
                 return self.piecewise_linear(value, pos)
             if nxt is not None and nxt[1] == "(" and self.radial and value in _RADIAL_FUNCTIONS:
                 self.take("(")
@@ -433,7 +456,7 @@ class _Parser:
                 return getattr(sp, _RADIAL_FUNCTIONS[value])(inner)
             if nxt is not None and nxt[1] == "(" and self.radial:
                 raise ExpressionError(f"{value}(...) at position {pos} is a call: a radial profile may call only "
-                                      f"sqrt(...) and abs(...) ({_ALLOWED_RADIAL})")
+                                      f"sqrt(...), abs(...), max(...) and min(...) ({_ALLOWED_RADIAL})")
             if nxt is not None and nxt[1] == "(":
                 raise ExpressionError(f"{value}(...) at position {pos} is a function call, not a polynomial term: "
                                       f"a formula here is a polynomial with parameters ({_ALLOWED}), or max(...)/"

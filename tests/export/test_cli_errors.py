@@ -32,7 +32,7 @@ CASES = [
     ("order 0", None, ["coefficients", "--order", "0"]),
     ("order huge", None, ["coefficients", "--order", "100000"]),
     ("H nan", None, [*SOLVE, "--H", "nan"]),
-    ("H inf", None, [*SOLVE, "--H", "inf"]),
+    ("H -inf", None, [*SOLVE, "--H=-inf"]),  # --H inf is the half-space (issue 25 item 4): tests/afm
     ("H negative", None, [*SOLVE, "--H", "-1"]),
     ("mu 1e308", None, [*SOLVE, "--H", "0.01", "--mu", "1e308", "--json"]),
     ("param nan", None, [*SOLVE_MU, "--nu", "0.3", "--kind", "paraboloid", "--param", "R=nan", "--delta0", "0.1",

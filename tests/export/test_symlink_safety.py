@@ -34,6 +34,10 @@ from planting import (
 
 from thinlayer.validation import output as O
 
+#: the acceptance table (tests/test_safe_input_acceptance.py) tries the same inputs: one worker runs both, and
+#: planting.attack runs each input once
+pytestmark = pytest.mark.xdist_group("file-attacks")
+
 ROOT = Path(__file__).resolve().parents[2]
 SRC = str(ROOT / "src")
 TARGETS = [(w, rel) for w in WRITERS for rel in w.files]

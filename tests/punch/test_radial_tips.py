@@ -1,16 +1,20 @@
 """Tips of revolution (issue 24): cone, exact sphere, blunted cone, power law, revolution."""
 import math
+import os
 
 import mpmath
 import numpy as np
 import pytest
 import sympy as sp
 
+import thinlayer as tl
 from thinlayer import BondedLayer, Punch
 from thinlayer import symbols as S
 from thinlayer.parse import ExpressionError, parse_expression
 from thinlayer.punch import TIPS, PunchError, tip_from_spec
 from thinlayer.punch._radial import apex_inner_order, r
+
+SLOW = os.environ.get("THINLAYER_SLOW") == "1"
 
 
 def test_kinds_registered_and_specs():
@@ -165,3 +169,53 @@ def test_cone_leading_law_symbolic():
     lay = BondedLayer(0.3)
     want_num = float((lay.vartheta / (lay.A * S.H)).subs({S.H: 0.1, S.mu: 1})) * float(Vq)
     assert float(law.P0.subs(num)) == pytest.approx(want_num, rel=1e-12)
+
+
+def test_revolution_max_min_of_linear_forms():
+    """max/min of linear forms in r (issue 24 item 1): read by the grammar, a Piecewise of the pieces with its
+    breakpoints; the values are the forms' max/min (checked against numpy's on a grid); refusals like the rest."""
+    steep = tl.Punch.revolution("max(r/2, 2*r - 3)")
+    flat = tl.Punch.revolution("min(2*r, r/2 + 3/2) + r**2/10")
+    assert steep.radial_breakpoints == (2.0,) and flat.radial_breakpoints == (1.0,)
+    rr = np.linspace(0.0, 6.0, 61)
+    np.testing.assert_allclose(steep.radial_profile(rr), np.maximum(rr / 2, 2 * rr - 3), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(flat.radial_profile(rr), np.minimum(2 * rr, rr / 2 + 1.5) + rr**2 / 10, atol=1e-15)
+    np.testing.assert_allclose(steep.radial_slope(np.array([1.0, 3.0])), [0.5, 2.0])
+    assert steep.max_inner_order == 1 and steep.smoothness == "apex"  # a cone at the apex
+    # symbolic coefficients stay a Max until .subs gives numbers
+    sym = tl.Punch.revolution("max(a*r, 2*r - 3)")
+    assert sym.radial_breakpoints == () and sym.subs({"a": "1/2"}).radial_breakpoints == (2.0,)
+    with pytest.raises(tl.PunchError, match="not a linear form in r"):
+        tl.Punch.revolution("max(r**2, r)")
+    with pytest.raises(tl.PunchError, match="increasing"):  # flat-ended: not increasing from the apex
+        tl.Punch.revolution("max(0, 2*r - 1)")
+    with pytest.raises(tl.PunchError, match="increasing"):
+        tl.Punch.revolution("min(r, -r)")
+    with pytest.raises(tl.WorkLimitError, match="more than 64"):
+        tl.Punch.revolution("max(" + ", ".join(["r"] * 70) + ")")
+    with pytest.raises(tl.PunchError, match="x_1, x_2"):
+        tl.Punch.revolution("max(x1, r)")
+
+
+def test_revolution_max_solved_by_the_direct_solver():
+    """Below its kink (contact radius 1 < 2) max(r/2, 2r - 3) is the cone r/2: the axisymmetric direct solver gives the
+    same depth and force (a cone by another route: Punch.cone of cot(alpha) = 1/2); beyond it (radius 3) the depth
+    is the profile's own, above the cone's."""
+    from thinlayer.numerics.axisymmetric import contact_for_radius
+
+    tip = tl.Punch.revolution("max(r/2, 2*r - 3)")
+    cone = tl.Punch.cone(math.degrees(math.atan(2.0)))
+    kw = dict(H=1.0, mu=1.0, n=24, error_estimate=False)
+    a, b = (contact_for_radius(tl.BondedLayer(0.3), t, 1.0, **kw) for t in (tip, cone))
+    assert a.force == pytest.approx(b.force, rel=1e-12) and a.delta0 == pytest.approx(b.delta0, rel=1e-12)
+    deep, deep_cone = (contact_for_radius(tl.BondedLayer(0.3), t, 3.0, **kw) for t in (tip, cone))
+    assert deep.delta0 > deep_cone.delta0 and deep.force > 0
+
+
+@pytest.mark.skipif(not SLOW, reason="three direct solves, 10 s (THINLAYER_SLOW=1)")
+def test_revolution_max_between_its_cones():
+    """Beyond the kink the force lies between the cones r/2 (below the profile) and 2r (above it): frictionless
+    contact is monotone in the profile (measured 7.65 < 70.3 < 116.2 at delta0 = 2, H = 1)."""
+    P = [tl.solve(tl.BondedLayer(0.3), tl.Punch.revolution(e), delta0=2.0, H=1.0, mu=1.0, model="direct",
+                  tol=1e-4).force for e in ("2*r", "max(r/2, 2*r - 3)", "r/2")]
+    assert P[0] < P[1] < P[2] and 0.3 < P[1] / P[2] < 0.9

@@ -1,5 +1,5 @@
-r"""Any thickness for the tips of revolution: the cone by one law from ``a/H -> 0`` to the thin layer, the other tips
-(exact sphere, blunted cone, power law) by the thick-layer series (T.9) where its estimate holds.
+r"""Any thickness for the tips of revolution: the cone by its table from ``a/H -> 0`` to the thin layer, every tip of
+revolution (exact sphere, blunted cone, power law, cone) by the equation (F.6) with its load (F.10)-(F.15).
 
 The cone (and every power law ``C r^n`` at fixed n) is self-similar: with ``c_0``, ``P_0`` the half-space (Sneddon)
 radius and force at the same depth (T.9; for the cone ``c_0 = (2/pi) delta0 tan(alpha)``, ``P_0 = (4/pi) vartheta
@@ -19,11 +19,14 @@ for every angle (``C`` scales out).  The law of one (nu, base):
   (stored with the table), 5 x the largest error near (chi, nu) (:func:`_measured`), at least 2e-6.  Measured
   worst: 9e-5 at nu = 0.4994, chi = 19.5 and 3e-5 at nu = 0.49999, chi = 13 (so the estimate exceeds 1e-4 there:
   near incompressibility beyond chi ~ 5); elsewhere below 1.5e-5.
-* beyond ``chi_max`` (the thin layer), and for bonded nu < 0.3, the law does not answer: ``solve(model="auto")``
-  goes on to the thin-layer tip law where its own estimate is within tol, else to the direct solver.
+* beyond ``chi_max`` (the thin layer), and for bonded nu < 0.3, the table does not answer.
 
-The exact sphere, the blunted cone and the other power laws are not tabulated: the thick-layer series (T.9) answers
-where its estimate is within ``tol`` (``c < 0.9 H``), the direct solver elsewhere.
+Every tip of revolution with a closed-form slope (the exact sphere, the blunted cone, the power laws, and the cone
+where its table does not answer or its estimate exceeds ``tol``): the thick-layer series (T.9) where its estimate is
+below :data:`SERIES_TRUSTED`, else the second-kind equation (F.6) with the tip's load solved at the depth
+(:func:`revolution_fields`, :mod:`thinlayer.numerics.revolution`, (F.10)-(F.15); ``c_0/H <= 30``, estimates
+~1e-12 measured against the direct solver).  Beyond, ``solve(model="auto")`` goes on to the direct solver (the
+thin-layer tip law, tried before, answers where its own estimate is within tol).
 """
 from __future__ import annotations
 
@@ -38,7 +41,7 @@ import numpy as np
 from .._checks import InputError, positive
 
 __all__ = ["CHI_SERIES", "TIPS_TABLE_PATH", "ConeLaw", "NotTabulatedError", "cone_law", "cone_law_from",
-           "numeric_tip", "tip_fields"]
+           "numeric_tip", "revolution_fields", "tip_fields"]
 
 TIPS_TABLE_PATH = Path(__file__).resolve().parent / "data" / "any_thickness_tips.npz"
 #: below this chi the thick-layer series (its estimate < 1e-15 there)
@@ -283,54 +286,107 @@ def tip_fields(layer: Any, tip: Any, delta0: Any, force: Any, H: float, mu: floa
                tol: float, pressure: Any) -> dict[str, Any]:
     """The any-thickness answer for a tip of revolution as the fields of an Indentation (the caller adds layer,
     punch and material); :class:`~thinlayer.contact.any_thickness.NotTabulatedError` where it does not answer.
+
+    In order: the cone's table (bonded ``0.3 <= nu <= 1/2`` or frictionless, within its chi and ``tol``); the
+    thick-layer series (T.9) where its estimate is below :data:`SERIES_TRUSTED` (and ``tol``); else the equation
+    (F.6) with the tip's load, solved at the depth (:func:`thinlayer.contact.revolution_law.revolution_fields`,
+    ``c_0/H <= 30``).
     """
+    answer = None
     tan_a = _cone_angle(tip)
     if tan_a is not None and (base == "frictionless" or NU_MIN <= nu <= 0.5):
-        law = cone_law(nu, base)
-        vt = mu / (1.0 - nu)
-
-        def at(d: float) -> tuple[float, float, float, float, float]:
-            c0 = 2.0 / math.pi * d * tan_a
-            chi = c0 / H
-            (Pr,), (cr,) = law.ratios(np.array([chi]))
-            (eP,), (ec,) = law.error_estimate(np.array([chi]))
-            return 4.0 / math.pi * vt * tan_a * d * d * Pr, c0 * cr, chi, eP, ec
-
-        top = law.chi_max * H * math.pi / 2 / tan_a  # the deepest delta0 the law covers
-        if force is not None:
-            from scipy import optimize
-
-            Pt = positive(force, "force")
-            if at(top)[0] < Pt:
-                raise NotTabulatedError(f"the force {Pt:.4g} needs chi = c_0/H > {law.chi_max:.3g}, beyond the cone's "
-                                        "any-thickness table (the thin layer)")
-            d0 = math.exp(optimize.brentq(lambda ld: math.log(at(math.exp(ld))[0] / Pt), math.log(top) - 80,
-                                          math.log(top), xtol=1e-15, rtol=1e-15))
-        else:
-            d0 = positive(delta0, "delta0")
-        if d0 > top * (1 + 1e-12):
-            raise NotTabulatedError(f"chi = c_0/H = {2 / math.pi * d0 * tan_a / H:.4g} is beyond the cone's "
-                                    f"any-thickness table (chi <= {law.chi_max:.3g}): the thin layer")
-        P, c, chi, eP, ec = at(min(d0, top))
-        P = P if force is None else positive(force, "force")
-        est = {"force": eP, "contact_area": 2 * ec, "contact_radius": ec}
-        why = (f"any-thickness law for the cone at chi = c_0/H = {chi:.4g} "
-               f"({'thick-layer series (T.9)' if chi <= CHI_SERIES else 'table of direct solutions'}; "
-               f"estimates force {eP:.2g}, radius {ec:.2g})")
-    else:
+        try:
+            answer = _cone_table_fields(tip, tan_a, delta0, force, H, mu, nu, base)
+        except NotTabulatedError:
+            answer = None
+        if answer is not None and max(answer[3].values()) > tol:
+            answer = None
+    if answer is None:
         from ..asymptotics.thick_tips import radial_thick_expansion
 
         ex = radial_thick_expansion(tip, SERIES_ORDER)
         try:
             v = ex.evaluate(layer, None if force is not None else delta0, H, mu, nu, force=force)
-        except ValueError as exc:
-            raise NotTabulatedError(f"{exc}") from None
-        d0, P, c = v.delta0, v.force, v.radius
-        est = {"force": v.force_error, "contact_area": 2 * v.radius_error, "contact_radius": v.radius_error}
-        why = f"thick-layer series (T.9) through (c/H)^{ex.order} at c/H = {v.eps:.4g}"
-        if force is not None:
-            P = positive(force, "force")
+            est = {"force": v.force_error, "contact_area": 2 * v.radius_error, "contact_radius": v.radius_error}
+            if max(est.values()) <= min(tol, SERIES_TRUSTED):
+                answer = (v.delta0, v.force if force is None else positive(force, "force"), v.radius, est,
+                          f"thick-layer series (T.9) through (c/H)^{ex.order} at c/H = {v.eps:.4g}")
+        except ValueError:
+            answer = None
+    if answer is None:
+        if base == "bonded" and not NU_MIN <= nu <= 0.5:
+            raise NotTabulatedError(f"the any-thickness equation (F.6) for tips is validated for bonded layers with "
+                                    f"{NU_MIN} <= nu <= 1/2 (and the frictionless base), got nu = {nu}")
+        f = revolution_fields(layer, tip, delta0, force, H, mu, nu, tol)
+        answer = (f["delta0"], f["force"], f["radius"], f["estimate"], f["reason"])
+    d0, P, c, est, why = answer
     if max(est.values()) > tol:
         raise NotTabulatedError(f"the any-thickness estimate {max(est.values()):.3g} exceeds tol = {tol:.3g}")
     return dict(delta0=d0, force=P, contact_area=math.pi * c * c, contact_radius=c, reason=why,
                 error_estimate=est, _pressure=pressure(d0, P, c), _extent=1.2 * c)
+
+
+#: the thick-layer series answers a tip that is not a cone where its estimate (T.8) is below this (else the equation)
+SERIES_TRUSTED = 1e-8
+
+
+def _cone_table_fields(tip: Any, tan_a: float, delta0: Any, force: Any, H: float, mu: float, nu: float,
+                       base: str) -> tuple:
+    """``(delta0, P, c, estimates, reason)`` from the cone's table; :class:`NotTabulatedError` beyond it."""
+    law = cone_law(nu, base)
+    vt = mu / (1.0 - nu)
+
+    def at(d: float) -> tuple[float, float, float, float, float]:
+        c0 = 2.0 / math.pi * d * tan_a
+        chi = c0 / H
+        (Pr,), (cr,) = law.ratios(np.array([chi]))
+        (eP,), (ec,) = law.error_estimate(np.array([chi]))
+        return 4.0 / math.pi * vt * tan_a * d * d * Pr, c0 * cr, chi, eP, ec
+
+    top = law.chi_max * H * math.pi / 2 / tan_a  # the deepest delta0 the law covers
+    if force is not None:
+        from scipy import optimize
+
+        Pt = positive(force, "force")
+        if at(top)[0] < Pt:
+            raise NotTabulatedError(f"the force {Pt:.4g} needs chi = c_0/H > {law.chi_max:.3g}, beyond the cone's "
+                                    "any-thickness table (the thin layer)")
+        d0 = math.exp(optimize.brentq(lambda ld: math.log(at(math.exp(ld))[0] / Pt), math.log(top) - 80,
+                                      math.log(top), xtol=1e-15, rtol=1e-15))
+    else:
+        d0 = positive(delta0, "delta0")
+    if d0 > top * (1 + 1e-12):
+        raise NotTabulatedError(f"chi = c_0/H = {2 / math.pi * d0 * tan_a / H:.4g} is beyond the cone's "
+                                f"any-thickness table (chi <= {law.chi_max:.3g}): the thin layer")
+    P, c, chi, eP, ec = at(min(d0, top))
+    P = P if force is None else positive(force, "force")
+    est = {"force": eP, "contact_area": 2 * ec, "contact_radius": ec}
+    why = (f"any-thickness law for the cone at chi = c_0/H = {chi:.4g} "
+           f"({'thick-layer series (T.9)' if chi <= CHI_SERIES else 'table of direct solutions'}; "
+           f"estimates force {eP:.2g}, radius {ec:.2g})")
+    return d0, P, c, est, why
+
+
+def revolution_fields(layer: Any, tip: Any, delta0: Any, force: Any, H: float, mu: float, nu: float,
+                      tol: float) -> dict[str, Any]:
+    """``delta0, force, contact radius`` and the estimates of a tip of revolution at one depth (or force) (F.13);
+    :class:`NotTabulatedError` beyond ``c_0/H = 30`` or where the estimate exceeds ``tol``.
+    """
+    from .._checks import WorkLimitError
+    from ..numerics.revolution import MAX_C0_OVER_H, revolution_contact
+
+    try:
+        res = revolution_contact(layer, tip, delta0, H, force=force, mu=mu,
+                                 nu=nu if layer.numeric_nu is None else None)
+    except WorkLimitError as exc:
+        raise NotTabulatedError(f"beyond the any-thickness equation's range (F.13), c_0/H <= {MAX_C0_OVER_H:g}: "
+                                f"{exc}") \
+            from None
+    est = {"force": res.force_error, "contact_area": 2 * res.radius_error, "contact_radius": res.radius_error}
+    if delta0 is None:
+        est["delta0"] = res.delta0_error
+    if max(est.values()) > tol:
+        raise NotTabulatedError(f"the any-thickness estimate {max(est.values()):.3g} exceeds tol = {tol:.3g}")
+    why = (f"any-thickness equation (F.6) with the tip's load (F.11)-(F.14) at c/H = {res.radius / H:.4g} "
+           f"({res.nodes} nodes; estimates force {res.force_error:.2g}, radius {res.radius_error:.2g})")
+    return {"delta0": res.delta0, "force": res.force, "radius": res.radius, "estimate": est, "reason": why}

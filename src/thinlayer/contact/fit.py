@@ -41,6 +41,7 @@ from .._checks import InputError, InputTypeError, check_array_size, check_choice
 from ..display import RichDisplay
 from ..errors import ComputationError, ValidityWarning, boundary, boundary_methods
 from .any_thickness import BASES, any_thickness_law
+from .guards import half_space, oriented_depths, regime_flags
 from .models import MODEL_REGISTRY, fit_names
 from .models.published import series_coefficients
 
@@ -94,6 +95,11 @@ class FitResult(RichDisplay):
         chi_max`` (for ``"any-thickness"``: the law's own estimate against the direct solver).
     validity : str
         Why the result is (not) valid, one line.
+    flags : tuple of str
+        The regime limits the data pass (:func:`thinlayer.contact.guards.regime_flags`: ``delta/H`` beyond small
+        strain, ``delta/R`` where the paraboloid departs from a sphere), one line each; empty when none.
+    depth_sign : int
+        ``1``, or ``-1`` when the depths were given as a tip position (negative into the sample) and flipped.
     """
 
     E: float
@@ -117,6 +123,8 @@ class FitResult(RichDisplay):
     model_error: float = 0.0
     validity: str = ""
     tip: Any = field(default=None, repr=False)
+    flags: tuple = ()
+    depth_sign: int = 1
     equation = "T.7"
 
     @property
@@ -143,21 +151,24 @@ class FitResult(RichDisplay):
         return self.E / (2 * (1 + self.nu))
 
     def predict(self, delta: Any) -> np.ndarray:
-        """The fitted model's force at the (raw, uncorrected) depths ``delta``."""
-        shape = _shape_function(self.model, self.tip if self.tip is not None else _paraboloid(self.R), self.nu,
-                                self.base)
-        P, _, _ = shape(np.asarray(delta, dtype=float) - self.offset, self.H)
+        """The fitted model's force at the depths ``delta`` (raw, uncorrected: times ``depth_sign`` as given)."""
+        tip = self.tip if self.tip is not None else _paraboloid(self.R)
+        shape = (_half_space_shape(self.R, self.nu) if math.isinf(self.H)
+                 else _shape_function(self.model, tip, self.nu, self.base))
+        P, _, _ = shape(self.depth_sign * np.asarray(delta, dtype=float) - self.offset, self.H)
         return self.E * P
 
     def as_dict(self) -> dict[str, Any]:
         """The numbers as a JSON-ready dictionary."""
         return {"model": self.model, "base": self.base, "nu": self.nu, "R": self.R if self.paraboloid else None,
                 "E": self.E, "E_se": self.E_se,
-                "H": self.H, "H_se": self.H_se, "offset": self.offset, "offset_se": self.offset_se,
+                "H": self.H if math.isfinite(self.H) else None, "H_se": self.H_se, "offset": self.offset,
+                "offset_se": self.offset_se,
                 "residual_rms": self.residual_rms, "n_points": self.n_points, "fitted": list(self.fitted),
                 "condition": self.condition, "chi_max": self.chi_max, "valid": self.valid,
                 "model_error": self.model_error, "validity": self.validity,
-                "tip": None if self.paraboloid else self.tip_words}
+                "tip": None if self.paraboloid else self.tip_words, "flags": list(self.flags),
+                "depth_sign": self.depth_sign}
 
     def text_lines(self) -> list[str]:
         """The lines of ``str(self)``."""
@@ -170,11 +181,14 @@ class FitResult(RichDisplay):
         lines.append(f"  E      = {self.E:.8g} +- {self.E_se:.2g}")
         if "H" in self.fitted:
             lines.append(f"  H      = {self.H:.8g} +- {self.H_se:.2g}")
+        elif math.isinf(self.H):
+            lines.append("  H      = inf (the half-space)")
         else:
             lines.append(f"  H      = {self.H:.8g} (given)")
         if "offset" in self.fitted:
             lines.append(f"  offset = {self.offset:.8g} +- {self.offset_se:.2g}")
         lines.append(f"  residual rms = {self.residual_rms:.4g}")
+        lines += [f"  FLAG: {f}" for f in self.flags]
         if self.model == "any-thickness" or not self.paraboloid:
             lines.append(f"  model error  = {100 * self.model_error:.2g} % (the law's own estimate, against the direct "
                          "solver)")
@@ -337,7 +351,7 @@ def _tip(punch: Any) -> tuple[Any, float]:
 @boundary
 def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5, base: str = "bonded", *,
         fit_H: bool = False, fit_offset: bool = False, model: str | None = None, E0: float | None = None,
-        sigma: Any = None) -> FitResult:
+        sigma: Any = None, depth_sign: int = 1) -> FitResult:
     r"""Estimate Young's modulus (and optionally H and the contact point) from a force-indentation curve.
 
     Parameters
@@ -348,8 +362,9 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
         The sphere radius ``R`` or ``Punch.paraboloid(R)``, or any tip with a force curve (``Punch.cone(70)``,
         ``Punch.sphere(R)``, ``Punch.blunted_cone(R, alpha)``, ``Punch.power_law(C, n)``, ...: the models
         ``"tip-law"`` and ``"direct"``, and any other model whose force curve takes the tip).
-    H : float
-        Layer thickness (the starting value when ``fit_H``).
+    H : float or None
+        Layer thickness (the starting value when ``fit_H``); ``None`` or ``inf``: the half-space (Hertz's law,
+        the paraboloid only in this version).
     nu : float
         Poisson ratio, ``-1 < nu <= 1/2``.
     base : str
@@ -366,6 +381,10 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
         Starting value of E (default: from the points by the model with the given H).
     sigma : array_like, optional
         Standard deviation of each force (weights ``1/sigma``); default equal weights.
+    depth_sign : int
+        ``1`` (default): ``delta`` is the depth, positive into the sample, the force growing with it; ``-1``:
+        ``delta`` is a tip position (nanite, afmformats: negative into the sample), flipped.  Depths that are all
+        ``<= 0`` or whose force falls as they grow are refused (:mod:`thinlayer.contact.guards`).
 
     Returns
     -------
@@ -375,7 +394,8 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     ------
     ValueError
         One line naming what is missing: fewer points than parameters plus one, no positive force, no point in
-        contact, or data that cannot separate the parameters (singular Jacobian).
+        contact, depths of the wrong sign (the convention in one sentence), or data that cannot separate the
+        parameters (singular Jacobian).
 
     Examples
     --------
@@ -388,8 +408,9 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     (3.0, True)
     """
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # checked below
-        res = _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma)
-    if not all(math.isfinite(v) for v in (res.E, res.E_se, res.H, res.H_se, res.offset, res.residual_rms)):
+        res = _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign)
+    if not all(math.isfinite(v) for v in (res.E, res.E_se, res.H_se, res.offset, res.residual_rms)) \
+            or math.isnan(res.H):
         raise ComputationError(f"fit(): the fitted numbers are not finite (E = {res.E!r}, E_se = {res.E_se!r}): the "
                                "data's numbers leave the double range; express depths and forces in other units")
     if res.valid is False:
@@ -397,21 +418,31 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     return res
 
 
-def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) -> FitResult:
+def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign) -> FitResult:
     d, f = _points(delta, force)
+    if sigma is not None:  # refused before any law is built (bounded work)
+        check_array_size(sigma, "sigma", MAX_POINTS, "one standard deviation per point")
+    d = oriented_depths(d, f, depth_sign)
     if punch is None:
         raise InputTypeError("fit() needs punch= (the sphere radius R, Punch.paraboloid(R) or another tip)")
     tip, R = _tip(punch)
-    if H is None:
-        raise InputTypeError("fit() needs H= (the layer thickness, or its starting value with fit_H=True)")
-    H0 = positive(H, "H")
+    halfspace = half_space(H)
+    if halfspace and fit_H:
+        raise InputTypeError("fit(fit_H=True) needs H= (the starting value of the thickness); H=None or inf is the "
+                             "half-space")
+    if halfspace and math.isnan(R):
+        raise InputError(f"fit(H=inf): the half-space is fitted for the paraboloid (Hertz) in this version, not the "
+                         f"{tip.name}; give a finite H")
+    H0 = math.inf if halfspace else positive(H, "H")
     check_choice(base, BASES, "base")
     if model is not None:
         check_choice(model, fit_names(), "model")
     if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not -1 < float(nu) <= 0.5:
         raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}")
     nu = float(nu)
-    if model is None:
+    if halfspace:  # every paraboloid model is Hertz's law at chi = 0
+        model = "hertz"
+    elif model is None:
         holds = curve_entries(tip, nu, base)
         model = "any-thickness" if "any-thickness" in holds or not holds else holds[0]
     names = ["E"] + (["H"] if fit_H else []) + (["offset"] if fit_offset else [])
@@ -422,12 +453,9 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
     if not np.any(f > 0):
         raise InputError("no positive force in the data: the curve carries no information on E (is the force "
                          "column right, and in contact?)")
-    if not np.any(d > 0):
-        raise InputError("no positive depth in the data: the tip never touches the layer")
     if sigma is None:
         w = np.ones_like(f)
     else:
-        check_array_size(sigma, "sigma", MAX_POINTS, "one standard deviation per point")
         try:
             s = np.broadcast_to(np.asarray(sigma, dtype=float), f.shape)
         except (TypeError, ValueError, OverflowError):
@@ -436,7 +464,7 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
         if not (np.all(np.isfinite(s)) and np.all(s > 0)):
             raise InputError("sigma must be positive and finite")
         w = 1.0 / s
-    shape = _shape_function(model, tip, nu, base)
+    shape = _half_space_shape(R, nu) if halfspace else _shape_function(model, tip, nu, base)
     P1, _, _ = shape(d, H0, slopes=False)
     if not np.any(P1 > 0):
         raise InputError("no point is in contact with the starting contact point: check the depth column")
@@ -502,13 +530,32 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma) 
     off_se = se[-1] if fit_offset else 0.0
     resid_force = (r * fscale / w)
     dmax = max(float(np.max(d - dc)), 0.0)
-    if math.isnan(R):
+    if halfspace:
+        chi_max, valid, err, why = 0.0, True, 0.0, "the half-space (H = inf): Hertz's law, the paraboloid's force"
+    elif math.isnan(R):
         chi_max, (valid, err, why) = _tip_validity(shape.curve(HH), d - dc, HH, model)
     else:
         chi_max = float(math.sqrt(R * dmax) / HH)
         valid, err, why = _validity(model, R, nu, base, HH, chi_max)
     return FitResult(E, E_se, HH, H_se, dc, off_se, float(np.sqrt(np.mean(resid_force**2))), resid_force, model,
-                     base, nu, R, int(d.size), tuple(names), cov, cond, chi_max, valid, err, why, tip)
+                     base, nu, R, int(d.size), tuple(names), cov, cond, chi_max, valid, err, why, tip,
+                     regime_flags(dmax, HH, None if math.isnan(R) else R), depth_sign)
+
+
+def _half_space_shape(R: float, nu: float):
+    """The half-space's ``g(delta, H, slopes)`` of :func:`_shape_function`: Hertz, ``(4/3) R^{1/2} delta^{3/2}/(1 -
+    nu^2)`` per unit E (H is ignored; the slope in H is zero).
+    """
+    K = 4.0 / 3.0 * math.sqrt(R) / (1.0 - nu * nu)
+
+    def g(delta: np.ndarray, H: float, slopes: bool = True):
+        pos = delta > 0
+        P = np.where(pos, K * np.where(pos, delta, 0.0) ** 1.5, 0.0)
+        if not slopes:
+            return P, None, None
+        return P, np.where(pos, 1.5, 0.0), np.zeros_like(P)
+
+    return g
 
 
 def _tip_validity(curve: Any, depths: np.ndarray, H: float, model: str) -> tuple[float, tuple[bool, float, str]]:

@@ -58,6 +58,9 @@ class Indentation(RichDisplay):
         Model-specific quantities (a copy of the mapping given), e.g. ``{"kappa": ...}`` for the flat punch (F.1).
     entry : Model or None
         The registry entry that gave the answer (:mod:`thinlayer.contact.models`; None: looked up by ``model``).
+    flags : tuple of str
+        The regime limits the problem passes (:func:`thinlayer.contact.guards.regime_flags`: ``delta0/H`` beyond
+        small strain, ``delta0/R`` where the paraboloid departs from a sphere), one line each.
     """
 
     equation: ClassVar[str] = "1.8"
@@ -81,6 +84,7 @@ class Indentation(RichDisplay):
     _extent: Any = field(repr=False)
     extras: Mapping[str, Any] = field(default_factory=dict, repr=False)
     entry: Any = field(default=None, repr=False, compare=False)
+    flags: tuple = field(default=(), repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "extras", dict(self.extras))  # a copy: the caller's mapping stays the caller's
@@ -162,6 +166,7 @@ class Indentation(RichDisplay):
         if self.semi_axes is not None:
             lines.append(f"  semi-axes         = {self.semi_axes[0]:.8g}, {self.semi_axes[1]:.8g}")
         lines.append(f"  model: {self.model} -- {self.reason}")
+        lines += [f"  FLAG: {f}" for f in self.flags]
         return lines
 
     @property
@@ -191,8 +196,9 @@ class Indentation(RichDisplay):
                 "contact_area": self.contact_area, "contact_radius": self.contact_radius,
                 "semi_axes": list(self.semi_axes) if self.semi_axes else None,
                 "max_pressure": self.max_pressure if math.isfinite(self.max_pressure) else None,
-                "H": self.H, "mu": self.mu, "E": self.E, "nu": self.nu, "H_over_a": self.H_over_a,
-                "error_estimate": dict(self.error_estimate), "tol": self.tol}
+                "H": self.H if math.isfinite(self.H) else None, "mu": self.mu, "E": self.E, "nu": self.nu,
+                "H_over_a": self.H_over_a if math.isfinite(self.H_over_a) else None,
+                "error_estimate": dict(self.error_estimate), "tol": self.tol, "flags": list(self.flags)}
 
 
 def tex_num(x: float) -> str:

@@ -35,6 +35,7 @@ linearly in the cell size).  ``model="asymptotic"`` refuses instead, naming each
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import numbers
 from typing import Any
@@ -45,6 +46,7 @@ from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import boundary
 from ..layers.kernels import LayerKernel
 from ..punch import Tip, is_polynomial_tip
+from .guards import half_space, regime_flags
 from .indentation import DirectComparison, Indentation
 from .indentation import tex_num as _tex_num  # noqa: F401 - the name tests and older callers import from here
 from .models import MODEL_REGISTRY, model_names, walk
@@ -77,7 +79,8 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     delta0, force : Any
         Exactly one: the indentation depth, or the total force (the depth is then found).
     H : Any
-        Layer thickness.
+        Layer thickness; ``None`` or ``inf``: the half-space (Hertz, the paraboloid:
+        :mod:`thinlayer.contact.half_space`).
     mu, E : Any
         Exactly one: the shear modulus, or Young's modulus ``E = 2 mu (1 + nu)``.
     nu : Any
@@ -109,7 +112,8 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     Indentation
         ``force``, ``contact_area``, ``contact_radius`` (axisymmetric), ``semi_axes`` (ellipses),
         ``pressure(x1, x2)``, ``max_pressure``, ``model``, ``reason``, ``error_estimate``,
-        ``compare_direct()``.
+        ``compare_direct()``, ``flags`` (``delta0/H`` beyond small strain, ``delta0/R`` where the paraboloid departs
+        from a sphere: :mod:`thinlayer.contact.guards`).
 
     Raises
     ------
@@ -142,9 +146,10 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     material = Elastic.from_moduli(mu, E, nu_v)
     adhesive = work_of_adhesion is not None
     choice = check_choice(model, adhesive_model_names() if adhesive else model_names(), "model")
-    if H is None:
-        raise InputTypeError("solve() needs the layer thickness H")
-    HH = positive(H, "H")
+    HH = math.inf if half_space(H) else positive(H, "H")
+    if adhesive and math.isinf(HH):
+        raise InputError("solve(work_of_adhesion=...) answers for a layer of finite thickness H; the half-space "
+                         "JKR law is thinlayer.asymptotics.adhesion.half_space_jkr()")
     tol_v = _tol(tol)
     if (delta0 is None) == (force is None):
         raise InputTypeError("give exactly one of delta0 (indentation) and force (the inverse problem)")
@@ -169,8 +174,17 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         tip = numeric_punch(punch, parameters)
     if layer.numeric_nu is None or layer.incompressible_at(nu_v):  # a frictionless base's nu; bonded at nu = 1/2
         layer = layer.with_nu(nu_v)
-    problem = Problem(layer, tip, material, interaction, loading, HH, tol_v, n, dict(options))
-    return walk(problem, choice)
+    if adhesive:  # JKR: the adhesive rows of the registry (the regime flags are for the non-adhesive laws)
+        return walk(Problem(layer, tip, material, interaction, loading, HH, tol_v, n, dict(options)), choice)
+    if math.isinf(HH):
+        from .half_space import half_space_answer
+
+        ans = half_space_answer(layer, tip, getattr(loading, "delta0", None), getattr(loading, "force", None),
+                                material.mu, nu_v, tol_v)
+    else:
+        ans = walk(Problem(layer, tip, material, Frictionless(), loading, HH, tol_v, n, dict(options)), choice)
+    flags = regime_flags(ans.delta0, HH, getattr(tip, "sphere_radius", None))
+    return dataclasses.replace(ans, flags=flags) if flags else ans
 
 
 def _check_model_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:

@@ -341,7 +341,7 @@ def _paraboloid_radii(punch) -> tuple | None:
 
 #: what ``thinlayer codegen`` generates (the choices of RESULT)
 CODEGEN_RESULTS = ("inner", "force", "coefficients", "composite", "incompressible", "two-term", "any-thickness",
-                   "flat-punch")
+                   "flat-punch", "nanite")
 #: the languages of the codegen registry, :data:`thinlayer.export.codegen.LANGUAGES`: written out so that building
 #: the parser imports no sympy printer (``thinlayer --help`` stays fast); a test keeps them equal
 LANGUAGES = ("c", "fortran", "rust", "julia", "octave", "python")
@@ -406,6 +406,10 @@ def _cmd_codegen(args) -> int:
 
     if args.result == "any-thickness" or (args.result == "flat-punch" and args.law == "any-thickness"):
         return _cmd_codegen_any_thickness(args)
+    if args.result == "nanite":
+        from .nanite_codegen import cmd_codegen_nanite
+
+        return cmd_codegen_nanite(args)
 
     langs = list(LANGUAGES) if args.lang == "all" else [x.strip() for x in args.lang.split(",") if x.strip()]
     bad = [x for x in langs if x not in (*LANGUAGES, "matlab")]
@@ -516,7 +520,9 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                                    "the sphere (I.11),\nthe elliptic paraboloid (I.6)-(I.8), an axisymmetric punch "
                                    "(I.9)), 'two-term' (the sphere near nu = 1/2 (I.11);\nBessel functions: Julia "
                                    "and Octave), 'any-thickness' (the sphere at any H/a (T.7), one nu: numpy module "
-                                   "or C), 'flat-punch' (kappa(a/H) of a flat punch, --law thin|thick, one nu).\n"
+                                   "or C), 'flat-punch' (kappa(a/H) of a flat punch, --law thin|thick, one nu),\n"
+                                   "'nanite' (a standalone nanite model module of the sphere at any thickness, one nu "
+                                   "and base).\n"
                                    "Without --out the code is printed. JSON keys: a list of "
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
                        epilog="examples:\n  thinlayer codegen inner --tip elliptic_paraboloid --nu 3/10 --lang c\n"
@@ -527,7 +533,8 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                               "--delta0 0.25 --H 0.02 --lang python\n"
                               "  thinlayer codegen incompressible --tip elliptic_paraboloid --lang c,python\n"
                               "  thinlayer codegen two-term --tip paraboloid --nu 0.45 --lang julia\n"
-                              "  thinlayer codegen any-thickness --nu 0.45 --lang python,c --out gen")
+                              "  thinlayer codegen any-thickness --nu 0.45 --lang python,c --out gen\n"
+                              "  thinlayer codegen nanite --tip sphere --base frictionless --nu 0.45 --out gen")
     g.add_argument("result", choices=CODEGEN_RESULTS, help="what to generate")
     g.add_argument("--law", choices=("thin", "thick", "any-thickness"), default="thin",
                    help="flat-punch: the thin-layer law (F.12)-(F.16), the thick series (F.18), or the exact kappa "

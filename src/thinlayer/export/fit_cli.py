@@ -2,10 +2,11 @@
 
 :func:`add_fit_parser` adds the subcommand to the ``thinlayer`` parser, :func:`cmd_fit` runs it.  The CSV has
 a depth column and a force column (default the first two; ``--columns`` picks others, by index or header
-name); a header row, blank lines and ``#`` comments are skipped; comma, semicolon, tab or blanks separate the
-fields.  Every value is parsed as a finite number (never evaluated): a bad cell is a one-line error naming its
-row and column.  The result goes to stdout (text, or ``--json``), and with ``--out FILE`` to a file, which is
-never replaced unless ``--overwrite`` is given.
+name; the depth is positive into the sample, ``--depth-sign -1`` flips a tip position, negative into it); a
+header row, blank lines and ``#`` comments are skipped; comma, semicolon, tab or blanks separate the fields.
+Every value is parsed as a finite number (never evaluated): a bad cell is a one-line error naming its row and
+column.  ``--H`` omitted or ``inf`` is the half-space (Hertz).  The result goes to stdout (text, or ``--json``),
+and with ``--out FILE`` to a file, which is never replaced unless ``--overwrite`` is given.
 """
 from __future__ import annotations
 
@@ -113,7 +114,9 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
                     "a layer (thinlayer.fit): a sphere (--R, the paraboloid of radius R; any thickness) or another\n"
                     "tip (--cone, --sphere, --blunted-cone, --power-law, --pyramid, --tip; the tip-law and direct "
                     "models).\nJSON keys: file, model, base, nu, R (null for a tip other than the paraboloid), tip, "
-                    "E, E_se,\nH, H_se, offset, offset_se, residual_rms, n_points, fitted, condition, chi_max.",
+                    "E, E_se,\nH (null: the half-space), H_se, offset, offset_se, residual_rms, n_points, fitted, "
+                    "condition, chi_max, flags\n(regime limits passed: delta/H beyond small strain, delta/R), "
+                    "depth_sign.",
         epilog="examples:\n  thinlayer fit curve.csv --R 5e-6 --H 3e-6 --nu 0.5 --json\n"
                "  thinlayer fit curve.csv --columns depth,force --R 10 --H 2 --nu 0.3 --fit-offset --model hertz\n"
                "  thinlayer fit curve.csv --cone 70 --H 0.2 --nu 0.3\n"
@@ -122,7 +125,12 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
     s.add_argument("--R", type=finite, help="radius (> 0) of the sphere as a paraboloid r^2/(2R); or one tip below")
     s.add_argument("--tip", metavar="KIND:key=value,...", help="a tip of thinlayer.punch.TIPS with its values, e.g. "
                    "cone:half_angle=70, sphere:R=10")
-    s.add_argument("--H", type=finite, required=True, help="layer thickness (> 0; the starting value with --fit-H)")
+    s.add_argument("--H", type=_thickness, default=None,
+                   help="layer thickness (> 0; the starting value with --fit-H); omitted or inf: the half-space "
+                        "(Hertz)")
+    s.add_argument("--depth-sign", type=int, choices=(1, -1), default=1,
+                   help="1 (default): the depth column is positive into the sample; -1: it is a tip position "
+                        "(nanite, afmformats: negative into the sample), flipped")
     s.add_argument("--nu", type=finite, required=True, help="Poisson ratio in (-1, 1/2]")
     s.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
                    help="the base under the layer (default bonded)")
@@ -146,6 +154,11 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
 #: fit()'s models (the registry's entries with a force curve for fitting, by preference), written out so that
 #: building the parser imports no scipy; a test keeps them equal to :data:`thinlayer.contact.fit.FIT_MODELS`
 FIT_MODEL_CHOICES = ("tip-law", "any-thickness", "direct", "hertz", "dimitriadis2002", "garcia2018")
+
+
+def _thickness(text: str) -> float:
+    """``--H``: a finite number, or ``inf`` (the half-space)."""
+    return math.inf if text.strip().lower() in ("inf", "+inf", "infinity") else finite(text)
 
 
 def _fit_tip(args: argparse.Namespace):
@@ -182,7 +195,7 @@ def cmd_fit(args: argparse.Namespace) -> int:
     with warnings.catch_warnings():  # a fit outside its model's range: the output says NOT VALID and why
         warnings.simplefilter("ignore", ValidityWarning)
         res = fit(delta, force, punch=punch, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
-                  fit_offset=args.fit_offset, model=args.model)
+                  fit_offset=args.fit_offset, model=args.model, depth_sign=args.depth_sign)
     out = {"file": str(args.csv), **res.as_dict()}
     bad = [k for k, v in out.items() if isinstance(v, float) and not math.isfinite(v)]
     if bad:

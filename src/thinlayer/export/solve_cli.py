@@ -288,6 +288,7 @@ def text_lines(ans: Any, base: str, given: str, verbose: bool = False, punch_lin
     elif tried:
         lines.append(f"  ({len(tried)} model{'s' if len(tried) > 1 else ''} tried before it: --verbose says why "
                      "each was rejected)")
+    lines += [f"FLAG: {pretty(cli_words(f))}" for f in ans.flags]
     return [ln.rstrip() for ln in lines]
 
 
@@ -303,9 +304,10 @@ def _row(ans: Any, base: str, detail: bool, max_pressure: bool = True) -> dict[s
     else:
         out = {"model": ans.model, "reason": ans.reason, "force": ans.force, "delta0": ans.delta0,
                "contact_area": ans.contact_area, "contact_radius": ans.contact_radius,
-               "semi_axes": list(ans.semi_axes) if ans.semi_axes else None, "max_pressure": None, "H": ans.H,
-               "mu": ans.mu, "E": ans.E, "nu": ans.nu, "H_over_a": ans.H_over_a,
-               "error_estimate": dict(ans.error_estimate), "tol": ans.tol}
+               "semi_axes": list(ans.semi_axes) if ans.semi_axes else None, "max_pressure": None,
+               "H": ans.H if math.isfinite(ans.H) else None, "mu": ans.mu, "E": ans.E, "nu": ans.nu,
+               "H_over_a": ans.H_over_a if math.isfinite(ans.H_over_a) else None,
+               "error_estimate": dict(ans.error_estimate), "tol": ans.tol, "flags": list(ans.flags)}
     out["layer"] = base
     if detail and ans.model == "compressible":  # the expansion's own terms (1.8), (3.25)
         sol = ans.detail
@@ -390,8 +392,8 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                "  thinlayer solve --nu 0.3 --sphere 10 --delta0 0.3 --H 0.1 --mu 1")
     base_arg(s, "the base under the layer: bonded (default) or frictionless", old="--layer")
     s.add_argument("--nu", required=True, help="Poisson ratio in (-1, 1/2]: a number or an exact fraction")
-    s.add_argument("--H", type=parse_values, required=True,
-                   help="layer thickness (> 0), or a sweep START:STOP:COUNT or A,B,C")
+    s.add_argument("--H", type=_thickness, required=True,
+                   help="layer thickness (> 0), or a sweep START:STOP:COUNT or A,B,C; inf: the half-space (Hertz)")
     s.add_argument("--mu", type=_finite, default=None, help="shear modulus (> 0); or give --E")
     s.add_argument("--E", type=_finite, default=None, help="Young's modulus (> 0); or give --mu")
     s.add_argument("--delta0", type=parse_values, help="indentation (> 0), or a sweep START:STOP:COUNT or A,B,C")
@@ -427,6 +429,11 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
     s.add_argument("--latex", action="store_true", help="print the LaTeX of the result (one value only)")
     s.set_defaults(func=cmd_solve)
     return s
+
+
+def _thickness(text: str) -> float | list[float]:
+    """``--H``: :func:`parse_values`, or ``inf`` (the half-space)."""
+    return math.inf if text.strip().lower() in ("inf", "+inf", "infinity") else parse_values(text)
 
 
 def _finite(text: str) -> float:

@@ -86,6 +86,8 @@ needs ``n ~ 4 lambda + 60`` (limited to ``lambda <= 60``).
 The error estimate is the change against a run with ``0.7 n`` nodes.  The two methods agree with each other and
 with the Galerkin solver of :mod:`thinlayer.numerics.axisymmetric` (pressure basis, no Abel reduction) to 1e-10
 (tests).
+
+A punch of revolution with the same kernel: :mod:`thinlayer.numerics.revolution` (F.10)-(F.15).
 """
 from __future__ import annotations
 
@@ -104,8 +106,9 @@ from ._layer import U_MAX, numeric_layer_nu
 
 special = lazy_module("scipy.special")  # scipy imported on first use
 
-__all__ = ["MAX_A_OVER_H", "METHODS", "FlatPunchContact", "FlatPunchStiffness", "check_numeric_layer",
-           "default_nodes", "even_bessel_transforms", "flat_punch_kappa", "solve_flat_punch"]
+__all__ = ["CHUNK", "MAX_A_OVER_H", "MAX_NODES", "METHODS", "FlatPunchContact", "FlatPunchStiffness", "check_nodes",
+           "check_numeric_layer", "collocation_operator", "default_nodes", "even_bessel_transforms", "flat_punch_kappa",
+           "kernel_quadrature", "rounding_floor", "solve_flat_punch"]
 
 #: Largest a/H accepted.  Measured (default nodes, with the error estimate, nu = 0.3 and 1/2): a/H = 20 takes
 #: 0.01 s, a/H = 50 0.02 s, a/H = 200 0.12 s (0.7 s on a loaded machine; the t-rule has 1.1e4 nodes there).
@@ -119,6 +122,8 @@ METHODS = ("collocation", "nystrom")
 _GAUSS = 16
 _PANEL = 2 * math.pi
 _CHUNK = 4096
+#: t-nodes per chunk of the kernel sums
+CHUNK = _CHUNK
 
 
 # --------------------------------------------------------------------------- results
@@ -351,19 +356,46 @@ def _nodes(n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 # --------------------------------------------------------------------------- the two methods
-def _collocation(layer: LayerKernel, lam: float, n: int) -> tuple[float, np.ndarray]:
-    """``(kappa, a)``: (F.6) collocated at n nodes, ``f = sum_m a_m P_2m`` (module docstring)."""
+def collocation_operator(layer: LayerKernel, lam: float,
+                         n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``(y, T, I - B T, E)``: the nodes, the values-to-Legendre map, the collocated operator ``1 - k`` of (F.6) and
+    the edge row ``E_m = (k P_2m)(1)`` (Sloan's iterate at ``x = 1``).
+    """
     y, w = _nodes(n)
     m = np.arange(n)
     T = (4 * m[:, None] + 1) * special.eval_legendre(2 * m[:, None], y[None, :]) * w[None, :]
     t, wt = _t_rule(layer, lam)
     B = np.zeros((n, n))
+    E = np.zeros(n)
     for s in range(0, t.size, _CHUNK):
         tt, ww = t[s:s + _CHUNK], wt[s:s + _CHUNK]
-        B += (np.cos(np.outer(y, tt)) * ww) @ even_bessel_transforms(tt, n)
-    f = np.linalg.solve(np.eye(n) - B @ T, np.ones(n))
+        J = even_bessel_transforms(tt, n)
+        B += (np.cos(np.outer(y, tt)) * ww) @ J
+        E += (np.cos(tt) * ww) @ J
+    return y, T, np.eye(n) - B @ T, E
+
+
+def _collocation(layer: LayerKernel, lam: float, n: int) -> tuple[float, np.ndarray]:
+    """``(kappa, a)``: (F.6) collocated at n nodes, ``f = sum_m a_m P_2m`` (module docstring)."""
+    _, T, M, _ = collocation_operator(layer, lam, n)
+    f = np.linalg.solve(M, np.ones(n))
     a = T @ f
     return float(a[0]), a
+
+
+def kernel_quadrature(layer: LayerKernel, lam: float) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes ``t_k`` and weights ``(2/pi) W_k (1 - L(t_k/lambda))`` of the kernel's t-integral (F.6), cached."""
+    return _t_rule(layer, lam)
+
+
+def rounding_floor(layer: LayerKernel, lam: float) -> float:
+    """The collocation's relative rounding floor (:func:`_rounding_floor`)."""
+    return _rounding_floor(layer, lam)
+
+
+def check_nodes(n: Any) -> int | None:
+    """``n`` checked (4 <= n <= 400) or None."""
+    return _check_nodes(n)
 
 
 def _rounding_floor(layer: LayerKernel, lam: float) -> float:

@@ -15,6 +15,7 @@ from . import (  # noqa: F401,E501 - they register
     incompressible,
     published,
     pyramid_law,
+    pyramid_thick,
     tip_law,
     two_term,
 )

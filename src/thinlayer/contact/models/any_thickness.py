@@ -1,7 +1,8 @@
 r"""The any-thickness model (preference 60): the sphere at any ``H/a`` by the law (T.7), the cone by its law (T.9)
 (:mod:`thinlayer.contact.any_thickness_tips`; bonded ``0.3 <= nu <= 1/2`` or frictionless, ``chi = c_0/H`` up to the
-table's end), another axisymmetric punch or tip of revolution by the thick-layer series (T.5), (T.9) where its
-estimate (T.8) is within ``tol``
+table's end), every tip of revolution (exact sphere, blunted cone, power law) by the equation (F.6) with its load
+(F.10)-(F.15) solved at the depth (``c_0/H <= 30``), another axisymmetric punch by the thick-layer series (T.5)
+where its estimate (T.8) is within ``tol``
 (:mod:`thinlayer.contact.any_thickness`).  ``model="auto"`` tries it for axisymmetric punches after the
 thin-layer models and before the direct solver.
 """

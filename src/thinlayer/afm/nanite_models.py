@@ -1,0 +1,193 @@
+r"""thinlayer's any-thickness laws as nanite fit models (issue 25 item 1): nanite scripts and PyJibe list them.
+
+nanite's documented custom-model interface (nanite docs, "Writing model functions") is a module with
+``get_parameter_defaults()`` (lmfit ``Parameters``), the model function ``model_func(delta, *parameter_keys)``,
+``model_doc``, ``model_key``, ``model_name``, ``parameter_keys``/``names``/``units`` and ``valid_axes_x =
+["tip position"]`` (negative into the sample: the indentation is ``contact_point - delta``), registered with
+``nanite.model.register_model(module)``.  :func:`model_module` builds one such module per (tip, base);
+:func:`register` registers them all::
+
+    import nanite
+    from thinlayer.afm.nanite_models import register
+    register()                       # thinlayer_para_bonded, thinlayer_cone_frictionless, ...
+    idnt.fit_model(model_key="thinlayer_para_bonded", params_initial=params)
+
+PyJibe loads model *files* (Preferences, through ``nanite.model.load_model_from_file``): write one with
+``thinlayer codegen nanite --tip sphere --base bonded --nu 0.5 --out DIR`` (standalone: numpy only) and load it.
+
+The models (parameters ``E`` [Pa], the tip's size, ``nu`` (fixed), ``H`` [m] (fixed by default; free with
+``params["H"].vary = True``; ``inf``: the half-space), ``contact_point`` [m], ``baseline`` [N]):
+
+========================  ==========================================================================================
+``thinlayer_para_<base>``  paraboloid of radius ``R``: (T.7), ``thinlayer.contact.any_thickness.force_any_thickness``
+                           (every ``chi = sqrt(R delta)/H``; estimate <= 2.1e-4 against the direct solver); ``H =
+                           inf``: Hertz, ``(4/3) E/(1 - nu^2) R^{1/2} delta^{3/2}``, nanite's ``hertz_para``
+``thinlayer_cone_<base>``  cone of half-angle ``alpha`` [deg]: (T.9), ``contact.any_thickness_tips.cone_law``
+                           (bonded ``0.3 <= nu <= 1/2`` or frictionless; ``chi = c_0/H <= chi_max`` ~ 21, beyond it
+                           the law refuses: the thin layer, give thinlayer.fit's tip-law or direct model); ``H =
+                           inf``: Sneddon, ``(2/pi) tan(alpha) E/(1 - nu^2) delta^2``, nanite's ``hertz_cone``
+``thinlayer_flat_<base>``  flat-ended cylinder of radius ``a``: ``P = 2 E a delta kappa(a/H)/(1 - nu^2)`` (F.1),
+                           :func:`thinlayer.contact.flat_punch.flat_punch_stiffness` (exact); ``H = inf``: ``kappa =
+                           1`` (Sneddon's flat punch; nanite has no flat-punch model)
+========================  ==========================================================================================
+
+Not provided: the pyramid (nanite's ``hertz_pyr3s``) -- thinlayer has its thin-layer law (tip law) but no law that
+holds at every thickness yet (issue 24); the exact sphere at finite thickness (the paraboloid is the sphere to
+``delta/(10 R)`` in force, :mod:`thinlayer.contact.guards`).  A force outside a law's table is refused (one line),
+never extrapolated.
+"""
+from __future__ import annotations
+
+import math
+import types
+from functools import lru_cache
+from typing import Any
+
+import numpy as np
+
+__all__ = ["BASES", "TIPS", "model_keys", "model_module", "paraboloid_force", "cone_force", "flat_force",
+           "register"]
+
+#: the tips: key -> (size parameter, its name, unit, default value)
+TIPS = {"para": ("R", "Tip Radius", "m", 10e-6), "cone": ("alpha", "Half Cone Angle", "°", 25.0),
+        "flat": ("a", "Punch Radius", "m", 10e-6)}
+BASES = ("bonded", "frictionless")
+_WORDS = {"para": "paraboloidal indenter", "cone": "conical indenter", "flat": "flat cylindrical punch"}
+
+
+def paraboloid_force(indentation: Any, E: float, R: float, nu: float, H: float, base: str = "bonded") -> np.ndarray:
+    """Force of the paraboloid ``R`` at ``indentation`` (zero where ``<= 0``) on a layer ``H`` (``inf``: Hertz)."""
+    ind = np.asarray(indentation, dtype=float)
+    if math.isinf(H):  # Hertz, written as nanite's hertz_para writes it (the same floating-point operations)
+        pos = ind > 0
+        bb = np.zeros_like(ind)
+        bb[pos] = ind[pos] ** (3 / 2)
+        return 4 / 3 * E / (1 - nu ** 2) * np.sqrt(R) * bb
+    from ..contact.any_thickness import force_any_thickness
+
+    return E * force_any_thickness(ind, R, H, E=1.0, nu=nu, base=base)  # linear in E: E = 0 is a force of 0
+
+
+def cone_force(indentation: Any, E: float, alpha: float, nu: float, H: float, base: str = "bonded") -> np.ndarray:
+    """Force of the cone of half-angle ``alpha`` (degrees) at ``indentation`` on a layer ``H`` (``inf``: Sneddon)."""
+    ind = np.asarray(indentation, dtype=float)
+    pos = ind > 0
+    bb = np.zeros_like(ind)
+    bb[pos] = ind[pos] ** 2
+    tan = np.tan(alpha * math.pi / 180)
+    P0 = 2 * tan / math.pi * E / (1 - nu ** 2) * bb  # Sneddon (T.9), as nanite's hertz_cone writes it
+    if math.isinf(H) or not pos.any():
+        return P0
+    chi = 2 / math.pi * ind[pos] * tan / H  # c_0/H, c_0 = (2/pi) delta tan(alpha)
+    ratio = np.ones_like(ind)
+    ratio[pos] = _cone_law(float(nu), base).ratios(chi)[0]
+    return P0 * ratio
+
+
+def flat_force(indentation: Any, E: float, a: float, nu: float, H: float, base: str = "bonded") -> np.ndarray:
+    """Force of the flat-ended cylinder of radius ``a`` at ``indentation`` on a layer ``H`` (``inf``: Sneddon)."""
+    ind = np.asarray(indentation, dtype=float)
+    kappa = 1.0 if math.isinf(H) else _kappa(float(nu), base, float(a) / float(H))
+    return np.where(ind > 0, 2 * E * a / (1 - nu ** 2) * kappa * ind, 0.0)
+
+
+@lru_cache(maxsize=16)
+def _cone_law(nu: float, base: str):
+    from ..contact.any_thickness_tips import cone_law
+
+    return cone_law(nu, base)
+
+
+@lru_cache(maxsize=256)
+def _kappa(nu: float, base: str, a_over_H: float) -> float:
+    from ..contact.flat_punch import flat_punch_stiffness
+    from ..layers.kernels import BondedLayer, FrictionlessLayer, IncompressibleLayer
+
+    layer = (FrictionlessLayer(nu) if base == "frictionless" else IncompressibleLayer() if nu == 0.5
+             else BondedLayer(nu))
+    return float(flat_punch_stiffness(layer, a_over_H))
+
+
+_FORCES = {"para": paraboloid_force, "cone": cone_force, "flat": flat_force}
+
+
+def model_keys() -> list[str]:
+    """The nanite keys of the models: ``thinlayer_<tip>_<base>``."""
+    return [f"thinlayer_{t}_{b}" for t in TIPS for b in BASES]
+
+
+def model_module(tip: str, base: str) -> types.ModuleType:
+    """The nanite model module of one tip (``"para"``, ``"cone"``, ``"flat"``) and base, as nanite's
+    ``model_hertz_paraboloidal`` is written: register it with ``nanite.model.register_model``.
+    """
+    from .._checks import check_choice
+
+    check_choice(tip, tuple(TIPS), "tip")
+    check_choice(base, BASES, "base")
+    size, size_name, size_unit, size_default = TIPS[tip]
+    force = _FORCES[tip]
+    key = f"thinlayer_{tip}_{base}"
+
+    def get_parameter_defaults():
+        """Return the default model parameters (nanite's order: that of ``parameter_keys``)."""
+        import lmfit
+
+        params = lmfit.Parameters()
+        params.add("E", value=3e3, min=0)
+        if tip == "cone":
+            params.add(size, value=size_default, min=0, max=90, vary=False)
+        else:
+            params.add(size, value=size_default, min=0, vary=False)
+        params.add("nu", value=.5, min=0, max=0.5, vary=False)
+        params.add("H", value=10e-6, min=0, vary=False)
+        params.add("contact_point", value=0)
+        params.add("baseline", value=0)
+        return params
+
+    func = _model_function(tip, base)
+    func.__doc__ = (f"{_WORDS[tip].capitalize()} on a layer of thickness H on a {base} rigid base, any thickness "
+                    f"(thinlayer).\n\n{force.__doc__}\n\nParameters: delta (tip position, negative into the sample) "
+                    f"[m], E [Pa], {size} [{size_unit}], nu, H [m] (inf: the half-space), contact_point [m], "
+                    "baseline [N].  Returns the force [N].")
+    mod = types.ModuleType(f"thinlayer.afm.nanite_models.{key}", func.__doc__)
+    mod.get_parameter_defaults = get_parameter_defaults
+    mod.model_func = func
+    mod.model_doc = func.__doc__
+    mod.model_key = key
+    mod.model_name = f"{_WORDS[tip]}, {base} layer, any thickness (thinlayer)"
+    mod.parameter_keys = ["E", size, "nu", "H", "contact_point", "baseline"]
+    mod.parameter_names = ["Young's Modulus", size_name, "Poisson's Ratio", "Layer Thickness", "Contact Point",
+                           "Force Baseline"]
+    mod.parameter_units = ["Pa", size_unit, "", "m", "m", "N"]
+    mod.valid_axes_x = ["tip position"]
+    mod.valid_axes_y = ["force"]
+    return mod
+
+
+def _model_function(tip: str, base: str):
+    """The model function of nanite's convention: ``f(delta, E, <size>, nu, H, contact_point=0, baseline=0)``."""
+    if tip == "para":
+        def thinlayer_para(delta, E, R, nu, H, contact_point=0, baseline=0):
+            return paraboloid_force(contact_point - np.asarray(delta, dtype=float), E, R, nu, H, base) + baseline
+        return thinlayer_para
+    if tip == "cone":
+        def thinlayer_cone(delta, E, alpha, nu, H, contact_point=0, baseline=0):
+            return cone_force(contact_point - np.asarray(delta, dtype=float), E, alpha, nu, H, base) + baseline
+        return thinlayer_cone
+
+    def thinlayer_flat(delta, E, a, nu, H, contact_point=0, baseline=0):
+        return flat_force(contact_point - np.asarray(delta, dtype=float), E, a, nu, H, base) + baseline
+    return thinlayer_flat
+
+
+def register(keys: list[str] | None = None) -> list[Any]:
+    """Register the models with nanite (all, or those of ``keys``); returns nanite's ``NaniteFitModel`` objects."""
+    from nanite.model import register_model
+
+    wanted = model_keys() if keys is None else list(keys)
+    bad = [k for k in wanted if k not in model_keys()]
+    if bad:
+        from .._checks import InputError
+
+        raise InputError(f"unknown thinlayer nanite model {bad[0]!r}; the models: {', '.join(model_keys())}")
+    return [register_model(model_module(*k.split("_")[1:])) for k in wanted]
