@@ -25,7 +25,7 @@ import time
 
 from _timing import Row, main
 
-SOLVE = ["solve", "--nu", "0.3", "--kind", "paraboloid", "--param", "R=10", "--delta0", "0.1", "--H", "0.05",
+SOLVE = ["solve", "--nu", "0.3", "--tip", "paraboloid:R=10", "--delta0", "0.1", "--H", "0.05",
          "--mu", "1"]
 FIRST = """
 import time, sys
