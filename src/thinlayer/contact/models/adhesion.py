@@ -16,6 +16,9 @@ from typing import Any
 
 from ..._lazy import lazy_function
 from ...asymptotics.solution import ValidityError
+from ..adhesion import AdhesiveIndentation, NoContactError, PullOff, jkr_radius, relative_estimates, slope
+from ..problem import Problem
+from .base import Model, register_model
 
 # sympy (the law) and scipy (the direct solver) load when an adhesive problem is solved, not at import: a numeric
 # solve() of a paraboloid imports neither (issue 28 item 6, tests/contact/test_cold_start.py)
@@ -23,9 +26,6 @@ thin_layer_jkr = lazy_function("thinlayer.asymptotics.adhesion", "thin_layer_jkr
 adhesive_state = lazy_function("thinlayer.numerics.adhesion", "adhesive_state")
 flat_punch_detachment = lazy_function("thinlayer.numerics.adhesion", "flat_punch_detachment")
 jkr_curve = lazy_function("thinlayer.numerics.adhesion", "jkr_curve")
-from ..adhesion import AdhesiveIndentation, NoContactError, PullOff, jkr_radius, relative_estimates, slope
-from ..problem import Problem
-from .base import Model, register_model
 
 __all__ = ["DirectJKRModel", "ThinLayerJKRModel"]
 
