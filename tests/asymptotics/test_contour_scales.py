@@ -50,9 +50,13 @@ def test_uniform_scales(k):
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(kc=st.integers(-30, 30), kd=st.integers(-30, 30), lr=st.floats(0.0, 3.0),
-       theta=st.floats(0.0, math.pi))
+       theta=st.one_of(st.just(0.0), st.floats(1e-200, math.pi)))
 def test_ellipse_scales_and_aspect(kc, kd, lr, theta):
     """Coefficient scale 10^kc, delta0 = 10^kd, aspect ratio r = 10^lr in [1, 1e3], any rotation.
+
+    (A rotation below 1e-200 rad, e.g. the subnormal 2.2e-309 hypothesis found, gives a cross coefficient below the
+    double range, which the parser refuses in one line by design: the acceptance table tries such inputs,
+    tests/acceptance/cases_cost.py.)
 
     Elongated contours are no longer an error (the round frame of contact_contour): every ratio to 1e-8.
     """
