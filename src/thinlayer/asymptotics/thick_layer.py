@@ -295,6 +295,25 @@ def _poly_ring(nk: int):
     return ring([f"g_{k}" for k in range(max(nk, 1))], QQ)
 
 
+def _add_layer_response(w: dict, m: int, K: int, g: list, Ms: list, zero: Any) -> None:
+    """Add to ``w`` (coefficients of ``rho^{2i}``) the layer's displacement of order ``m`` (T.5): the kernel
+    terms ``b_k`` (``g[k]``) acting on the moments ``Ms[m - 2k - 1]`` of the earlier orders.
+    """
+    for k in range(K + 1):
+        if 2 * k + 1 > m:
+            break
+        fac = QQ((-1) ** k, 2 * 4**k * math.factorial(k) ** 2) * g[k]
+        Mp = Ms[m - 2 * k - 1]
+        for (i, j), a in _ring_average(k).items():
+            w[i] = w.get(i, zero) + fac * a * Mp[j]
+
+
+def _moments(w: dict, J: int, zero: Any) -> list:
+    """The pressure moments ``M_0 .. M_{J-1}`` (T.5) of the half-space pressure that makes the displacement ``w``."""
+    return [4 * (2 * j + 1) * _B(j) * sum((_kappa(i) * wi * QQ(1, 2 * i + 2 * j + 1) for i, wi in w.items()), zero)
+            for j in range(J)]
+
+
 @lru_cache(maxsize=256)
 def _recursion(n: int, order: int, edge: bool) -> tuple[tuple, tuple, tuple]:
     """``(delta~^(m), M_0^(m), w~^(m))`` for the unit monomial ``rho^{2n}`` (T.5), m = 0..order.
@@ -313,20 +332,13 @@ def _recursion(n: int, order: int, edge: bool) -> tuple[tuple, tuple, tuple]:
             w[n] = -one if edge else zero
             if not edge:
                 w[0] = one
-        for k in range(K + 1):
-            if 2 * k + 1 > m:
-                break
-            fac = QQ((-1) ** k, 2 * 4**k * math.factorial(k) ** 2) * g[k]
-            Mp = Ms[m - 2 * k - 1]
-            for (i, j), a in _ring_average(k).items():
-                w[i] = w.get(i, zero) + fac * a * Mp[j]
+        _add_layer_response(w, m, K, g, Ms, zero)
         if edge:
             d = -sum((_kappa(i) * wi for i, wi in w.items()), zero)
             w[0] = w.get(0, zero) + d
         else:
             d = one if m == 0 else zero
-        Mm = [4 * (2 * j + 1) * _B(j) * sum((_kappa(i) * wi * QQ(1, 2 * i + 2 * j + 1) for i, wi in w.items()),
-                                             zero) for j in range(J)]
+        Mm = _moments(w, J, zero)
         ds.append(d)
         ws.append(tuple(sorted(w.items())))
         Ms.append(Mm)
@@ -350,17 +362,10 @@ def _seed_response(order: int) -> tuple[tuple[tuple, tuple], ...]:
         ds, Ps = [zero], [zero]
         for m in range(1, order + 1):
             w: dict[int, Any] = {}
-            for k in range(K + 1):
-                if 2 * k + 1 > m:
-                    break
-                fac = QQ((-1) ** k, 2 * 4**k * math.factorial(k) ** 2) * g[k]
-                Mp = Ms[m - 2 * k - 1]
-                for (i, j), a in _ring_average(k).items():
-                    w[i] = w.get(i, zero) + fac * a * Mp[j]
+            _add_layer_response(w, m, K, g, Ms, zero)
             d = -sum((_kappa(i) * wi for i, wi in w.items()), zero)
             w[0] = w.get(0, zero) + d
-            Mm = [4 * (2 * j + 1) * _B(j) * sum((_kappa(i) * wi * QQ(1, 2 * i + 2 * j + 1) for i, wi in w.items()),
-                                                 zero) for j in range(J)]
+            Mm = _moments(w, J, zero)
             ds.append(d)
             Ps.append(Mm[0])
             Ms.append(Mm)
