@@ -40,9 +40,10 @@ RANK = {
     "thinlayer.errata": 5,       # printed vs derived equations, each re-derived by the stages
     "thinlayer.contact": 6,      # the user's question answered: picks a stage or the direct solver (model="auto")
     "thinlayer.validation": 7,   # studies that compare stages and numerics
+    "thinlayer.afm": 7.5,        # measurements and optional integrations (nanite, afmformats, dask, lmfit), lazy
+                                 # imports; below export so that the CLI can read instrument files and force maps
     "thinlayer.export": 8,       # report, derivation files, code generation, CLI
     "thinlayer": 9,              # the front door (__init__) and __main__
-    "thinlayer.afm": 10,         # optional integrations (nanite, afmformats, dask, lmfit): the outer ring, lazy imports
 }
 
 #: asymptotic stages in the paper's order: each imports only earlier ones
