@@ -115,6 +115,7 @@ import numpy as np
 import sympy as sp
 
 from .._checks import InputError
+from .published_sources import READ_ATTEMPTS  # every address tried, three rounds (shared registry)
 
 __all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
            "cone_series", "paraboloid_series", "derived_cone_ratio", "direct_cone_ratio", "comparison_table",
@@ -125,39 +126,6 @@ __all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_C
 #: the quoting repositories (a secondary source: the publications' own equations were not read)
 PYAF = "sebastienjanel/pyAF, file src/compute_tools/stiffness_correction.py"
 PYFMRHEO = "jlopezalo/PyFMRheo, file src/pyfmrheo/models/correction_factors.py"
-
-#: every address where the publications were looked for (issue 24 item 5, two rounds), and what each held:
-#: ``{citation key: ((address or query, what was found), ...)}``.  The search tool's stored web pages return the
-#: opening of a page only (about 2,400 characters), never its body.
-READ_ATTEMPTS = {
-    "gavara2012": (
-        ("https://pmc.ncbi.nlm.nih.gov/articles/PMC3492504",
-         "the author manuscript in PubMed Central, stored: its opening only (Nat Nanotechnol 2012 Sep 30; "
-         "7(11):733-736, doi 10.1038/nnano.2012.163, PMCID PMC3492504, NIHMSID NIHMS402200, PMID 23023646; "
-         "abstract; the first paragraph of the text). The BECC formula lies past the part returned. (The brief's "
-         "PMC3835343 is not this article's PMCID.)"),
-        ("https://www.nature.com/articles/nnano.2012.163",
-         "the publisher's page: abstract, figure titles and reference list; the text is behind a paywall"),
-        ("pages corpus: queries on the BECC formula, its wording, the supplementary information, Europe PMC",
-         "no other copy of the article or of its supplementary information"),
-        ("find_string 'nnano.2012.163', 'Gavara2012', 'Gavara_2012'",
-         "PyFMRheo's bec_gavara_cone citing the nature.com page, and a log of a failed full-text download of "
-         "PMC3492504: no copy of the article"),
-        ("docs and issues corpora; find_string 'Bottom Effect Cone Correction', 'Gavara N, Chadwick'",
-         "a README of a MATLAB analysis repository and a reference list citing another Gavara & Chadwick article: no "
-         "equation"),
-    ),
-    "garcia2018": (
-        ("pages corpus: title, 'Biophys J. 2018;114(12):2923-2932', doi 10.1016/j.bpj.2018.05.012, PMC6026379",
-         "no stored page of the article (PubMed Central, Europe PMC, cell.com, PubMed): only later articles of the "
-         "same group (Nanoscale 2021 d1nr03894j, Nanoscale 2025 d5nr01236h), of which only the opening is returned"),
-        ("docs and issues corpora: Garcia 2018 bottom-effect coefficients, cone, pyramid", "nothing on the article"),
-        ("find_string 'single cell cultured on a rigid support'", "no hit"),
-        ("find_string 'j.bpj.2018.05.012', 'Garcia2018.pdf'",
-         "code that cites the DOI (yu-efremov/ViscoIndent bottom_effect_correction.py, an Igor HertzFit procedure, a "
-         "PyFMRheo example): a secondary source, the same coefficients; no copy of the article"),
-    ),
-}
 
 #: what became of the pyramid of Garcia & Garcia (2018): the publication was not read (READ_ATTEMPTS); the repositories
 #: that cite it apply the cone's coefficients to pyramids (GARCIA_2018_PYRAMID_AS_APPLIED), compared with (PT.5)
