@@ -102,7 +102,7 @@ ENTRIES: tuple[Reference, ...] = (
         record="thinlayer's own citation (thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES)",
         note="Cited as thinlayer records it; title, initials, last page and DOI could not be checked against a "
              "record of the publication (no copy or record of it was found: "
-             "thinlayer.validation.published_tips.READ_ATTEMPTS)"),
+             "thinlayer.validation.published_sources.READ_ATTEMPTS)"),
     Reference(
         "gavara2012", authors=("N. Gavara", "R. S. Chadwick"),
         title="Determination of the elastic moduli of thin samples and adherent cells using conical atomic force "
@@ -113,7 +113,7 @@ ENTRIES: tuple[Reference, ...] = (
                "page of its author manuscript in PubMed Central, PMC3492504, NIHMS402200, PMID 23023646 (authors, "
                "journal, volume, issue, pages, DOI)",
         note="Only the title page, abstract and first paragraph could be read; the article's equations were not "
-             "(addresses tried: thinlayer.validation.published_tips.READ_ATTEMPTS)"),
+             "(addresses tried: thinlayer.validation.published_sources.READ_ATTEMPTS)"),
     Reference(
         "efremov2017", authors=("Y. M. Efremov", "W.-H. Wang", "S. D. Hardy", "R. L. Geahlen", "A. Raman"),
         title="Measuring nanoscale viscoelastic parameters of cells directly from AFM force-displacement curves",

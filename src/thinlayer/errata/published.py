@@ -395,7 +395,7 @@ PUBLISHED_ENTRIES = PUBLISHED_ENTRIES + (
         _CONE_DERIVED,
         r"The publication's own equation could not be read (the opening of its author manuscript PMC3492504 and the "
         r"publisher's abstract page only; the addresses tried are listed in "
-        r"thinlayer.validation.published_tips.READ_ATTEMPTS); both repositories write the form "
+        r"thinlayer.validation.published_sources.READ_ATTEMPTS); both repositories write the form "
         r"above ($P_S = 8E\tan\theta\,\delta^2/(3\pi)$, Sneddon's cone). Derived in "
         r"thinlayer.validation.published_tips (PT.1)--(PT.3): the regular kernel of (T.2) through $b_1$ turns the "
         r"layer into a half-space problem for the punch $r\cot\theta + q r^2$, solved by Sneddon's integrals; "
@@ -420,7 +420,7 @@ PUBLISHED_ENTRIES = PUBLISHED_ENTRIES + (
         r"\frac{P}{P_S} = 1 + 0.721X + 0.650X^2 + 0.491X^3 + 0.225X^4,\ X = \frac{\delta\tan\theta}{h}",
         _CONE_DERIVED,
         r"The publication's own equation and its stated range could not be read: no copy of the article was found "
-        r"(addresses tried: thinlayer.validation.published_tips.READ_ATTEMPTS). The first three quoted "
+        r"(addresses tried: thinlayer.validation.published_sources.READ_ATTEMPTS). The first three quoted "
         r"coefficients are the derived $4 b_0/\pi^2$, $20 b_0^2/\pi^4$, $4(28 b_0^3 - \pi^2 b_1)/\pi^6$ of (PT.3) "
         r"with Dimitriadis's $\alpha_0 = -1.7795$ and $\beta_0 = 1.0079$ put in for $-b_0$ and $b_1/4$ "
         r"($0.7212$, $0.6502$, $0.4909$, rounded as quoted): the $0.5\,\%$ error of $\alpha_0$ carries over. The "
@@ -445,7 +445,7 @@ PUBLISHED_ENTRIES = PUBLISHED_ENTRIES + (
         r"\frac{P}{P_{hs}} = 1 + \frac{b_0 k}{\pi}X + 5\Big(\frac{b_0 k}{2\pi}\Big)^2 X^2 + O(X^3) = 1 + 0.8313X "
         r"+ 0.8638X^2 + O(X^3),\ k = 1.4753",
         r"Whether the publication gives pyramid coefficients could not be read (no copy of it was found: "
-        r"thinlayer.validation.published_tips.READ_ATTEMPTS); pyAF (its Sneddon cone and pyramid models) and "
+        r"thinlayer.validation.published_sources.READ_ATTEMPTS); pyAF (its Sneddon cone and pyramid models) and "
         r"ViscoIndent (probe 'pyramid' or 'cone', with the tangent of the tip angle) apply the cone's coefficients to "
         r"pyramids. Derived in thinlayer.validation.published_tips (PT.5): the constant part $b_0$ of the kernel "
         r"(T.2) shifts the displacement uniformly whatever the contact's shape, so for any tip with "

@@ -63,6 +63,11 @@ READ_ATTEMPTS: dict[str, tuple[tuple[str, str], ...]] = {
          "the documentation (Y. Efremov, rev. August 2022) cites 'Pablo D. Garcia and Ricardo Garcia. Determination of "
          "the Elastic Moduli of a Single Cell Cultured on a Rigid Support by Force Microscopy. Biophysical Journal, "
          "114(12):2923-2932, 2018' as its source of the bottom-effect coefficients; no formula in the document"),
+        ("round 3: jlopezalo/PyFMRheo, src/pyfmrheo/models/ting.py and routines/TingFit.py (stored commit 50d459d), "
+         "read for the bottom-effect-corrected Ting form that issue 27 item 5 names",
+         "TingModel declares apply_bec_flag and bec_model but its force (analytical power-law and numerical forms) "
+         "uses neither: the stored version applies no bottom-effect correction inside Ting's model, so there is no "
+         "PyFMRheo form to compare; the cone coefficients it quotes are those of correction_factors.py"),
     ),
     "efremov2017": (
         ("https://pmc.ncbi.nlm.nih.gov/articles/PMC5431511 (pages corpus, title and body phrases as queries)",
@@ -108,6 +113,9 @@ READ_ATTEMPTS: dict[str, tuple[tuple[str, str], ...]] = {
         ("code corpus and find_string: Shull's thin-layer corrections (compliance, load and displacement factors "
          "in a/h), the DOI 10.1016/S0927-796X(01)00039-0",
          "no implementation quoting them and no copy: nothing to compare, not even as a secondary source"),
+        ("docs corpus: 'Shull confinement correction JKR thin layer compliance f(a/h)'",
+         "an R package's thin-film Hertz correction after Long et al. (2011) and unrelated simulation manuals: no "
+         "quotation of Shull's forms"),
     ),
     "johnson2001": (
         ("pages corpus: 'Johnson Sridhar 2001 adhesion between a spherical indenter and an elastic solid with a "

@@ -7,9 +7,10 @@ AFM users correct Sneddon's cone ``P_S = 4 vartheta tan(theta) delta^2/pi`` (``=
     P/P_S = 1 + sum_n c_n X^n.
 
 Two published series are implemented here as they are quoted (:data:`GAVARA_2012`, :data:`GARCIA_2018_CONE`).
-Neither publication's equations could be read by this project: :data:`READ_ATTEMPTS` lists every address tried and
-what it held (for Gavara & Chadwick the opening of the PubMed Central author manuscript PMC3492504, up to the end of
-its first paragraph, and the publisher's abstract page; for Garcia & Garcia no stored copy at all).  The
+Neither publication's equations could be read by this project, in three rounds of searching: :data:`READ_ATTEMPTS`
+(:mod:`thinlayer.validation.published_sources`) lists every address tried and what it held (for Gavara & Chadwick
+the opening of the PubMed Central author manuscript PMC3492504, up to the end of its first paragraph, and the
+publisher's abstract page; for Garcia & Garcia no stored copy at all, only reference lists citing it).  The
 coefficients are those that two public code repositories attribute to the publications, and every value here is
 labelled "as quoted in" those repositories (a secondary source), never as the paper's own print; no equation number
 or page of either paper is cited, because none was seen.
