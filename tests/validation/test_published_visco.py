@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 from thinlayer import errata, references
-from thinlayer.contact.materials import Prony, StandardLinearSolid
+from thinlayer.contact.hereditary import hereditary_integral
+from thinlayer.contact.materials import PowerLaw, Prony, StandardLinearSolid
 from thinlayer.validation import published_sources as ps
 from thinlayer.validation import published_tips as pt
 from thinlayer.validation import published_visco as pv
@@ -89,6 +90,29 @@ def test_ting_root_satisfies_its_condition_by_quadrature():
         assert abs(float(phi)) < 1e-10, i
         assert 0 < r < 1.0 and P[i] > 0
     assert np.all(np.diff(t1[101:lost[0]]) < 0) and np.all(np.diff(P[101:lost[0]]) < 0)
+
+
+def test_power_law_ramp_factor_closed_form():
+    # (PV.4): w_k = Gamma(k+3) Gamma(3-alpha)/(2 Gamma(k+3-alpha)); w_1 = 3/(3 - alpha) by hand
+    w = pv.power_law_weights(0.2)
+    assert w[0] == pytest.approx(1.0, rel=1e-15) and w[1] == pytest.approx(3 / 2.8, rel=1e-14)
+    assert w[2] == pytest.approx(24 / (2 * 3.8 * 2.8), rel=1e-14)  # Gamma(5) Gamma(2.8)/(2 Gamma(4.8))
+    # the engine's power-law hereditary integral of X^2 R (product integration) against the closed form: order 2 - alpha
+    m = PowerLaw(1.0, 1.0, 0.2)
+    err = []
+    for n in (200, 400):
+        t = np.linspace(0.0, 10.0, n + 1)
+        X = 0.03 * t
+        ratio = hereditary_integral(m, t, X * X * _series_R(X))[-1] / hereditary_integral(m, t, X * X)[-1]
+        err.append(ratio / pv.power_law_ramp_ratio(0.3, 0.2) - 1)
+    assert abs(err[1]) < 5e-6 and 2.8 < err[0] / err[1] < 4.2, err
+    # the factor outside falls short: first order -(4 b_0/pi^2) alpha/(3 - alpha) X, in full -1.95 % at X = 0.3
+    short = pv.power_law_ramp_ratio(0.3, 0.2, inside=False) / pv.power_law_ramp_ratio(0.3, 0.2) - 1
+    assert short == pytest.approx(-0.01948, abs=2e-5)
+    small = pv.power_law_ramp_ratio(1e-3, 0.2, inside=False) / pv.power_law_ramp_ratio(1e-3, 0.2) - 1
+    assert small == pytest.approx(-4 * 1.7702168 / math.pi**2 * 0.2 / 2.8 * 1e-3, rel=2e-3)
+    with pytest.raises(ValueError, match="alpha"):
+        pv.power_law_weights(1.0)
 
 
 def test_bad_inputs_are_refused():

@@ -119,7 +119,8 @@ from .._checks import InputError
 from .published_sources import READ_ATTEMPTS  # every address tried, three rounds (shared registry)
 
 __all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
-           "cone_series", "paraboloid_series", "derived_cone_ratio", "direct_cone_ratio", "comparison_table",
+           "cone_series", "paraboloid_series", "derived_cone_coefficients", "derived_cone_ratio", "direct_cone_ratio",
+           "comparison_table",
            "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table", "GARCIA_2018_PYRAMID_AS_APPLIED",
            "homogeneous_tip_series", "pyramid_half_space_coefficient", "pyramid_series", "direct_pyramid_ratio",
            "LawComparison", "law_comparison"]
@@ -347,12 +348,16 @@ def _moments(nu: float, base: str = "bonded") -> dict:
     return {_b0: float(b[0]), _b1: float(b[1])}
 
 
+def derived_cone_coefficients(nu: float = 0.5, order: int = ORDER, base: str = "bonded") -> np.ndarray:
+    """(PT.3) in numbers: ``(1, beta_1, ..., beta_order)`` of ``P/P_S = sum_n beta_n X^n`` for the layer."""
+    return np.array([float(c.subs(_moments(nu, base))) for c in cone_series(order)[0]])
+
+
 def derived_cone_ratio(X: Any, nu: float = 0.5, order: int = ORDER, base: str = "bonded") -> np.ndarray:
     """(PT.3) evaluated: ``P/P_S`` of the cone on a layer bonded to (or lying without friction on, ``base =
     "frictionless"``, independent of nu) a rigid base, at ``X = delta tan(theta)/H``.
     """
-    coeffs = [float(c.subs(_moments(nu, base))) for c in cone_series(order)[0]]
-    return np.polynomial.polynomial.polyval(np.asarray(X, dtype=float), coeffs)
+    return np.polynomial.polynomial.polyval(np.asarray(X, dtype=float), derived_cone_coefficients(nu, order, base))
 
 
 def direct_cone_ratio(X: float, nu: float = 0.5, half_angle_deg: float = 45.0, n: int | None = None,

@@ -38,6 +38,20 @@ elastic ``K_1 E B(X) delta^2``: Ting's part reduces to the elastic series, whose
 the quoted coefficients (:mod:`thinlayer.validation.published_tips`).  Whether Ting's construction itself holds on
 the layer is the subject of issue 27 item 2 (the time-stepping direct solver); it is not assumed here.
 
+(PV.4) *A power-law material on a ramp: the factor in closed form.*  For ``E(t) = E_0 (t/t_0)^(-alpha)``, a ramp
+``X = v t`` and ``R(X) = sum_k c_k X^k`` (the derived series (PT.3)), ``int_0^t (t - s)^(-alpha) d/ds[s^(k+2)] ds =
+(k+2) B(k+2, 1-alpha) t^(k+2-alpha)``, so (PV.2) is the half-space ramp force times
+
+    R_alpha(X) = sum_k c_k w_k(alpha) X^k,   w_k = Gamma(k+3) Gamma(3-alpha) / (2 Gamma(k+3-alpha)),  w_0 = 1,
+
+exact for the series, at every ramp speed (the power law has no time scale).  Outside the integral the factor is
+``R(X)`` (all ``w_k = 1``): the force falls short by ``c_1 (w_1 - 1) X = -(4 b_0/pi^2) alpha/(3 - alpha) X`` at
+first order.  With all four terms (:func:`power_law_ramp_ratio`, ``nu = 1/2``): ``-0.56 %``, ``-1.95 %``,
+``-3.67 %`` at ``X = 0.1, 0.3, 0.5`` for ``alpha = 0.2``; ``-0.87 %``, ``-3.02 %``, ``-5.64 %`` for ``alpha = 0.3``
+(a modulus fitted with the factor outside comes out high by about as much).  The engine's hereditary integral of the
+power law (:func:`thinlayer.contact.hereditary.hereditary_integral`, product integration) agrees with the closed form
+to ``7.4e-6`` and ``2.2e-6`` at 200 and 400 steps (``X = 0.3``, ``alpha = 0.2``; order ``2 - alpha``).
+
 Measured (:func:`loading_table`, ``route="law"``; SLS ``E(t) = E_inf + 4 E_inf exp(-t/tau)``, 45-degree cone,
 incompressible layer bonded to the base, ramp ``X = X_max t/T`` on 400 steps then a hold of ``5 tau``; relative
 differences against (PV.2) with the engine's any-thickness cone law; "structural": the layer's own R outside the
@@ -71,12 +85,13 @@ import numpy as np
 from .._checks import InputError
 from .._lazy import lazy_module
 from .published_sources import READ_ATTEMPTS
-from .published_tips import GARCIA_2018_CONE, derived_cone_ratio
+from .published_tips import GARCIA_2018_CONE, derived_cone_coefficients, derived_cone_ratio
 
 optimize = lazy_module("scipy.optimize")
 
 __all__ = ["READ_ATTEMPTS", "VISCOINDENT", "QUOTED_RATIO", "ramp_hold", "triangle", "engine_ratio",
-           "lee_radok", "factor_outside", "ting_as_implemented", "LoadingRow", "loading_table", "format_table"]
+           "lee_radok", "factor_outside", "ting_as_implemented", "LoadingRow", "loading_table", "format_table",
+           "power_law_weights", "power_law_ramp_ratio"]
 
 #: the secondary source: the first author's code (files and commit read in the snapshot)
 VISCOINDENT = ("yu-efremov/ViscoIndent, files Ting_numerical.py and bottom_effect_correction.py (commit c90ee84); "
@@ -267,3 +282,21 @@ def format_table(rows) -> str:
         lines.append(f"{r.X_max:6.2f} {r.T_over_tau:6.2f} {r.structural_end_ramp:+11.2e} {r.quoted_end_ramp:+12.2e} "
                      f"{r.quoted_end_hold:+12.2e} {r.elastic:+10.2e}")
     return "\n".join(lines)
+
+
+def power_law_weights(alpha: float, order: int = 4) -> np.ndarray:
+    """(PV.4): ``w_k = Gamma(k+3) Gamma(3-alpha)/(2 Gamma(k+3-alpha))``, ``k = 0..order`` (``w_0 = 1``)."""
+    if isinstance(alpha, bool) or not isinstance(alpha, (int, float)) or not 0 < alpha < 1:
+        raise InputError(f"alpha (E ~ t^-alpha) must be a number in (0, 1), got {alpha!r}")
+    k = np.arange(order + 1)
+    lg = np.vectorize(math.lgamma)
+    return np.exp(lg(k + 3.0) + math.lgamma(3.0 - alpha) - math.log(2.0) - lg(k + 3.0 - alpha))
+
+
+def power_law_ramp_ratio(X: Any, alpha: float, nu: float = 0.5, inside: bool = True) -> np.ndarray:
+    """(PV.4): the bottom-effect factor of the ramp force of a power-law material, ``R_alpha(X)`` (``inside=True``,
+    exact for the derived series (PT.3)) or, for comparison, the elastic ``R(X)`` that the factor-outside form uses.
+    """
+    coeffs = derived_cone_coefficients(nu)
+    w = power_law_weights(alpha, coeffs.size - 1) if inside else np.ones(coeffs.size)
+    return np.polynomial.polynomial.polyval(np.asarray(X, dtype=float), coeffs * w)
