@@ -102,7 +102,10 @@ ENTRIES: tuple[Reference, ...] = (
         record="thinlayer's own citation (thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES)",
         note="Cited as thinlayer records it; title, initials, last page and DOI could not be checked against a "
              "record of the publication (no copy or record of it was found: "
-             "thinlayer.validation.published_sources.READ_ATTEMPTS)"),
+             "thinlayer.validation.published_sources.READ_ATTEMPTS). Documents that cite it give Pablo D. Garcia "
+             "and Ricardo Garcia, 'Determination of the elastic moduli of a single cell cultured on a rigid support "
+             "by force microscopy', Biophysical Journal 114(12), 2923-2932, doi 10.1016/j.bpj.2018.05.012 (the "
+             "reference list of ViscoIndent's documentation, an Igor Pro fitting procedure): a secondary record"),
     Reference(
         "gavara2012", authors=("N. Gavara", "R. S. Chadwick"),
         title="Determination of the elastic moduli of thin samples and adherent cells using conical atomic force "
