@@ -91,7 +91,11 @@ terms is ``2.9e-4`` and ``3.4e-5`` at n = 256, falling like ``X^3`` (``THINLAYER
 repositories (pyAF, ViscoIndent) apply the cone's coefficients to pyramids with ``X = delta tan(angle)/h``
 (:data:`GARCIA_2018_PYRAMID_AS_APPLIED`): read with the face angle their first coefficient ``0.721`` is 13 % below
 the pyramid's ``0.8313``, read with the edge angle (``tan = sqrt(2) tan(alpha)``, ``0.721 sqrt(2) = 1.020``) 23 %
-above; the errata registry holds the entry.
+above; the errata registry holds the entry.  The half-space prefactors the repositories put in front
+(:data:`PYRAMID_PREFACTORS_AS_IMPLEMENTED`, ``P = c E tan(angle) delta^2/(1 - nu^2)``): ViscoIndent's ``1.406/2`` and
+PyFMRheo's ``1/sqrt(2)`` are 4.7 % and 4.1 % below the engine's ``k/2 = 0.73764`` read with the face angle, 35 %
+above read with the edge angle (:func:`pyramid_prefactor_differences`; neither file names a publication for it, so
+no errata entry).
 
 Against the engine's any-thickness cone law (:func:`law_comparison`;
 :func:`thinlayer.contact.any_thickness_tips.cone_law`, ``chi = c_0/H = 2X/pi``, within its estimate, at most
@@ -123,7 +127,7 @@ __all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_C
            "comparison_table",
            "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table", "GARCIA_2018_PYRAMID_AS_APPLIED",
            "homogeneous_tip_series", "pyramid_half_space_coefficient", "pyramid_series", "direct_pyramid_ratio",
-           "LawComparison", "law_comparison"]
+           "LawComparison", "law_comparison", "PYRAMID_PREFACTORS_AS_IMPLEMENTED", "pyramid_prefactor_differences"]
 
 #: the quoting repositories (a secondary source: the publications' own equations were not read)
 PYAF = "sebastienjanel/pyAF, file src/compute_tools/stiffness_correction.py"
@@ -506,6 +510,28 @@ def pyramid_half_space_coefficient(sides: int = 4, n: int = 128) -> float:
 
 def _extent(sides: int) -> float:
     return 1.5 if sides == 4 else 2.2  # corners at 1/cos(pi/N): 1.414, 2.0 (delta tan(alpha) = 1)
+
+
+#: the half-space prefactor ``c`` of ``P = c E tan(angle) delta^2/(1 - nu^2)`` that two repositories use for a 4-sided
+#: pyramid (a secondary source; neither file cites a publication for it, ViscoIndent's documentation calls its model
+#: "Bilodeau"): ``{repository, file: c}``.  The engine's is ``k/2`` with ``k`` of
+#: :func:`pyramid_half_space_coefficient` (face angle: ``P = k vartheta tan(alpha) delta^2``, ``vartheta = E/(2 (1 -
+#: nu^2))``).
+PYRAMID_PREFACTORS_AS_IMPLEMENTED = {
+    "yu-efremov/ViscoIndent, Ting_numerical.py (commit c90ee84): K1 = 1.406/2 tan(angle)": 1.406 / 2,
+    "jlopezalo/PyFMRheo, src/pyfmrheo/models/geom_coeffs.py: 1/sqrt(2) tan(angle)": 1 / math.sqrt(2),
+}
+
+
+def pyramid_prefactor_differences(n: int = 128) -> dict[str, tuple[float, float]]:
+    """Each implemented prefactor against the engine's ``k/2`` (2D solver, ``n x n``): ``(relative difference with the
+    angle read as the face angle, with the angle read as the edge angle, tan larger by sqrt(2))``.
+
+    Measured: ``k/2 = 0.73764`` (n = 512); ViscoIndent ``-4.7 %`` (face) or ``+34.8 %`` (edge), PyFMRheo ``-4.1 %``
+    or ``+35.6 %``.
+    """
+    half = pyramid_half_space_coefficient(4, n) / 2
+    return {key: (c / half - 1, c * math.sqrt(2) / half - 1) for key, c in PYRAMID_PREFACTORS_AS_IMPLEMENTED.items()}
 
 
 def pyramid_series(nu: float = 0.5, sides: int = 4, n: int = 128) -> tuple[float, float]:
