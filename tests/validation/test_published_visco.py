@@ -113,6 +113,18 @@ def test_power_law_ramp_factor_closed_form():
     assert small == pytest.approx(-4 * 1.7702168 / math.pi**2 * 0.2 / 2.8 * 1e-3, rel=2e-3)
     with pytest.raises(ValueError, match="alpha"):
         pv.power_law_weights(1.0)
+    # the sphere (m = 3/2, series (T.7) in chi = sqrt(R delta)/h, R = h = 1: delta^(3/2) = chi^3): the same closed form
+    # with w_1 = Gamma(3) Gamma(2.3)/(Gamma(2.5) Gamma(2.8)), against the engine's integral on 400 steps
+    ws = pv.power_law_weights(0.2, 4, 1.5, 0.5)
+    assert ws[1] == pytest.approx(math.gamma(3) * math.gamma(2.3) / (math.gamma(2.5) * math.gamma(2.8)), rel=1e-13)
+    t = np.linspace(0.0, 10.0, 401)
+    chi = 0.3 * np.sqrt(t / 10)
+    elastic = pv.power_law_ramp_ratio(chi, 0.2, inside=False, tip="sphere")
+    got = hereditary_integral(m, t, chi**3 * elastic)[-1] / hereditary_integral(m, t, chi**3)[-1]
+    assert abs(got / pv.power_law_ramp_ratio(0.3, 0.2, tip="sphere") - 1) < 3e-6
+    assert elastic[-1] / pv.power_law_ramp_ratio(0.3, 0.2, tip="sphere") - 1 == pytest.approx(-0.02162, abs=2e-5)
+    with pytest.raises(ValueError, match="tip"):
+        pv.power_law_ramp_ratio(0.3, 0.2, tip="flat")
 
 
 def test_bad_inputs_are_refused():
