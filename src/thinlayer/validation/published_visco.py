@@ -18,7 +18,9 @@ Garcia & Garcia (2018) for the coefficients.  Every quantity below is labelled "
   root of ``int_{t_1}^t E(t - s) d delta/ds ds = 0`` (the contact radius at t equals that at t_1).
 
 The bottom-effect factor multiplies the half-space hereditary integral from outside, evaluated at the current depth
-(approach) or at ``t_1`` (retraction).
+(approach) or at ``t_1`` (retraction).  (The stored code applies the coefficients only for ``0.45 <= nu < 0.5``; at
+``nu = 0.5`` exactly its cone branch assigns no factor.  The comparison here takes the form at ``nu = 1/2``, where
+the coefficients are meant to hold.)
 
 (PV.2) *What the layer gives.*  For a constant Poisson ratio and a growing contact, Lee & Radok's construction holds
 on the layer as on the half-space (the contact radius depends on the depth only, not on the modulus): with the
