@@ -498,6 +498,7 @@ INVENTORY: dict[str, list] = {
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution.q": [lambda s: F().wh.q(s), lambda s: F().wh.q(1.0, dps=s),
                                                                lambda s: F().wh.q(1.0, method=s)],
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution.q_numpy": [lambda s: F().wh.q_numpy(s)],
+    "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution.table_check": [lambda s: F().wh.table_check(s)],
     "thinlayer.asymptotics.incompressible.operator.ThinLayerOperator.apply": [
         lambda s: F().op.apply(s), lambda s: F().op.apply(sp.Symbol("x_1") ** 2, v1=s),
         lambda s: F().op.apply(sp.Symbol("x_1") ** 2, v2=s)],
