@@ -91,11 +91,11 @@ import sympy as sp
 
 from .._cache import cached
 from .._checks import InputError, InputTypeError, parse_nu
-from ._wiener_hopf_tables import shipped_table
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..normal import normal_latex
+from ._wiener_hopf_tables import shipped_table
 
 __all__ = [
     "KERNELS",
@@ -704,7 +704,8 @@ class WienerHopfSolution(RichDisplay):
 
     def table_check(self, tau: Any) -> np.ndarray:
         """``q̂(τ) - τ`` at ``0 < τ <= tau_max`` by the table's own route (de Hoog on the panel rule, double
-        precision), to check a table (shipped, or from the disk cache) against the code that built it."""
+        precision), to check a table (shipped, or from the disk cache) against the code that built it.
+        """
         tau = np.atleast_1d(np.asarray(tau, dtype=float))
         if np.any(tau <= 0) or np.any(tau > self.tau_max):
             raise InputError(f"tau must lie in (0, tau_max = {self.tau_max:.6g}]")
@@ -850,7 +851,8 @@ def _table_nodes(n: Any) -> int | None:
 def fresh_table(nu: Any, kernel: str = "exact", normaliser: str = "alexandrov", dps: int = 20,
                 n: int | None = None) -> np.ndarray:
     """The Chebyshev table of :meth:`WienerHopfSolution.q_numpy` computed now, by de Hoog inversion (no shipped
-    table, no disk cache): the arguments of :func:`wiener_hopf_solution`."""
+    table, no disk cache): the arguments of :func:`wiener_hopf_solution`.
+    """
     _check_choice(kernel, KERNELS, "kernel")
     _check_choice(normaliser, NORMALISERS, "normaliser")
     return np.array(_solution(_rational_nu(nu), kernel, normaliser, _check_dps(dps), _table_nodes(n), True).cheb)
