@@ -66,9 +66,16 @@ imposed.
 (V.9) *Discretisation.*  ``nodes`` + 1 equidistant nodes ``s_j`` on ``[0, R]``, fields piecewise linear between them;
 the step's unknowns are ``phi`` at the nodes inside c and at c itself (c is continuous, not a node), the integrals
 are the trapezoidal rule on these points (Nystrom's method), the kernel ``k`` is evaluated by the flat punch's
-quadrature (:func:`thinlayer.numerics.flat_punch.kernel_quadrature`, at ``lambda = R/H``).  Second order in space
-and in time (measured: tests/viscoelastic/test_timestep.py).  R is 1.15 times the elastic contact radius at the
-largest depth (found by the same discretisation), unless given.
+quadrature (:func:`thinlayer.numerics.flat_punch.kernel_quadrature`, at ``lambda = R/H``).  R is 1.15 times the
+elastic contact radius at the largest depth (found by the same discretisation), unless given.
+
+Measured (half-space, sphere, SLS ``E0/E_inf = 3``, ``tau = 0.2``, triangle to ``t_m = 0.5``, against the mpmath
+closed forms of Lee-Radok and Ting): second order in time (1600 nodes, 51/101/201 steps: force error at t = 0.6
+1.08e-4, 2.74e-5, 7.07e-6, order 1.97) and in space (801 steps, 100/200/400 nodes: 5.6e-5, 1.4e-5, 3.9e-6, order
+1.97, 1.87 with the time error left in); 1.2e-4 at 101 steps x 200 nodes, and Richardson's value from
+(201, 400) and (401, 800) within 1e-6 (tests/viscoelastic/test_timestep.py, SLOW).  On layers the Nystrom rule needs
+about ``4 R/H + 60`` nodes (the cancellation of ``1 - k`` (F.6)); 200 nodes serve up to ``a/H ~ 10`` (bonded nu = 1/2
+at ``a/H = 14.8``: a negative edge pressure of 3 % of the peak is flagged there).
 """
 from __future__ import annotations
 
