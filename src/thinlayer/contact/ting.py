@@ -256,7 +256,12 @@ def ting_force(layer: LayerKernel, punch: Any, H: Any, material: Material, times
         d1, _ = _at(t, d, qd, taus, k, th)
         F1, qF1 = _at(t, F, qF, taus, k, th)
         P = g * _A(einf, E, taus, tn, tt1, F1, qF1)
-        c1 = curve.contact_radius(np.maximum(d1, 0.0))
+        # a_e(delta(t1)); below the history's least positive depth (contact nearly lost), linear from 0: the law is
+        # never asked beyond the depths it was built for (a direct model would solve at depth 1e-300)
+        dpos = u[u > 0]
+        small = d1 < dpos.min()
+        c1 = curve.contact_radius(np.where(small, dpos.min(), d1))
+        c1 = np.where(small, c1 * np.maximum(d1, 0.0) / dpos.min(), c1)
         force[after] = np.where(lost, 0.0, P)
         radius[after] = np.where(lost, 0.0, c1)
         t1[after] = np.where(lost, np.nan, tt1)
