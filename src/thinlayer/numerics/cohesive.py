@@ -529,30 +529,28 @@ def maugis_dugdale(layer: LayerKernel, punch: Any, H: float | None = None, mu: f
 
 
 def _radius_for(pr: _Problem, target: float, which: int) -> float:
-    """The largest contact radius whose depth (which = 1) or force (which = 2) is ``target`` (the stable branch)."""
+    """The largest contact radius whose depth (which = 1) or force (which = 2) is ``target`` (the stable branch):
+    a geometric scan of ``c`` from the JKR radius at zero load down to 1/50 of it (and up until the value exceeds
+    the target), the last upward crossing refined by Brent's method."""
     def fun(c: float) -> float:
         return cohesive_equations(pr, c)[which] - target
 
-    c = (pr.R * pr.w / (2.0 * pr.vt)) ** (1.0 / 3.0)  # the JKR scale (pi w R^2/K)^(1/3), roughly
-    lo = hi = c
-    f_hi = fun(hi)
-    for _ in range(80):
-        if f_hi > 0:
+    K = 8.0 * pr.vt / 3.0
+    c0 = (6.0 * math.pi * pr.w * pr.R**2 / K) ** (1.0 / 3.0)
+    grid = list(c0 * np.geomspace(0.02, 1.0, 10))
+    vals = [fun(c) for c in grid]
+    for _ in range(60):
+        if vals[-1] > 0:
             break
-        lo, hi = hi, 2.0 * hi
-        f_hi = fun(hi)
+        grid.append(2.0 * grid[-1])
+        vals.append(fun(grid[-1]))
     else:
         raise InputError("no contact radius reaches the prescribed value (bracketing failed)")
-    f_lo = fun(lo) if lo != hi else f_hi
-    for _ in range(80):
-        if f_lo < 0:
-            break
-        hi, lo = lo, 0.5 * lo
-        f_lo = fun(lo)
-    else:
-        raise InputError("the prescribed value is below the curve's minimum: no state on the stable branch "
-                         "(the punch has come off; see pull_off)")
-    return optimize.brentq(fun, lo, hi, xtol=1e-13 * hi, rtol=1e-12)
+    for j in range(len(grid) - 1, 0, -1):
+        if vals[j - 1] <= 0 < vals[j]:
+            return optimize.brentq(fun, grid[j - 1], grid[j], xtol=1e-13 * grid[j], rtol=1e-12)
+    raise InputError("the prescribed value is below the curve's minimum on the scanned radii: no state on the "
+                     "stable branch (the punch has come off; see pull_off)")
 
 
 def pull_off(layer: LayerKernel, punch: Any, H: float | None = None, mu: float = 1.0, *, w: float,
