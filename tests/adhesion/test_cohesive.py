@@ -83,7 +83,8 @@ def test_derived_half_space_equations_are_maugis_as_printed():
     eq = half_space_equations()
     r = sp.sqrt(m**2 - 1)
     printed = {
-        "gap": lam * A**2 / 2 * (r + (m**2 - 2) * sp.atan(r)) + sp.Rational(4, 3) * lam**2 * A * (r * sp.atan(r) - m + 1),
+        "gap": (lam * A**2 / 2 * (r + (m**2 - 2) * sp.atan(r))
+                + sp.Rational(4, 3) * lam**2 * A * (r * sp.atan(r) - m + 1)),
         "force": A**3 - lam * A**2 * (r + m**2 * sp.atan(r)),
         "delta": A**2 - sp.Rational(4, 3) * lam * A * r,
     }

@@ -42,7 +42,7 @@ smooth, so the collocation of (F.6) applies to each).
 ``u3(b) - delta + Phi(b)`` is ``(2/pi) int_c^b (G(s) - delta + h(s))/sqrt(b^2 - s^2) ds``::
 
     h0 = (2/pi) [ -s (m - 1) - delta arccos(1/m) + int_0^{theta_1} h(c m cos theta) d theta
-                  - int_0^oo (2/pi)(1 - L(t/lambda)) W(t) Fhat(t) dt ],                             theta_1 = arccos(1/m),
+                  - int_0^oo (2/pi)(1 - L(t/lambda)) W(t) Fhat(t) dt ],         theta_1 = arccos(1/m),
 
 with ``W(t) = int_1^m cos(t x)/sqrt(m^2 - x^2) dx = int_0^{theta_1} cos(t m cos theta) d theta`` and
 ``Fhat(t) = int_0^m F cos(t y) dy = sum_j a_j (-1)^j j_2j(t) - s Shat(t)``, ``Shat(t) = int_0^{theta_1}
@@ -136,7 +136,8 @@ def half_space_equations() -> dict[str, sp.Expr]:
     f = delta - h.subs(s_, c * x)  # (D.3) with k = 0
     d_edge = sp.solve(sp.Eq(f.subs(x, 1), -sc * sp.sqrt(m**2 - 1)), delta)[0]  # (D.4)
     b = m * c
-    zone = sp.integrate((b * sp.sin(th)) * b * sp.sin(th), (th, 0, sp.acos(1 / m)))  # int_c^b sqrt(b^2 - t^2) dt, t = b cos
+    # int_c^b sqrt(b^2 - t^2) dt with t = b cos(theta)
+    zone = sp.integrate((b * sp.sin(th)) * b * sp.sin(th), (th, 0, sp.acos(1 / m)))
     P = 4 * vt * c * sp.integrate(f, (x, 0, 1)) - 4 * sigma0 * zone  # (D.5): 2 pi int phi, phi_D = -(2/pi) s0 ...
     # (D.6): x = m cos(theta) on (1, m); F = -s sqrt(m^2 - x^2)
     integrand = (-sc * m * sp.sin(th) - delta + h.subs(s_, c * m * sp.cos(th)))
@@ -531,7 +532,8 @@ def maugis_dugdale(layer: LayerKernel, punch: Any, H: float | None = None, mu: f
 def _radius_for(pr: _Problem, target: float, which: int) -> float:
     """The largest contact radius whose depth (which = 1) or force (which = 2) is ``target`` (the stable branch):
     a geometric scan of ``c`` from the JKR radius at zero load down to 1/50 of it (and up until the value exceeds
-    the target), the last upward crossing refined by Brent's method."""
+    the target), the last upward crossing refined by Brent's method.
+    """
     def fun(c: float) -> float:
         return cohesive_equations(pr, c)[which] - target
 
