@@ -91,7 +91,7 @@ from .revolution import abel_load
 special, optimize = (lazy_module(f"scipy.{m}") for m in ("special", "optimize"))
 
 __all__ = ["CohesiveState", "cohesive_equations", "half_space_equations", "maugis_dugdale", "pull_off",
-           "maugis_lambda", "tabor_parameter"]
+           "maugis_dugdale_2d", "maugis_lambda", "tabor_parameter", "Cohesive2D"]
 
 #: Maugis's lambda over Tabor's mu_T (both with the Dugdale range h0): 2 (9/(16 pi))^(1/3)  (D.8)
 LAMBDA_OVER_TABOR = 2.0 * (9.0 / (16.0 * math.pi)) ** (1.0 / 3.0)
@@ -594,3 +594,160 @@ def pull_off(layer: LayerKernel, punch: Any, H: float | None = None, mu: float =
     res = optimize.minimize_scalar(force, bounds=(lo, grid[i + 1]), method="bounded",
                                    options={"xatol": 1e-7 * grid[i]})
     return _state(pr, float(res.x), error_estimate)
+
+
+# --------------------------------------------------------------------------- (D.10) the Dugdale law in solve_2d
+@dataclass(frozen=True, eq=False)
+class Cohesive2D(RichDisplay):
+    """A Maugis-Dugdale state of any punch on a layer, on the grid of :func:`~thinlayer.numerics.solve_2d` (D.10).
+
+    Attributes
+    ----------
+    contact : Contact2D
+        The last contact solve: ``pressure`` is the compressive part ``p >= 0`` over the tension ``-sigma0``, ``gap``
+        the separation, ``force`` the total force.
+    zone : numpy.ndarray
+        Boolean n x n array of the cells carrying ``-sigma0`` (separation below ``h0``: contact and cohesive zone).
+    force, delta0 : float
+        float
+        Total force (negative: pulled) and the prescribed depth.
+    contact_area, zone_area : float
+        float
+        Cells in contact (``p > 0`` or zero gap) and in the zone, times ``Delta^2``.
+    sigma0, h0, work_of_adhesion : float
+        float
+        Dugdale's law, ``w = sigma0 h0``.
+    tabor, maugis_lambda : float
+        float
+        Of the apex curvature in the mean (``R = 1/sqrt(k1 k2)``, (D.8)); for an axisymmetric punch the values of
+        :class:`CohesiveState`.
+    iterations : int
+        Fixed-point iterations on the zone.
+    """
+
+    contact: Any
+    zone: np.ndarray
+    force: float
+    delta0: float
+    contact_area: float
+    zone_area: float
+    sigma0: float
+    h0: float
+    work_of_adhesion: float
+    tabor: float
+    maugis_lambda: float
+    iterations: int
+
+    equation = "D.10"
+
+    @property
+    def contact_radius(self) -> float:
+        """``sqrt(contact_area/pi)``."""
+        return math.sqrt(self.contact_area / math.pi)
+
+    @property
+    def zone_radius(self) -> float:
+        """``sqrt(zone_area/pi)``."""
+        return math.sqrt(self.zone_area / math.pi)
+
+    def latex(self) -> str:
+        return (rf"P = {self.force:.8g},\quad |\omega| = {self.contact_area:.6g},\quad |\omega_{{D}}| = "
+                rf"{self.zone_area:.6g},\quad \lambda = {self.maugis_lambda:.4g} \tag{{D.10}}")
+
+    def text_lines(self) -> list[str]:
+        return [f"Cohesive2D (Maugis-Dugdale on the grid, n = {self.contact.n}): delta0 = {self.delta0:.8g}, "
+                f"P = {self.force:.10g}   (D.10)",
+                f"  contact area {self.contact_area:.8g}, zone area {self.zone_area:.8g}; sigma0 = {self.sigma0:.6g}, "
+                f"h0 = {self.h0:.6g}, lambda = {self.maugis_lambda:.6g} (mu_T = {self.tabor:.6g}); "
+                f"{self.iterations} iterations"]
+
+
+def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0, *,
+                      w: float, h0: float | None = None, sigma0: float | None = None, extent: float, n: int = 128,
+                      nu: float | None = None, tol: float = 1e-10, max_iterations: int = 200) -> Cohesive2D:
+    """Maugis-Dugdale adhesion of any punch on a layer: the Dugdale tension in the contact-set iteration (D.10).
+
+    (D.10) The traction is ``t = p - sigma0 chi_Z``: ``chi_Z`` the cells whose separation is below ``h0`` (contact
+    included) and ``p >= 0`` the compressive pressure of the contact problem (1.5) with the prescribed surface load
+    ``q = -sigma0 chi_Z`` (:func:`~thinlayer.numerics.solve_2d`'s ``surface_load``).  In contact ``t >= -sigma0``
+    (Dugdale's law holds there with any tension up to ``sigma0``: Maugis's pressure inside the contact,
+    ``p_Hertz - (2 sigma0/pi) arctan(...)``, is never below ``-sigma0``), in the cohesive zone ``t = -sigma0``, beyond
+    it 0.  The zone is found by the fixed point ``Z_{k+1} = {gap_k < h0}``, started from the rigid separation
+    ``Phi - delta0 < h0``, until it repeats.
+
+    Parameters
+    ----------
+    layer, punch, delta0, H, mu, nu, tol
+        As for :func:`~thinlayer.numerics.solve_2d` (any punch it takes; ``delta0`` may be small or, with
+        adhesion, the punch may be pulled: ``delta0 > 0`` is the depth of the apex below the undeformed surface).
+    w, h0, sigma0 : float
+        float
+        Work of adhesion and exactly one of the range ``h0`` and the stress ``sigma0``.
+    extent : float
+        Half-width of the computational square centred at the origin: it must hold the cohesive zone.
+    n : int
+        Cells per side.
+    max_iterations : int
+        Limit of the fixed point on the zone.
+
+    Returns
+    -------
+    Cohesive2D
+    """
+    from .fft2d import solve_2d  # same package, rank 4
+
+    wv = positive(w, "w (work of adhesion)")
+    if (h0 is None) == (sigma0 is None):
+        raise InputError("give exactly one of h0 (the Dugdale range) and sigma0 (the cohesive stress), w = sigma0 h0")
+    h0v = positive(h0, "h0") if h0 is not None else wv / positive(sigma0, "sigma0")
+    s0 = wv / h0v
+    half = positive(extent, "extent")
+    d0 = positive(delta0, "delta0")
+    x = -half + (np.arange(n) + 0.5) * (2.0 * half / n)
+    X1, X2 = np.meshgrid(x, x, indexing="ij")
+    phi = np.asarray(punch.lambdify()(X1, X2), dtype=float) if hasattr(punch, "lambdify") else None
+    if phi is None:
+        raise InputTypeError("punch must be a thinlayer Punch")
+    dx = 2.0 * half / n
+    frac = _coverage(np.broadcast_to(phi, X1.shape) - d0, h0v, dx)
+    res = None
+    change = math.inf
+    for it in range(1, max_iterations + 1):
+        res = solve_2d(layer, punch, d0, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
+        new = _coverage(np.asarray(res.gap), h0v, dx)
+        change = float(np.abs(new - frac).max())
+        frac = new
+        if change < 1e-9:
+            break
+    else:
+        raise InputError(f"the cohesive zone did not settle in {max_iterations} iterations (last change of the "
+                         f"covered fraction {change:.2e})")
+    res = solve_2d(layer, punch, d0, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
+    vt = res.vartheta
+    R = _mean_radius(punch)
+    frac.setflags(write=False)
+    cell = dx * dx
+    return Cohesive2D(res, frac, res.force, d0, res.contact_area, cell * float(frac.sum()), s0, h0v, wv,
+                      tabor_parameter(R, 2 * vt, wv, h0v), maugis_lambda(R, 2 * vt, wv, h0v), it)
+
+
+def _coverage(g: np.ndarray, h0: float, dx: float) -> np.ndarray:
+    """The fraction of each cell whose separation is below ``h0`` for the gap linear across the cell (D.10):
+    ``clip(1/2 + (h0 - g)/(Delta (|g_x| + |g_y|)), 0, 1)``, the gradient by central differences."""
+    g1, g2 = np.gradient(g, dx)
+    width = dx * (np.abs(g1) + np.abs(g2))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        f = np.where(width > 0, 0.5 + (h0 - g) / width, np.where(g < h0, 1.0, 0.0))
+    return np.clip(f, 0.0, 1.0)
+
+
+def _mean_radius(punch: Any) -> float:
+    """``1/sqrt(k1 k2)`` from the Hessian of Phi at the origin (the apex)."""
+    from .. import symbols as S
+
+    e = punch.expr
+    Hm = sp.Matrix([[sp.diff(e, a, b) for b in (S.x1, S.x2)] for a in (S.x1, S.x2)]).subs({S.x1: 0, S.x2: 0})
+    det = float(Hm.det())
+    if not det > 0:
+        raise InputError("the punch needs a rounded apex (positive-definite Hessian of Phi at the origin)")
+    return 1.0 / math.sqrt(det)
