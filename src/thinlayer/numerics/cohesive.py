@@ -733,7 +733,8 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
 
 def _coverage(g: np.ndarray, h0: float, dx: float) -> np.ndarray:
     """The fraction of each cell whose separation is below ``h0`` for the gap linear across the cell (D.10):
-    ``clip(1/2 + (h0 - g)/(Delta (|g_x| + |g_y|)), 0, 1)``, the gradient by central differences."""
+    ``clip(1/2 + (h0 - g)/(Delta (|g_x| + |g_y|)), 0, 1)``, the gradient by central differences.
+    """
     g1, g2 = np.gradient(g, dx)
     width = dx * (np.abs(g1) + np.abs(g2))
     with np.errstate(divide="ignore", invalid="ignore"):
