@@ -509,12 +509,14 @@ def maugis_dugdale(layer: LayerKernel, punch: Any, H: float | None = None, mu: f
 
     Examples
     --------
-    Maugis's lambda = 1 on the half-space (E* = 2 vartheta = 1/(1 - nu) = 1, R = 1, w = 1):
+    Maugis's lambda = 1 on the half-space (E* = 2 vartheta = 1, R = 1, w = 1, so ``h0 = 1/(pi K^2)^{1/3}`` with
+    ``K = 4/3``) at ``c = 1``: Maugis's reduced force ``P/(pi w R)`` (the closed form (D.7) gives -1.5546172766140):
 
     >>> from thinlayer import HalfSpace, Punch
-    >>> s = maugis_dugdale(HalfSpace(), Punch.paraboloid(R=1), w=1.0, h0=0.5, radius=1.0, nu=0.5 - 1e-12)
-    >>> s.zone_radius > s.radius, s.tensile
-    (True, False)
+    >>> h0 = 1.0 / (math.pi * (4 / 3) ** 2) ** (1 / 3)
+    >>> s = maugis_dugdale(HalfSpace(), Punch.paraboloid(R=1), mu=0.5, w=1.0, h0=h0, radius=1.0, nu=0.0)
+    >>> round(s.maugis_lambda, 12), round(s.force / math.pi, 10), s.tensile
+    (1.0, -1.5546172766, True)
     """
     pr = _problem(layer, punch, H, mu, w, h0, sigma0, nu, n)
     given = [v is not None for v in (radius, delta0, force)]
@@ -573,8 +575,8 @@ def pull_off(layer: LayerKernel, punch: Any, H: float | None = None, mu: float =
     --------
     >>> from thinlayer import HalfSpace, Punch
     >>> s = pull_off(HalfSpace(), Punch.paraboloid(R=1), w=1.0, h0=1e-3, nu=0.0, error_estimate=False)
-    >>> round(-s.force / math.pi, 2)   # JKR: 3 pi w R/2 as lambda -> oo (here lambda = 12)
-    1.51
+    >>> round(s.maugis_lambda), round(-s.force / math.pi, 4)   # JKR: 3 pi w R/2 as lambda -> oo
+    (710, 1.5)
     """
     pr = _problem(layer, punch, H, mu, w, h0, sigma0, nu, n)
     K = 8.0 * pr.vt / 3.0
