@@ -509,11 +509,11 @@ def maugis_dugdale(layer: LayerKernel, punch: Any, H: float | None = None, mu: f
 
     Examples
     --------
-    Maugis's lambda = 1 on the half-space (E* = 2 vartheta = 1, R = 1, w = 1, so ``h0 = 1/(pi K^2)^{1/3}`` with
+    Maugis's lambda = 1 on the half-space (E* = 2 vartheta = 1, R = 1, w = 1, so ``h0 = 2/(pi K^2)^{1/3}`` with
     ``K = 4/3``) at ``c = 1``: Maugis's reduced force ``P/(pi w R)`` (the closed form (D.7) gives -1.5546172766140):
 
     >>> from thinlayer import HalfSpace, Punch
-    >>> h0 = 1.0 / (math.pi * (4 / 3) ** 2) ** (1 / 3)
+    >>> h0 = 2.0 / (math.pi * (4 / 3) ** 2) ** (1 / 3)
     >>> s = maugis_dugdale(HalfSpace(), Punch.paraboloid(R=1), mu=0.5, w=1.0, h0=h0, radius=1.0, nu=0.0)
     >>> round(s.maugis_lambda, 12), round(s.force / math.pi, 10), s.tensile
     (1.0, -1.5546172766, True)
