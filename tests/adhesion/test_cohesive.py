@@ -191,6 +191,22 @@ def test_prescribed_depth_and_force_return_the_state_at_that_radius(layer, H, nu
     assert "D.9" in ref.latex() and ("[tensile]" in str(ref)) == ref.tensile
 
 
+def test_abel_load_of_the_module_equals_the_revolution_solver():
+    """(F.11) h(s) of the module's fixed 40-point rule against thinlayer.numerics.revolution.abel_load (graded
+    rule) and, for the sphere, the closed form s^2/R."""
+    import numpy as np
+
+    from thinlayer.numerics import cohesive
+    from thinlayer.numerics.revolution import abel_load
+
+    slope, R = cohesive._slope_of(Punch.fourth_degree(R=2, K=1))
+    s = np.linspace(0.0, 3.0, 7)
+    assert np.allclose(cohesive._h(slope, s), abel_load(slope, (), s), rtol=1e-13, atol=1e-14)
+    assert R == 2.0
+    slope, _ = cohesive._slope_of(SPHERE)
+    assert np.allclose(cohesive._h(slope, s), s**2, rtol=1e-14, atol=1e-15)
+
+
 def test_bad_input_is_one_clear_line():
     kw = dict(w=1.0, radius=1.0, nu=0.3)
     with pytest.raises(InputError, match="exactly one of h0"):
