@@ -72,6 +72,7 @@ the change of depth and force against a run with ``0.7 n`` nodes and coarser rul
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
@@ -79,7 +80,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .._checks import InputError, InputTypeError, positive
+from .._checks import InputError, InputTypeError, check_int, positive
 from .._lazy import lazy_module
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
@@ -531,9 +532,13 @@ def maugis_dugdale(layer: LayerKernel, punch: Any, H: float | None = None, mu: f
         raise InputError("give exactly one of radius (contact radius c), delta0 (depth) and force")
     if radius is not None:
         return _state(pr, positive(radius, "radius"), error_estimate)
-    target, which = (float(delta0), 1) if delta0 is not None else (float(force), 2)
+    name, which = ("delta0", 1) if delta0 is not None else ("force", 2)
+    value = delta0 if delta0 is not None else force
+    if isinstance(value, (bool, str)) or not isinstance(value, (numbers.Real, np.floating, sp.Number)):
+        raise InputTypeError(f"{name} must be a finite real number, got {value!r:.60} ({type(value).__name__})")
+    target = float(value)
     if not math.isfinite(target):
-        raise InputError(f"{'delta0' if which == 1 else 'force'} must be finite, got {target!r}")
+        raise InputError(f"{name} must be a finite number, got {value!r:.60}")
     c = _radius_for(pr, target, which)
     return _state(pr, c, error_estimate)
 
@@ -712,6 +717,8 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
     s0 = wv / h0v
     half = positive(extent, "extent")
     d0 = positive(delta0, "delta0")
+    n = check_int(n, "n (cells per side)", 8)
+    max_iterations = check_int(max_iterations, "max_iterations", 1)
     x = -half + (np.arange(n) + 0.5) * (2.0 * half / n)
     X1, X2 = np.meshgrid(x, x, indexing="ij")
     phi = np.asarray(punch.lambdify()(X1, X2), dtype=float) if hasattr(punch, "lambdify") else None
