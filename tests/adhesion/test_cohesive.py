@@ -191,6 +191,31 @@ def test_prescribed_depth_and_force_return_the_state_at_that_radius(layer, H, nu
     assert "D.9" in ref.latex() and ("[tensile]" in str(ref)) == ref.tensile
 
 
+@slow
+@pytest.mark.parametrize("H_over_R", [1.0, 0.3])
+def test_pull_off_on_the_layer_refines_and_tends_to_the_jkr_solver(H_over_R):
+    """Item 2: the pull-off force on a bonded layer (nu = 0.3, w/(E* R) = 0.01).  Refinement: 1.5 times the nodes
+    changes it by less than 1e-10 at lambda = 1.  Large lambda: P_MD - P_JKR falls like lambda^-2, and the
+    Richardson value of lambda = 10, 20 equals the pull-off of the JKR direct solver (J.6) to 2e-5 (half-space:
+    3.3e-6, the next order lambda^-3 left)."""
+    import numpy as np
+
+    from thinlayer.numerics.adhesion import jkr_curve
+
+    w, mu = 0.01, 0.35
+    h0 = {lmb: w / (lmb / 2 * (math.pi * w * K**2) ** (1 / 3)) for lmb in (1.0, 10.0, 20.0)}
+    layer = BondedLayer(0.3)
+    st = pull_off(layer, SPHERE, H_over_R, mu, w=w, h0=h0[1.0])
+    fine = pull_off(layer, SPHERE, H_over_R, mu, w=w, h0=h0[1.0], n=round(1.5 * st.nodes), error_estimate=False)
+    assert abs(st.force - fine.force) < 1e-10 * abs(st.force)
+    P10, P20 = (pull_off(layer, SPHERE, H_over_R, mu, w=w, h0=h0[v], error_estimate=False).force for v in (10.0, 20.0))
+    c0 = (6 * math.pi * w / K) ** (1 / 3)
+    jkr = jkr_curve(layer, SPHERE, np.geomspace(0.2 * c0, 1.2 * c0, 25), H_over_R, mu, work_of_adhesion=w)
+    rich = P20 + (P20 - P10) / 3
+    assert abs(rich / jkr.pull_off_load.force - 1) < 2e-5
+    assert P10 < P20 < jkr.pull_off_load.force < 0  # MD pulls harder and approaches JKR from above
+
+
 def test_abel_load_of_the_module_equals_the_revolution_solver():
     """(F.11) h(s) of the module's fixed 40-point rule against thinlayer.numerics.revolution.abel_load (graded
     rule) and, for the sphere, the closed form s^2/R."""

@@ -62,6 +62,12 @@ half-space's (the layer changes the compliance, not the definition).
 force follow from (D.4), (D.5).  At a prescribed depth or force, ``c`` is found by Brent's method on the stable
 branch (the largest c with that depth or force).  Pull-off (load control): the minimum of ``P(c)``.
 
+(D.10) *Any punch, on the grid of* :func:`~thinlayer.numerics.solve_2d`.  The traction is ``p - sigma0 chi_Z``
+with ``chi_Z`` the (fractional) cells whose separation is below ``h0``, contact included, and ``p >= 0`` the
+compressive part solved by the contact-set iteration with ``q = -sigma0 chi_Z`` as a prescribed surface load
+(``solve_2d(surface_load=)``); ``Z`` by a fixed point (:func:`maugis_dugdale_2d`).  Checked against (D.3)-(D.9) for
+the sphere (tests/adhesion/test_cohesive_2d.py).
+
 Discretisation and error
 ------------------------
 The collocation of (F.6) with ``n`` nodes (default ``ceil(4 sqrt(c/H)) + 16``), its t-rule for ``f_1``, ``f_Phi``,
