@@ -216,6 +216,27 @@ def test_pull_off_on_the_layer_refines_and_tends_to_the_jkr_solver(H_over_R):
     assert P10 < P20 < jkr.pull_off_load.force < 0  # MD pulls harder and approaches JKR from above
 
 
+@pytest.mark.parametrize("layer,H,nu", [(HalfSpace(), None, 0.3), (BondedLayer(0.3), 0.5, None)])
+def test_pressure_integrates_to_the_force_and_is_maugis_on_the_half_space(layer, H, nu):
+    """(D.11): 2 pi int p r dr (quadrature of pressure_at) equals the force (D.5) to 1e-10; p = -sigma0 on the zone,
+    continuous at c; on the half-space p is Maugis's Hertz-plus-arctan pressure to 1e-10."""
+    import numpy as np
+    from scipy import integrate
+
+    st = maugis_dugdale(layer, SPHERE, H, 0.35, w=1.0, h0=h0_of(1.0), radius=1.0, nu=nu, error_estimate=False)
+    c, b = st.radius, st.zone_radius
+    inner = integrate.quad(lambda r: 2 * math.pi * r * st.lambdify()(r)[0], 0, c, limit=200, epsabs=1e-13,
+                           epsrel=1e-13)[0]
+    assert abs((inner - st.sigma0 * math.pi * (b * b - c * c)) / st.force - 1) < 1e-10
+    edge = st.pressure_at([c * (1 - 1e-12), c, 0.5 * (c + b), 1.01 * b])
+    assert np.allclose(edge, [-st.sigma0, -st.sigma0, -st.sigma0, 0.0], atol=1e-5 * st.sigma0)
+    if H is None:
+        r = np.linspace(0.0, 0.99, 7)
+        hertz = 4 * st.vartheta * c / math.pi * np.sqrt(1 - (r / c) ** 2)  # p0 = 2 E* c/(pi R), R = 1
+        maugis = hertz - 2 * st.sigma0 / math.pi * np.arctan(np.sqrt((b * b - c * c) / (c * c - r * r)))
+        assert np.abs(st.pressure_at(r) - maugis).max() < 1e-10
+
+
 def test_abel_load_of_the_module_equals_the_revolution_solver():
     """(F.11) h(s) of the module's fixed 40-point rule against thinlayer.numerics.revolution.abel_load (graded
     rule) and, for the sphere, the closed form s^2/R."""

@@ -79,7 +79,7 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
@@ -292,8 +292,10 @@ def _t_rule(layer: LayerKernel, lam: float, level: int, n: int, coarse: bool
 
 
 def _equations(layer: LayerKernel, rd: _Radius, slope: Any, vt: float, sigma0: float, m: float
-               ) -> tuple[float, float, float]:
-    """``(delta, P, separation at b)`` at the contact radius ``c`` and ``m = b/c`` (D.3)-(D.6)."""
+               ) -> tuple[float, float, float, np.ndarray]:
+    """``(delta, P, separation at b, a)`` at the contact radius ``c`` and ``m = b/c`` (D.3)-(D.6); ``a`` the Legendre
+    coefficients of ``f = sum_j a_j P_2j`` on ``[0, 1]``.
+    """
     c, lam = rd.c, rd.lam
     s = sigma0 * c / vt
     root = math.sqrt((m - 1.0) * (m + 1.0))
@@ -311,18 +313,19 @@ def _equations(layer: LayerKernel, rd: _Radius, slope: Any, vt: float, sigma0: f
         iD = float(aD[0])
     else:
         eD = iD = 0.0
+        fD = 0.0
     delta = (rd.ep + s * (eD - root)) / rd.e1  # (D.4)
     force = 4.0 * vt * c * (delta * rd.i1 - rd.ip - s * iD) - 2.0 * sigma0 * c * c * (m * m * th1 - root)  # (D.5)
     corr = 0.0
+    a = rd.T @ (delta * rd.sol[:, 0] - rd.sol[:, 1] - s * fD)
     if lam > 0:
-        a = rd.T @ (delta * rd.sol[:, 0] - rd.sol[:, 1] - s * fD)
         corr = float(wt @ (W * (J @ a - s * Sh)))
     gap = (2.0 / math.pi) * (-s * (m - 1.0) - delta * th1 + h_zone - corr)  # (D.6)
-    return delta, force, gap
+    return delta, force, gap, a
 
 
-def _zone_ratio(layer, rd, slope, vt, sigma0, h0) -> tuple[float, float, float, float]:
-    """``(m, delta, P, gap)`` with the separation at ``b = m c`` equal to ``h0`` (D.6), by Brent's method in m."""
+def _zone_ratio(layer, rd, slope, vt, sigma0, h0) -> tuple[float, float, float, np.ndarray]:
+    """``(m, delta, P, a)`` with the separation at ``b = m c`` equal to ``h0`` (D.6), by Brent's method in m."""
     def fun(m: float) -> float:
         return _equations(layer, rd, slope, vt, sigma0, m)[2] - h0
 
@@ -339,8 +342,8 @@ def _zone_ratio(layer, rd, slope, vt, sigma0, h0) -> tuple[float, float, float, 
         else:
             raise InputError("the cohesive zone could not be bracketed (b/c > 1e60)")
         m = optimize.brentq(fun, lo, hi, xtol=1e-14, rtol=1e-13)
-    d, P, g = _equations(layer, rd, slope, vt, sigma0, m)
-    return m, d, P, g
+    d, P, _, a = _equations(layer, rd, slope, vt, sigma0, m)
+    return m, d, P, a
 
 
 # --------------------------------------------------------------------------- the result
@@ -394,6 +397,7 @@ class CohesiveState(RichDisplay):
     delta_error: float
     force_error: float
     nodes: int
+    coefficients: tuple = field(default=(), repr=False)  # f = sum_j a_j P_2j(r/c) on the contact (D.3)
 
     equation = "D.9"
 
@@ -407,10 +411,39 @@ class CohesiveState(RichDisplay):
                 rf"P = {self.force:.10g},\quad \lambda = {self.maugis_lambda:.6g}\ (\mu_T = {self.tabor:.6g})"
                 r" \tag{D.9}")
 
+    def pressure_at(self, r: Any) -> np.ndarray:
+        """The surface pressure ``p(r)`` (tensile < 0) from Copson's representation (F.3) over ``r < b`` (D.11)::
+
+            p = -(2 vartheta/(pi c)) int_x^1 f'(y)/sqrt(y^2 - x^2) dy
+                - (2 sigma0/pi) arctan sqrt((b^2 - c^2)/(c^2 - r^2))
+
+        for ``x = r/c < 1`` (the second term from ``phi_D' = (2/pi) sigma0 t/sqrt(b^2 - t^2)`` on ``(c, b)``:
+        Maugis's term), ``-sigma0`` on ``c < r < b``, zero beyond; continuous at ``c`` (D.4).
+        """
+        rr = np.atleast_1d(np.asarray(r, dtype=float))
+        c, b = self.radius, self.zone_radius
+        out = np.zeros_like(rr)
+        out[(rr >= c) & (rr < b)] = -self.sigma0
+        inside = rr < c
+        if inside.any():
+            x = rr[inside] / c
+            coef = np.zeros(2 * len(self.coefficients) - 1)
+            coef[::2] = self.coefficients
+            dcoef = np.polynomial.legendre.legder(coef)
+            v, wv = _legendre(40)
+            v, wv = 0.5 * (v + 1.0), 0.5 * wv
+            y = x[:, None] + (1.0 - x[:, None]) * v[None, :] ** 2  # y - x = (1 - x) v^2: no singularity
+            integrand = np.polynomial.legendre.legval(y, dcoef) * 2.0 * np.sqrt(1.0 - x[:, None]) / np.sqrt(
+                y + x[:, None])
+            contact = -(2.0 * self.vartheta / (math.pi * c)) * (integrand @ wv)
+            with np.errstate(divide="ignore"):
+                zone = -(2.0 * self.sigma0 / math.pi) * np.arctan(np.sqrt((b * b - c * c) / (c * c - rr[inside] ** 2)))
+            out[inside] = contact + zone
+        return out
+
     def lambdify(self):
-        """``(c, b, delta, P)`` as a function of nothing: the state's numbers (for a uniform interface)."""
-        vals = (self.radius, self.zone_radius, self.delta, self.force)
-        return lambda: vals
+        """The pressure ``p(r)`` as a numeric function (:meth:`pressure_at`)."""
+        return self.pressure_at
 
     def text_lines(self) -> list[str]:
         return [f"CohesiveState (Maugis-Dugdale): {self.layer}, H = {self.H:.6g}, mu = {self.mu:.6g}, "
@@ -465,15 +498,18 @@ def _problem(layer, punch, H, mu, w, h0, sigma0, nu, n) -> _Problem:
 
 def cohesive_equations(pr: _Problem, c: float, coarse: bool = False) -> tuple[float, float, float]:
     """``(m = b/c, delta, P)`` of the Maugis-Dugdale state at the contact radius ``c`` (D.3)-(D.6)."""
+    return _solve_radius(pr, c, coarse)[:3]
+
+
+def _solve_radius(pr: _Problem, c: float, coarse: bool = False) -> tuple[float, float, float, np.ndarray]:
     if pr.H is not None and c / pr.H > MAX_A_OVER_H:
         raise InputError(f"c/H = {c / pr.H:.4g} exceeds {MAX_A_OVER_H:g}, the exact flat-punch solver's limit")
     rd = _radius_data(pr.layer, pr.H, pr.slope, c, pr.n, coarse)
-    m, d, P, _ = _zone_ratio(pr.layer, rd, pr.slope, pr.vt, pr.sigma0, pr.h0)
-    return m, d, P
+    return _zone_ratio(pr.layer, rd, pr.slope, pr.vt, pr.sigma0, pr.h0)
 
 
 def _state(pr: _Problem, c: float, error_estimate: bool) -> CohesiveState:
-    m, d, P = cohesive_equations(pr, c)
+    m, d, P, a = _solve_radius(pr, c)
     d_err = P_err = 0.0
     if error_estimate:
         _, dc, Pc = cohesive_equations(pr, c, coarse=True)
@@ -482,7 +518,7 @@ def _state(pr: _Problem, c: float, error_estimate: bool) -> CohesiveState:
     n = pr.n or default_nodes(c / pr.H if pr.H is not None else 0.0)
     return CohesiveState(pr.layer, pr.H if pr.H is not None else math.nan, pr.mu, pr.nu, pr.vt, pr.R, pr.w, pr.sigma0,
                          pr.h0, c, m * c, d, P, tabor_parameter(pr.R, E_star, pr.w, pr.h0),
-                         maugis_lambda(pr.R, E_star, pr.w, pr.h0), d_err, P_err, n)
+                         maugis_lambda(pr.R, E_star, pr.w, pr.h0), d_err, P_err, n, tuple(float(v) for v in a))
 
 
 def maugis_dugdale(layer: LayerKernel, punch: Any, H: float | None = None, mu: float = 1.0, *, w: float,
