@@ -84,3 +84,16 @@ def test_elliptic_paraboloid_refines():
     i, j = np.nonzero(z)
     assert np.ptp(x[j]) > 1.1 * np.ptp(x[i])
     assert abs(out[1].maugis_lambda / out[1].tabor - 2 * (9 / (16 * math.pi)) ** (1 / 3)) < 1e-12
+
+
+@slow
+def test_pulled_state_and_the_unresolved_zone():
+    """A pulled state (c = 0.7, delta0 = -0.40 < 0, lambda = 1, n = 48): force within 0.5 % of the axisymmetric solver
+    (measured 0.13 %); lambda = 10 (b - c = 0.007 c, far below a cell at n = 48) is refused in one line."""
+    ax = axisymmetric(c=0.7)
+    assert ax.delta < 0
+    r = maugis_dugdale_2d(LAYER, SPHERE, ax.delta, H, MU, w=1.0, h0=h0_of(1.0), extent=1.3 * ax.zone_radius, n=48)
+    assert abs(r.force / ax.force - 1) < 5e-3 and r.delta0 == ax.delta
+    ax10 = axisymmetric(lmb=10.0)
+    with pytest.raises(InputError, match="narrower than half a cell"):
+        maugis_dugdale_2d(LAYER, SPHERE, ax10.delta, H, MU, w=1.0, h0=h0_of(10.0), extent=1.3 * ax10.zone_radius, n=48)

@@ -79,6 +79,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import warnings
 from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
@@ -733,9 +734,12 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
 
     Parameters
     ----------
-    layer, punch, delta0, H, mu, nu, tol
-        As for :func:`~thinlayer.numerics.solve_2d` (any punch it takes; ``delta0`` may be small or, with
-        adhesion, the punch may be pulled: ``delta0 > 0`` is the depth of the apex below the undeformed surface).
+    layer, punch, H, mu, nu, tol
+        As for :func:`~thinlayer.numerics.solve_2d`; the punch a thinlayer :class:`~thinlayer.punch.Punch` with a
+        rounded apex at the origin (its mean radius of curvature defines lambda and mu_T).
+    delta0 : float
+        Depth of the apex below the undeformed surface; ``<= 0`` when the punch is pulled (solved as the punch
+        raised by a constant).
     w, h0, sigma0 : float
         float
         Work of adhesion and exactly one of the range ``h0`` and the stress ``sigma0``.
@@ -750,7 +754,8 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
     -------
     Cohesive2D
     """
-    from .fft2d import solve_2d  # same package, rank 4
+    from ..punch import Punch
+    from .fft2d import CoarseGridWarning, solve_2d  # same package, rank 4
 
     wv = positive(w, "w (work of adhesion)")
     if (h0 is None) == (sigma0 is None):
@@ -758,20 +763,27 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
     h0v = positive(h0, "h0") if h0 is not None else wv / positive(sigma0, "sigma0")
     s0 = wv / h0v
     half = positive(extent, "extent")
-    d0 = positive(delta0, "delta0")
+    if isinstance(delta0, (bool, str)) or not isinstance(delta0, (numbers.Real, np.floating, sp.Number)) \
+            or not math.isfinite(float(delta0)):
+        raise InputTypeError(f"delta0 must be a finite real number (negative when the punch is pulled above the "
+                             f"surface), got {delta0!r:.60}")
+    d0 = float(delta0)
     n = check_int(n, "n (cells per side)", 8)
     max_iterations = check_int(max_iterations, "max_iterations", 1)
+    if not (hasattr(punch, "lambdify") and hasattr(punch, "expr")):
+        raise InputTypeError(f"punch must be a thinlayer Punch, got {type(punch).__name__}")
+    R = _mean_radius(punch)
+    # solve_2d takes delta0 > 0: a pulled punch (delta0 <= 0) is the same punch raised by k (Phi + k, delta0 + k)
+    k = 0.0 if d0 > 0 else 2.0 * h0v - d0
+    work_punch = punch if k == 0.0 else Punch(punch.expr + k)
     x = -half + (np.arange(n) + 0.5) * (2.0 * half / n)
     X1, X2 = np.meshgrid(x, x, indexing="ij")
-    phi = np.asarray(punch.lambdify()(X1, X2), dtype=float) if hasattr(punch, "lambdify") else None
-    if phi is None:
-        raise InputTypeError("punch must be a thinlayer Punch")
+    phi = np.broadcast_to(np.asarray(punch.lambdify()(X1, X2), dtype=float), X1.shape)
     dx = 2.0 * half / n
-    frac = _coverage(np.broadcast_to(phi, X1.shape) - d0, h0v, dx)
-    res = None
+    frac = _coverage(phi - d0, h0v, dx)
     change = math.inf
     for it in range(1, max_iterations + 1):
-        res = solve_2d(layer, punch, d0, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
+        res = solve_2d(layer, work_punch, d0 + k, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
         new = _coverage(np.asarray(res.gap), h0v, dx)
         change = float(np.abs(new - frac).max())
         frac = new
@@ -780,12 +792,23 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
     else:
         raise InputError(f"the cohesive zone did not settle in {max_iterations} iterations (last change of the "
                          f"covered fraction {change:.2e})")
-    res = solve_2d(layer, punch, d0, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
-    vt = res.vartheta
-    R = _mean_radius(punch)
-    frac.setflags(write=False)
+    res = solve_2d(layer, work_punch, d0 + k, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
     cell = dx * dx
-    return Cohesive2D(res, frac, res.force, d0, res.contact_area, cell * float(frac.sum()), s0, h0v, wv,
+    zone_area = cell * float(frac.sum())
+    perimeter = sum(float(np.hypot(*np.diff(line, axis=0).T).sum()) for line in res.contour)
+    width = (zone_area - res.contact_area) / perimeter if perimeter > 0 else math.inf
+    if width < 0.5 * dx:
+        raise InputError(f"the cohesive zone (mean width {max(width, 0.0):.3g}) is narrower than half a cell (Delta = "
+                         f"{dx:.3g}): the grid cannot resolve Dugdale's law here (Maugis lambda = "
+                         f"{maugis_lambda(R, 2 * res.vartheta, wv, h0v):.3g}); refine n or reduce extent, or use the "
+                         "JKR limit (thinlayer.numerics.adhesion) for large lambda")
+    if width < 2.0 * dx:
+        warnings.warn(f"the cohesive zone is only {width / dx:.2g} cells wide (mean width {width:.3g}, Delta = "
+                      f"{dx:.3g}): expect errors of a few percent in the force (measured for the sphere at lambda = 3: "
+                      "1.7 % at 1.3 cells, 0.85 % at n doubled); refine n", CoarseGridWarning, stacklevel=2)
+    vt = res.vartheta
+    frac.setflags(write=False)
+    return Cohesive2D(res, frac, res.force, d0, res.contact_area, zone_area, s0, h0v, wv,
                       tabor_parameter(R, 2 * vt, wv, h0v), maugis_lambda(R, 2 * vt, wv, h0v), it)
 
 
