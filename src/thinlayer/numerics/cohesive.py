@@ -68,6 +68,21 @@ compressive part solved by the contact-set iteration with ``q = -sigma0 chi_Z`` 
 (``solve_2d(surface_load=)``); ``Z`` by a fixed point (:func:`maugis_dugdale_2d`).  Checked against (D.3)-(D.9) for
 the sphere (tests/adhesion/test_cohesive_2d.py).
 
+Pull-off on the layer (measured; sphere, bonded layer nu = 0.3, ``w/(E* R) = 0.01``, ``-P_off/(pi w R)``)
+-------------------------------------------------------------------------------------------------------
+``lambda`` is the half-space's (D.8).  Refinement (1.5 n nodes) changes every entry by < 2e-14; at large lambda
+``P_MD - P_JKR ~ lambda^-2`` and the Richardson value of lambda = 10, 20 equals the JKR direct solver's pull-off
+(:func:`~thinlayer.numerics.adhesion.jkr_curve`) to 3e-6 - 4e-6 (tests/adhesion/test_cohesive.py, SLOW)::
+
+    H/R    lambda=0.1   lambda=1     lambda=10    lambda=20    JKR solver   Richardson(10, 20) - JKR
+    inf    1.95059489   1.60073491   1.50162486   1.50040866   1.50000000   3.3e-6
+    3      1.95211938   1.60186144   1.50264595   1.50142865   1.50101962   3.3e-6
+    1      1.96898265   1.62588005   1.52467122   1.52343013   1.52301312   3.3e-6
+    0.3    1.99412040   1.83871660   1.72783850   1.72635988   1.72586276   4.2e-6
+    0.1    1.99907360   1.99050787   1.89912885   1.89722325   1.89658379   4.3e-6
+
+A thin layer makes the contact stiffer: at a fixed lambda the pull-off moves toward DMT's 2 (H/R = 0.1, lambda = 1).
+
 Discretisation and error
 ------------------------
 The collocation of (F.6) with ``n`` nodes (default ``ceil(4 sqrt(c/H)) + 16``), its t-rule for ``f_1``, ``f_Phi``,
