@@ -86,9 +86,14 @@ A thin layer makes the contact stiffer: at a fixed lambda the pull-off moves tow
 Discretisation and error
 ------------------------
 The collocation of (F.6) with ``n`` nodes (default ``ceil(4 sqrt(c/H)) + 16``), its t-rule for ``f_1``, ``f_Phi``,
-``f_D``; the m-dependent transforms ``W``, ``Shat`` on a composite t-rule with panels no longer than
-``min(pi/m, lambda/2)`` and a composite Gauss-Legendre theta-rule resolving ``t (m - 1)``.  The error estimate is
-the change of depth and force against a run with ``0.7 n`` nodes and coarser rules (measured in the tests).
+``f_D``; the m-dependent sums of (D.6) on a composite 16-point t-rule with panels no longer than
+``min(6/(2^k + 1), lambda/2)``, ``2^k >= m`` (frequencies up to ``m + 1``), and ``W``, ``Shat`` by a composite
+Gauss-Legendre rule in theta (``m <= 2``) or by the complements of their closed forms on ``[0, m]`` (``m > 2``), with
+4 radians of phase per panel (:func:`_zone_transforms`).  The error estimate is
+the change of depth and force against a run with ``0.7 n`` nodes and coarser rules, never below 1e-12 relative.
+Measured (sphere, lambda = 1, c/H = 10, bonded nu = 0.3 and incompressible): the error against 60 nodes falls by
+20-30 per two nodes (exponential convergence) from 1.4e-5 at 8 nodes to 3e-14 at 20; the estimate exceeds it by
+4-700 times (at rounding level, 24 nodes and more, it is the floor).
 """
 from __future__ import annotations
 
@@ -115,6 +120,8 @@ special, optimize = (lazy_module(f"scipy.{m}") for m in ("special", "optimize"))
 __all__ = ["CohesiveState", "cohesive_equations", "half_space_equations", "maugis_dugdale", "pull_off",
            "maugis_dugdale_2d", "maugis_lambda", "tabor_parameter", "Cohesive2D"]
 
+#: relative floor of the error estimates (rounding of the collocation and the quadratures)
+ROUNDING_FLOOR = 1e-12
 #: Maugis's lambda over Tabor's mu_T (both with the Dugdale range h0): 2 (9/(16 pi))^(1/3)  (D.8)
 LAMBDA_OVER_TABOR = 2.0 * (9.0 / (16.0 * math.pi)) ** (1.0 / 3.0)
 
@@ -529,7 +536,10 @@ def _state(pr: _Problem, c: float, error_estimate: bool) -> CohesiveState:
     d_err = P_err = 0.0
     if error_estimate:
         _, dc, Pc = cohesive_equations(pr, c, coarse=True)
-        d_err, P_err = abs(d - dc), abs(P - Pc)
+        # never below the rounding floor 1e-12 (relative): measured against 60 nodes at c/H = 10, the converged runs
+        # scatter by 1e-13 - 4e-13 while the coarse-run change fell to 4e-14
+        d_err = max(abs(d - dc), ROUNDING_FLOOR * abs(d))
+        P_err = max(abs(P - Pc), ROUNDING_FLOOR * abs(P))
     E_star = 2.0 * pr.vt
     n = pr.n or default_nodes(c / pr.H if pr.H is not None else 0.0)
     return CohesiveState(pr.layer, pr.H if pr.H is not None else math.nan, pr.mu, pr.nu, pr.vt, pr.R, pr.w, pr.sigma0,
