@@ -465,7 +465,11 @@ def _setup(layer: Any, punch: Any, delta0: Any, H: Any, mu: Any, n: Any, extent:
         if delta0 is None or extent is None:
             raise InputError("surface_load= needs delta0= and extent= (the load lives on the grid that extent and n "
                              "define; a prescribed force is not supported with it)")
-        load = np.array(surface_load(x1, x2) if callable(surface_load) else surface_load, dtype=float)
+        try:
+            load = np.array(surface_load(x1, x2) if callable(surface_load) else surface_load, dtype=float)
+        except (TypeError, ValueError):
+            raise InputTypeError(f"surface_load must be a finite {n} x {n} array of numbers (or a callable of the cell "
+                                 f"centres x1, x2 returning one), got {type(surface_load).__name__}") from None
         if load.shape != (n, n) or not np.all(np.isfinite(load)):
             raise InputError(f"surface_load must be a finite {n} x {n} array (or a callable of the cell centres "
                              f"x1, x2 returning one), got shape {load.shape}")
