@@ -117,8 +117,8 @@ from .flat_punch import MAX_A_OVER_H, MAX_NODES, check_numeric_layer, collocatio
 
 special, optimize = (lazy_module(f"scipy.{m}") for m in ("special", "optimize"))
 
-__all__ = ["CohesiveState", "cohesive_equations", "half_space_equations", "maugis_dugdale", "pull_off",
-           "maugis_dugdale_2d", "maugis_lambda", "tabor_parameter", "Cohesive2D"]
+__all__ = ["Cohesive2D", "CohesiveState", "half_space_equations", "maugis_dugdale", "maugis_dugdale_2d",
+           "maugis_lambda", "pull_off", "tabor_parameter"]
 
 #: relative floor of the error estimates (rounding of the collocation and the quadratures)
 ROUNDING_FLOOR = 1e-12
