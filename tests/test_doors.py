@@ -316,6 +316,7 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=0.1, n=s),
         lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=1.0, n=32, extent=s),
         lambda s: tl.solve_2d(F().L, F().P, force=s, H=1.0, n=32),
+        lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=1.0, n=32, extent=2.0, surface_load=s),
         lambda s: tl.solve_2d(tl.FrictionlessLayer(), F().P, delta0=0.1, H=1.0, n=32, nu=s)],
     "thinlayer.force_any_thickness": [
         lambda s: tl.force_any_thickness(s, 10.0, 2.0, mu=1.0), lambda s: tl.force_any_thickness(0.1, s, 2.0, mu=1.0),
