@@ -524,12 +524,14 @@ def _result(curve, x, f, sol, H0, xc_fixed, rng_, range_kind, baseline, n_boot, 
     dmax = max(float(np.max(x - xc)), 0.0)
     tip_words = (f"sphere R = {law.R:.6g}" if not math.isnan(law.R)
                  else getattr(law.tip, "description", None) or law.tip.name)
+    se = {k: float(v) for k, v in se.items()}
     return CurveFit(
-        E, se["E"], HH, se.get("H", 0.0), s * xc, se.get("z0", 0.0), b0, se["b0"], s * bx, se.get("b1", 0.0),
+        float(E), se["E"], float(HH), se.get("H", 0.0), float(s * xc), se.get("z0", 0.0), float(b0), se["b0"],
+        float(s * bx), se.get("b1", 0.0),
         float(np.sqrt(np.mean(resid ** 2))), _ro(resid), _ro(cov), tuple(names), int(x.size), law.model, law.base,
         law.nu, law.R, tip_words, chi_max, dmax, bool(valid), float(err), why, tuple(flags), baseline, weighting, wcp,
         curve.axis, s, tuple(curve.units), curve.source, curve.segment, rng_, range_kind, cond, n_boot, b, phi,
-        failures, boot["E"], boot["H"] if fit_H else (math.nan if n_boot else math.nan),
+        failures, boot["E"], boot["H"] if fit_H else math.nan,
         boot["z0"] if xc_fixed is None else math.nan, boot["b0"], boot["b1"] if slope else math.nan, law)
 
 

@@ -150,12 +150,14 @@ def load_curve(path: str | Path, segment: str = "approach", index: int = 0) -> C
     if size > MAX_BYTES:
         raise InputError(f"{path}: {size} bytes exceed the limit of {MAX_BYTES} bytes")
     import afmformats
+    import afmformats.errors
 
     try:
         with warnings.catch_warnings():  # afmformats warns about metadata it does not know; the data are read
             warnings.simplefilter("ignore")
             group = afmformats.load_data(p)
-    except Exception as exc:  # noqa: BLE001 - any failure of the reader is the file's: one line, the formats named
+    except (Exception, afmformats.errors.AFMFileFormatError, afmformats.errors.MissingMetaDataError) as exc:  # noqa: BLE001
+        # any failure of the reader is the file's (afmformats' own errors derive from BaseException): one line
         text = " ".join(str(exc).split())[:160]
         raise InputError(f"{path}: afmformats cannot read it ({type(exc).__name__}: {text}); it reads "
                          f"{', '.join(suffixes)}") from None
