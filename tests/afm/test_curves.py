@@ -34,7 +34,7 @@ PRE = ["compute_tip_position", "correct_force_offset", "correct_tip_offset"]
 @lru_cache(maxsize=None)
 def _nanite(name: str, index: int):
     """nanite's own route: its preprocessing (tip position, offsets) and its hertz_para fit with its contact-point
-    model (weights over 1 um, its default).  Returns (E, the tip-position column, the force, nanite's tip offset)."""
+    model (weights over 1 um, its default).  Returns (E, the tip-position column, the force, E's standard error)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         idnt = nanite.load_group(DATA / name)[index]
@@ -44,7 +44,8 @@ def _nanite(name: str, index: int):
         idnt.fit_model(model_key="hertz_para", params_initial=p)
         assert idnt.fit_properties["success"]
         seg = np.asarray(idnt["segment"]) == 0
-        return idnt.fit_properties["params_fitted"]["E"].value, raw[seg], np.array(idnt["force"])[seg]
+        E = idnt.fit_properties["params_fitted"]["E"]
+        return E.value, raw[seg], np.array(idnt["force"])[seg], E.stderr
 
 
 # ---- load_curve ----------------------------------------------------------------------------------------------------
@@ -53,7 +54,7 @@ def test_load_curve_reads_the_tip_position_as_nanite_computes_it():
     assert isinstance(c, Curve) and c.segment == "approach" and c.n_points == 2000 and c.units == ("m", "N")
     assert c.axis == "tip position" and c.direction == -1
     assert c.spring_constant == pytest.approx(0.043493666407368466, rel=1e-15)  # the file's, via afmformats
-    _, tip, _ = _nanite(SPOT.name, 0)
+    _, tip, _, _ = _nanite(SPOT.name, 0)
     assert np.allclose(c.z, tip, rtol=0, atol=1e-18)  # nanite's compute_tip_position on the same file
     with pytest.raises(ValueError):
         c.z[0] = 0.0  # immutable
@@ -81,17 +82,18 @@ def test_load_curve_refusals(tmp_path):
 def test_thick_limit_equals_nanite_hertz_para_on_real_curves():
     """With nanite's contact-point weights, the half-space fit (Hertz, contact point and offset free) is nanite's
     hertz_para fit: the same E on all six curves (measured: within 2e-5; nanite's leastsq stops at its own
-    tolerance)."""
+    tolerance) and the same standard error (lmfit's, from its numerical Jacobian)."""
     for name, i in FILES:
-        E_nanite = _nanite(name, i)[0]
+        E_nanite, _, _, se_nanite = _nanite(name, i)
         r = fit_curve(load_curve(DATA / name, index=i), punch=R, H=None, weighting="nanite")
         assert r.E / E_nanite == pytest.approx(1.0, abs=1e-4), (name, i)
+        assert r.E_se / se_nanite == pytest.approx(1.0, abs=0.02), (name, i)  # lmfit's covariance, same weights
         assert r.fitted == ("E", "z0", "b0") and r.model == "hertz"
 
 
 def test_weighting_effect_on_a_real_curve():
     """The numbers in curve_fit's docstring and the README: weighting moves E by 4 % on the JPK spot curve and by a
-    factor 60 on the first QI curve (few points in contact: unweighted, the fit takes the last steep points as the
+    factor 61 on the first QI curve (few points in contact: unweighted, the fit takes the last steep points as the
     contact; weighted, a soft contact 0.5 um earlier).  The weighted E is nanite's (checked above)."""
     spot = load_curve(SPOT)
     E0 = fit_curve(spot, punch=R).E
