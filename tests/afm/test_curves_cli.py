@@ -41,6 +41,9 @@ def test_csv_with_curve_options_fits_contact_point_and_baseline(tmp_path, capsys
                          "offset+slope", "--json"])
     assert abs(out["E"] - truth["E"]) < 3.5 * out["E_se"] and abs(out["z0"] - truth["z0"]) < 3.5 * out["z0_se"]
     assert out["axis"] == "tip position"
+    fixed = _json(capsys, ["fit", str(path), "--R", str(R), "--nu", "0.5", "--depth-sign", "-1", "--contact-point",
+                           repr(truth["z0"]), "--json"])
+    assert fixed["z0"] == truth["z0"] and fixed["z0_se"] == 0 and "z0" not in fixed["fitted"]
     plain = tmp_path / "plain.csv"  # without the options: fit() as before (depths, no baseline)
     d = np.linspace(0.01, 1.0, 30)
     plain.write_text("\n".join(f"{float(a)!r},{float(4 / 3 / 0.75 * 2.0 * np.sqrt(5.0) * a ** 1.5)!r}" for a in d))

@@ -126,7 +126,10 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
                     "models).\nJSON keys: file, model, base, nu, R (null for a tip other than the paraboloid), tip, "
                     "E, E_se,\nH (null: the half-space), H_se, offset, offset_se, residual_rms, n_points, fitted, "
                     "condition, chi_max, flags\n(regime limits passed: delta/H beyond small strain, delta/R), "
-                    "depth_sign.",
+                    "depth_sign.\nAn instrument file (or a CSV with a measured-curve option) is fitted with the "
+                    "contact point z0 and the\nbaseline b0 + b1 (z - z0) free (thinlayer.fit_curve); its JSON "
+                    "keys: E, H, z0, b0, b1, each with _se and\n_se_boot, covariance, fitted, chi_max, delta_max, "
+                    "delta_over_H, delta_over_R, valid, validity, flags,\nbootstrap, block_length, phi, ...",
         epilog="examples:\n  thinlayer fit curve.csv --R 5e-6 --H 3e-6 --nu 0.5 --json\n"
                "  thinlayer fit curve.csv --columns depth,force --R 10 --H 2 --nu 0.3 --fit-offset --model hertz\n"
                "  thinlayer fit curve.csv --cone 70 --H 0.2 --nu 0.3\n"
