@@ -3,9 +3,9 @@
 * :func:`read_map` reads a map file (a JPK ``.jpk-force-map``, afmformats' own HDF5 export of a map, any file
   afmformats reads whose curves carry the grid's metadata) or a folder of curve files, and returns light, picklable
   :class:`MapCurve` records (approach segment only: tip position and force) and the :class:`MapGrid`.
-  Instrument formats are read by afmformats only, never parsed here.  The tip position is afmformats'/nanite's:
-  ``height (measured) - force/k`` (negative into the sample), taken from the ``"tip position"`` column when the file
-  has one.
+  Instrument formats are read by afmformats only, never parsed here.  The tip position is nanite's
+  (``compute_tip_position``, JPK's "Vertical Tip Position"): ``height (measured) + force/k`` (negative into the
+  sample), taken from the ``"tip position"`` column when the file has one.
 * :func:`write_synthetic_map` writes a map whose curves follow the any-thickness law (T.7) for given E and H maps,
   in afmformats' HDF5 format (afmformats and nanite read it back as a map): the test and benchmark data.
 """
@@ -96,9 +96,9 @@ def _tip_position(data: Any) -> tuple[np.ndarray, np.ndarray, float]:
     else:
         col = "height (measured)" if "height (measured)" in data.columns else "height (piezo)"
         if not math.isfinite(k) or k <= 0:
-            raise InputError(f"{_name(data)}: no spring constant recorded: the tip position (height - force/k) "
+            raise InputError(f"{_name(data)}: no spring constant recorded: the tip position (height + force/k) "
                              "cannot be computed")
-        z = np.asarray(data[col], dtype=float) - force / k
+        z = np.asarray(data[col], dtype=float) + force / k
     seg = np.asarray(data["segment"]) if "segment" in data.columns else np.zeros(force.size, dtype=int)
     appr = seg == 0
     return z[appr], force[appr], k
@@ -221,7 +221,7 @@ def write_synthetic_map(path: str | Path, E: Any, H: Any, *, R: float, nu: float
     """Write a force map in afmformats' HDF5 format: one approach curve per pixel of ``E`` (Pa) and ``H`` (m) maps.
 
     ``contact`` (m, scalar or map) is each pixel's contact height; ``pixel`` the grid step (m).  The columns are
-    ``height (measured)`` (= tip position + force/k), ``force``, ``segment`` (0, the approach) and ``time``; the
+    ``height (measured)`` (= tip position - force/k), ``force``, ``segment`` (0, the approach) and ``time``; the
     metadata carry the grid (``grid index``, ``grid shape``, ``grid size``, ``grid center``, ``position``) as
     afmformats' map readers do, so ``afmformats.AFMQMap`` and nanite read it as a map.
     """
@@ -251,7 +251,7 @@ def write_synthetic_map(path: str | Path, E: Any, H: Any, *, R: float, nu: float
                         "software": "thinlayer synthetic map", "point count": points, "segment count": 1,
                         "duration": 1.0, "sensitivity": 1e-8, "date": "2026-11-26", "time": "00:00:00",
                         "speed approach": 2 * depth, "rate approach": float(points)}
-                data = {"force": f, "height (measured)": z + f / spring_constant,
+                data = {"force": f, "height (measured)": z - f / spring_constant,
                         "segment": np.zeros(points, dtype=np.uint8), "time": np.linspace(0.0, 1.0, points)}
                 afmformats.AFMForceDistance(data, meta).export_data(h5, fmt="hdf5")
     tmp.replace(path)
