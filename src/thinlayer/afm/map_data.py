@@ -193,9 +193,10 @@ def _grid_from_positions(xs: np.ndarray, ys: np.ndarray) -> MapGrid:
 def synthetic_curve(E: float, H: float, *, R: float, nu: float = 0.5, base: str = "bonded", points: int = 2000,
                     depth: float = 0.5e-6, contact: float = 0.0, noise: float = 0.0, slope: float = 0.0,
                     offset: float = 0.0, rng: np.random.Generator | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """``(tip position, force)`` of an approach: ``points`` evenly spaced tip positions from ``contact + depth`` down
-    to ``contact - depth`` (half off contact, half in), the force of the any-thickness law (T.7) (Hertz for
-    ``H = inf``; no force for ``E = 0``) plus a baseline ``offset + slope * tip`` and Gaussian noise of standard deviation ``noise`` (N).
+    """``(tip position, force)`` of an approach: ``points`` evenly spaced tip positions from ``contact + depth``
+    down to ``contact - depth`` (half off contact, half in), the force of the any-thickness law (T.7) (Hertz for
+    ``H = inf``; no force for ``E = 0``) plus a baseline ``offset + slope * tip`` and Gaussian noise of standard
+    deviation ``noise`` (N).
     """
     from ..contact.any_thickness import force_any_thickness
 

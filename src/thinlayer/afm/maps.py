@@ -16,12 +16,12 @@ height image (``height_image=``: an array or a ``.npy``/text file, in metres) or
 curve's contact point estimated before the fit (:func:`thickness_from_height`).
 
 The per-curve fitter.  ``fit_one(curve, punch=, H=, nu=, base=)`` takes a :class:`~thinlayer.afm.map_data.MapCurve`
-and returns an object with ``E`` and optionally ``E_se``, ``H``, ``contact_point``, ``residual_rms``, ``valid``,
-``validity``, ``flags`` (a :class:`CurveFit`, or :class:`thinlayer.afm.curves` results).  The default,
-:func:`fit_curve_basic`, is a documented working fitter (baseline line fitted to the first quarter of the approach,
-the contact point estimated where the corrected force leaves the noise, then :func:`thinlayer.fit` with the contact
-point free), used until ``thinlayer.afm.curves.fit_curve`` (contact point and baseline as fit parameters) exists:
-:func:`default_fitter` picks that one when it is importable.
+and returns an object with ``E`` and optionally ``E_se``, ``H``, ``contact_point`` (or ``z0``), ``residual_rms``,
+``valid``, ``validity``, ``flags``.  The default (:func:`default_fitter`) is :func:`fit_curve_full`:
+:func:`thinlayer.afm.curve_fit.fit_curve`, with the contact point and the baseline offset as fit parameters.
+:func:`fit_curve_basic` is a simpler, faster fitter (baseline line fitted to the first quarter of the approach and
+subtracted, the contact point started where the corrected force leaves the noise, then :func:`thinlayer.fit` with
+the contact point free).
 """
 from __future__ import annotations
 
@@ -43,7 +43,7 @@ from .distributed import check_scheduler, map_batch
 from .map_data import MapCurve, MapGrid, read_map
 
 __all__ = ["BASELINE_FRACTION", "CurveFit", "MapResult", "default_fitter", "fit_curve_basic", "fit_map",
-           "substrate_level", "thickness_from_height"]
+           "fit_curve_full", "substrate_level", "thickness_from_height"]
 
 #: the first part of the approach (by points) taken as off contact for the baseline of :func:`fit_curve_basic`
 BASELINE_FRACTION = 0.25
@@ -155,13 +155,28 @@ def fit_curve_basic(curve: MapCurve, *, punch: Any, H: Any = None, nu: float = 0
                     "" if r.valid else r.validity, tuple(r.flags), r.n_points)
 
 
+def fit_curve_full(curve: MapCurve, *, punch: Any, H: Any = None, nu: float = 0.5, base: str = "bonded",
+                   **options: Any) -> Any:
+    """Fit one pixel by :func:`thinlayer.afm.curve_fit.fit_curve` (E, the contact point ``z0`` and the baseline
+    offset as parameters, its robust start; ``options`` passed on, e.g. ``weighting="nanite"``, ``baseline=
+    "offset+slope"``; no bootstrap unless asked: a map is thousands of fits).
+    """
+    from .curve_fit import fit_curve
+    from .curves import curve_from_arrays
+
+    c = curve_from_arrays(curve.tip_position, curve.force, axis="tip position", units=("m", "N"), source=curve.name)
+    return fit_curve(c, punch=punch, H=H, nu=nu, base=base, **options)
+
+
 def default_fitter() -> Callable[..., Any]:
-    """``thinlayer.afm.curves.fit_curve`` when that module exists, else :func:`fit_curve_basic`."""
+    """:func:`fit_curve_full` (``thinlayer.afm.curve_fit.fit_curve``) when that module is there, else
+    :func:`fit_curve_basic`.
+    """
     try:
-        from .curves import fit_curve  # type: ignore[attr-defined]
-    except ImportError:
+        from . import curve_fit  # noqa: F401 - only whether it exists
+    except ImportError:  # pragma: no cover - a thinlayer without thinlayer.afm.curve_fit
         return fit_curve_basic
-    return fit_curve
+    return fit_curve_full
 
 
 @dataclass(frozen=True)
@@ -207,7 +222,7 @@ def _fit_pixel(item: tuple[MapCurve, Any], *, fit_one: Callable[..., Any], punch
     flags = tuple(getattr(r, "flags", ()) or ())
     why = [] if valid else [str(getattr(r, "validity", "") or "outside the model's validity")]
     why += [str(f) for f in flags]
-    return _Pixel(curve.index, E, _number(r, "E_se"), _number(r, "H"), _number(r, "contact_point", "contact"),
+    return _Pixel(curve.index, E, _number(r, "E_se"), _number(r, "H"), _number(r, "contact_point", "z0"),
                   _number(r, "residual_rms", "residual"), "flagged" if why else "ok", "; ".join(why))
 
 
