@@ -127,7 +127,8 @@ def check_scheduler(scheduler: Any) -> Any:
 
 
 def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: Any = None, chunk: int | None = None,
-              workers: int | None = None, progress: bool = False, label: str = "items") -> list[Any]:
+              workers: int | None = None, progress: bool = False, label: str = "items",
+              timeout: float | None = None) -> list[Any]:
     """``[func(item) for item in items]``, serially or on dask.distributed, in the items' order.
 
     Parameters
@@ -150,6 +151,9 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
         A progress bar on stderr (tqdm when installed, else a counter).
     label : str
         What the items are, for the progress bar.
+    timeout : float, optional
+        Seconds to wait for the dask results; past it a :class:`TimeoutError` is raised (and a cluster started here
+        closed) instead of waiting for ever.
 
     Returns
     -------
@@ -182,7 +186,7 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
             futures = client.map(_run_chunk, [func] * len(parts), parts, pure=False)
             order = {f.key: i for i, f in enumerate(futures)}
             results: list[Any] = [None] * len(parts)
-            for fut in as_completed(futures):
+            for fut in as_completed(futures, timeout=timeout):
                 results[order[fut.key]] = fut.result()
                 bar.update(len(parts[order[fut.key]]))
             return [r for part in results for r in part]

@@ -13,7 +13,9 @@ The curves are fitted by :func:`thinlayer.afm.distributed.map_batch`: serially, 
 Thickness per pixel (``H``): one number for the whole map; ``None``/``inf`` for the half-space (Hertz); a 2D array
 (one thickness per pixel); or ``"height"``: the topography minus the substrate level, the topography being a
 height image (``height_image=``: an array or a ``.npy``/text file, in metres) or, without one, the height of each
-curve's contact point estimated before the fit (:func:`thickness_from_height`).
+curve's contact point estimated before the fit (:func:`estimate_contact`, where the force leaves 5 noise deviations:
+a few nm below the true contact on soft samples, e.g. 6 nm for Hertz at E = 5 kPa, R = 5 µm, noise 2 pN), minus the
+substrate level (:func:`thickness_from_height`).
 
 The per-curve fitter.  ``fit_one(curve, punch=, H=, nu=, base=)`` takes a :class:`~thinlayer.afm.map_data.MapCurve`
 and returns an object with ``E`` and optionally ``E_se``, ``H``, ``contact_point`` (or ``z0``), ``residual_rms``,
@@ -436,8 +438,7 @@ def _render_png(res: MapResult, data: np.ndarray, label: str, unit: str, dpi: in
     fig = Figure(figsize=(5.6, 4.6), dpi=dpi)
     ax = fig.add_subplot()
     g = res.grid
-    cmap = matplotlib.colormaps["viridis"].copy()
-    cmap.set_bad("0.75")
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.75")
     extent = g.extent_um if g.extent_um is not None else (-0.5, g.shape[1] - 0.5, g.shape[0] - 0.5, -0.5)
     origin = "lower" if g.extent_um is not None else "upper"
     im = ax.imshow(vals, origin=origin, extent=extent, cmap=cmap, interpolation="nearest")
@@ -470,6 +471,19 @@ def _punch_words(punch: Any) -> str:
     if isinstance(punch, (int, float)) and not isinstance(punch, bool):
         return f"sphere R = {float(punch):.4g} m"
     return str(getattr(punch, "description", None) or getattr(punch, "name", punch))
+
+
+def _check_thickness(H: Any, height_image: Any) -> None:
+    """One line for an ``H`` (or a ``height_image`` without ``H="height"``) that :func:`fit_map` cannot use."""
+    if isinstance(H, str):
+        if H != "height":
+            raise InputError(f"H must be a thickness (m), None or inf (the half-space), a 2D array or 'height' (the "
+                             f"topography minus the substrate), got {H[:40]!r}")
+        return
+    if height_image is not None:
+        raise InputError("height_image is used with H='height' (the topography minus the substrate level)")
+    if isinstance(H, (int, float)) and not isinstance(H, bool) and not (H > 0):
+        raise InputError(f"H must be a positive thickness, None or inf (the half-space), got {H!r}")
 
 
 def _thickness_map(H: Any, height_image: Any, substrate: Any, curves: list[MapCurve], grid: MapGrid,
@@ -512,7 +526,8 @@ def _thickness_map(H: Any, height_image: Any, substrate: Any, curves: list[MapCu
 
 def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: str = "bonded",
             fit_one: Callable[..., Any] | None = None, progress: bool = True, scheduler: Any = None,
-            height_image: Any = None, substrate: float | None = None, workers: int | None = None) -> MapResult:
+            height_image: Any = None, substrate: float | None = None, workers: int | None = None,
+            timeout: float | None = None) -> MapResult:
     """Fit every curve of a force map: E, H, contact point and quality per pixel (issue 25 item 5).
 
     Parameters
@@ -542,6 +557,8 @@ def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: st
         The substrate level (m) for ``H="height"`` (default: :func:`substrate_level`).
     workers : int, optional
         Workers of a local cluster started here.
+    timeout : float, optional
+        Seconds to wait for a dask cluster's results (:func:`~thinlayer.afm.distributed.map_batch`).
 
     Returns
     -------
@@ -554,6 +571,7 @@ def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: st
         raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}")
     if punch is None:
         raise InputTypeError("fit_map() needs punch= (the sphere radius R in m, or a tip)")
+    _check_thickness(H, height_image)  # before reading the map: bad input costs nothing
     if isinstance(source, (list, tuple)):
         curves = list(source)
         grid = MapGrid.from_curves(curves)
@@ -565,7 +583,8 @@ def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: st
     fitter = default_fitter() if fit_one is None else fit_one
     items = [(c, float(Hmap[c.index]) if Hmap is not None else H1) for c in curves]
     work = functools.partial(_fit_pixel, fit_one=fitter, punch=punch, nu=float(nu), base=base)
-    pixels = map_batch(work, items, scheduler=scheduler, progress=progress, label="curves", workers=workers)
+    pixels = map_batch(work, items, scheduler=scheduler, progress=progress, label="curves", workers=workers,
+                       timeout=timeout)
     shape = grid.shape
     arrays = {k: np.full(shape, np.nan) for k in ("E", "E_se", "H", "contact_point", "residual")}
     status = np.full(shape, "empty", dtype=object)
