@@ -110,15 +110,17 @@ def estimate_contact(z: np.ndarray, f: np.ndarray) -> tuple[int, np.ndarray]:
     """``(index of the contact point, baseline-corrected force)`` of an approach curve (tip position ``z``).
 
     Walking back from the largest force, the contact is the last point whose corrected force is within
-    :data:`CONTACT_SIGMAS` noise deviations of the baseline (or, noise-free, at most 1e-3 of the peak force).
+    :data:`CONTACT_SIGMAS` noise deviations of the baseline (or, noise-free, at most 1e-3 of the peak force).  A curve
+    whose last 5 % (an approach ends pressed in) stays within that noise band has no contact: refused in one line.
     """
     fc, sigma = _baseline(z, f)
     top = int(np.argmax(fc))
     if not fc[top] > 0:
         raise InputError("the approach curve has no force above its baseline: no contact to fit")
-    if not fc[top] > CONTACT_SIGMAS * sigma:
-        raise InputError(f"no contact: the force never rises above the noise (peak {float(fc[top]):.3g} N above the "
-                         f"baseline, noise {sigma:.3g} N; {CONTACT_SIGMAS:g} noise deviations needed)")
+    tail = float(np.median(fc[-max(5, fc.size // 20):]))  # an approach ends pressed in: its last points the highest
+    if not tail > CONTACT_SIGMAS * sigma:
+        raise InputError(f"no contact: the force at the end of the approach is not above the noise ({tail:.3g} N "
+                         f"above the baseline, noise {sigma:.3g} N; {CONTACT_SIGMAS:g} noise deviations needed)")
     thresh = max(CONTACT_SIGMAS * sigma, 1e-3 * float(fc[top]))
     below = np.nonzero(fc[:top + 1] <= thresh)[0]
     if below.size == 0:
@@ -153,6 +155,9 @@ def fit_curve_basic(curve: MapCurve, *, punch: Any, H: Any = None, nu: float = 0
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityWarning)  # kept in the result: the pixel is flagged
         r = fit(depth, fc[n0:], punch=punch, H=H, nu=nu, base=base, fit_offset=True, model=model)
+    if not r.offset > float(np.min(depth)):
+        raise InputError(f"the fitted contact point lies above every fitted point (tip position {z0 - r.offset:.4g} "
+                         "m): no baseline before contact, the curve cannot place the contact")
     return CurveFit(r.E, r.E_se, r.H, z0 - r.offset, r.residual_rms, bool(r.valid),
                     "" if r.valid else r.validity, tuple(r.flags), r.n_points)
 
