@@ -27,8 +27,8 @@ TIMEOUT = 120
 
 @pytest.fixture(scope="module")
 def threads_client():
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None,
-                                       worker_dashboard_address=None, silence_logs=40)
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=":0",
+                                       silence_logs=40)  # ":0": any free port, never a clash with another cluster
     client = distributed.Client(cluster, timeout=TIMEOUT)
     yield client
     client.close()

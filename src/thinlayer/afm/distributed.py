@@ -91,8 +91,8 @@ def _client(scheduler: Any, workers: int | None):
         return scheduler, False
     if scheduler in ("threads", "local"):
         n = workers or (2 if scheduler == "threads" else _cores())
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",
-                               dashboard_address=None, worker_dashboard_address=None, silence_logs=40)
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": a free port
+                               dashboard_address=":0", silence_logs=40)
         return Client(cluster, timeout=CONNECT_TIMEOUT), True
     try:
         return Client(scheduler, timeout=CONNECT_TIMEOUT), True

@@ -88,25 +88,25 @@ class MapGrid:
         return cls((ny, nx), np.arange(nx, dtype=float), np.arange(ny, dtype=float), None)
 
 
-def _tip_position(data: Any) -> tuple[np.ndarray, np.ndarray, float]:
+def _tip_position(data: Any, meta: dict[str, Any]) -> tuple[np.ndarray, np.ndarray, float]:
     force = np.asarray(data["force"], dtype=float)
-    k = float(data.metadata.get("spring constant", math.nan))
-    if "tip position" in data.columns:
+    k = float(meta.get("spring constant", math.nan))
+    columns = data.columns
+    if "tip position" in columns:
         z = np.asarray(data["tip position"], dtype=float)
     else:
-        col = "height (measured)" if "height (measured)" in data.columns else "height (piezo)"
+        col = "height (measured)" if "height (measured)" in columns else "height (piezo)"
         if not math.isfinite(k) or k <= 0:
-            raise InputError(f"{_name(data)}: no spring constant recorded: the tip position (height + force/k) "
+            raise InputError(f"{_name(meta)}: no spring constant recorded: the tip position (height + force/k) "
                              "cannot be computed")
         z = np.asarray(data[col], dtype=float) + force / k
-    seg = np.asarray(data["segment"]) if "segment" in data.columns else np.zeros(force.size, dtype=int)
+    seg = np.asarray(data["segment"]) if "segment" in columns else np.zeros(force.size, dtype=int)
     appr = seg == 0
     return z[appr], force[appr], k
 
 
-def _name(data: Any) -> str:
-    p = data.metadata.get("path", "")
-    return f"{Path(str(p)).name}[{data.metadata.get('enum', '?')}]"
+def _name(meta: dict[str, Any]) -> str:
+    return f"{Path(str(meta.get('path', ''))).name}[{meta.get('enum', '?')}]"
 
 
 def _load(path: Path) -> list[Any]:
@@ -156,27 +156,27 @@ def read_map(source: str | Path) -> tuple[list[MapCurve], MapGrid]:
         raise InputError(f"{p.name}: no force-distance curve in it")
     if len(data) > MAX_CURVES:
         raise InputError(f"{p.name}: {len(data)} curves, more than {MAX_CURVES}: split the map")
-    meta0 = data[0].metadata
-    indices = [_grid_index(d.metadata) for d in data]
+    metas = [d.metadata for d in data]  # afmformats copies the metadata on each access: once per curve
+    meta0 = metas[0]
+    indices = [_grid_index(m) for m in metas]
     if all(i is not None for i in indices) and all(k in meta0 for k in ("grid shape x", "grid size x",
                                                                           "grid center x")):
         grid = MapGrid.from_metadata(meta0)
-    elif p.is_dir() and all("position x" in d.metadata and "position y" in d.metadata for d in data):
-        xs = sorted({float(d.metadata["position x"]) for d in data})
-        ys = sorted({float(d.metadata["position y"]) for d in data})
-        indices = [(ys.index(float(d.metadata["position y"])), xs.index(float(d.metadata["position x"])))
-                   for d in data]
+    elif p.is_dir() and all("position x" in m and "position y" in m for m in metas):
+        xs = sorted({float(m["position x"]) for m in metas})
+        ys = sorted({float(m["position y"]) for m in metas})
+        indices = [(ys.index(float(m["position y"])), xs.index(float(m["position x"]))) for m in metas]
         grid = _grid_from_positions(np.array(xs) * 1e6, np.array(ys) * 1e6)
     else:
         raise InputError(f"{p.name}: the curves carry no grid (afmformats' 'grid index x/y') nor positions: not a "
                          "map; fit single curves with 'thinlayer fit'")
     curves = []
-    for d, idx in zip(data, indices):
+    for d, m, idx in zip(data, metas, indices):
         if not (0 <= idx[0] < grid.shape[0] and 0 <= idx[1] < grid.shape[1]):
-            raise InputError(f"{_name(d)}: grid index {idx} outside the map's shape {grid.shape}")
-        z, f, k = _tip_position(d)
-        pos = (float(d.metadata.get("position x", math.nan)), float(d.metadata.get("position y", math.nan)))
-        curves.append(MapCurve(idx, z, f, _name(d), k, pos))
+            raise InputError(f"{_name(m)}: grid index {idx} outside the map's shape {grid.shape}")
+        z, f, k = _tip_position(d, m)
+        pos = (float(m.get("position x", math.nan)), float(m.get("position y", math.nan)))
+        curves.append(MapCurve(idx, z, f, _name(m), k, pos))
     return curves, grid
 
 
