@@ -11,15 +11,18 @@ validation study.  The same call runs
   core, one thread each), the embedded default for a large batch;
 * on an existing cluster (``scheduler="tcp://host:8786"``, or a ``distributed.Client`` already connected).
 
-No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, so that a 4096-pixel map is
-~64 tasks, not 4096), sent by ``Client.map`` and collected by ``distributed.as_completed``; the results come back
-in the items' order.  Each item is computed by the same function on the same numbers on every path: the serial,
-threaded and process results are equal bit for bit (``tests/afm/test_maps_distributed.py``).
+No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about 4 per worker: a
+4096-pixel map on 2 workers is 8 tasks, not 4096), sent to the workers by ``Client.scatter``, mapped by
+``Client.map`` and collected by ``distributed.as_completed``; the results come back in the items' order.  A cluster
+started here logs nothing below CRITICAL (its shutdown chatter); the tasks' errors reach the caller through their
+futures.  Each item is computed by the same function on the same numbers on every path: the serial, threaded and
+process results are equal bit for bit (``tests/afm/test_maps_distributed.py``).
 
 dask is imported on first use (the extra ``thinlayer[afm]``); the serial path never imports it.
 """
 from __future__ import annotations
 
+import logging
 import math
 import sys
 from collections.abc import Callable, Iterable, Sequence
@@ -92,7 +95,7 @@ def _client(scheduler: Any, workers: int | None):
     if scheduler in ("threads", "local"):
         n = workers or (2 if scheduler == "threads" else _cores())
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": a free port
-                               dashboard_address=":0", silence_logs=40)
+                               dashboard_address=":0", silence_logs=logging.CRITICAL)
         return Client(cluster, timeout=CONNECT_TIMEOUT), True
     try:
         return Client(scheduler, timeout=CONNECT_TIMEOUT), True
@@ -183,7 +186,8 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
                 n = max(1, len(client.scheduler_info(n_workers=-1).get("workers", {})))
                 chunk = max(1, math.ceil(len(items) / (4 * n)))
             parts = chunked(items, int(chunk))
-            futures = client.map(_run_chunk, [func] * len(parts), parts, pure=False)
+            data = client.scatter(parts)  # the items sent to the workers once, not embedded in the task graph
+            futures = client.map(_run_chunk, [func] * len(parts), data, pure=False)
             order = {f.key: i for i, f in enumerate(futures)}
             results: list[Any] = [None] * len(parts)
             for fut in as_completed(futures, timeout=timeout):
