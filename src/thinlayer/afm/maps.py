@@ -483,7 +483,8 @@ def _render_png(res: MapResult, data: np.ndarray, label: str, unit: str, dpi: in
     ax.set_title(f"{label}: {res.punch}, {res.base} base, ν = {res.nu:.3g}\n"
                  f"{c['ok']} ok, {c['flagged']} flagged (hatched), {c['failed']} failed and {c['empty']} empty (grey)",
                  fontsize=9)
-    bar = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.04)
+    ratio = abs((extent[3] - extent[2]) / (extent[1] - extent[0]))  # the bar as tall as the image
+    bar = fig.colorbar(im, ax=ax, fraction=0.046 * min(ratio, 1.0), pad=0.04)
     bar.set_label(f"{label} ({u})")
     fig.tight_layout()
     buf = io.BytesIO()
