@@ -592,6 +592,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
     from .fit_cli import add_fit_parser
     from .flat_cli import add_flat_parser
+    from .map_cli import add_map_parser
     from .solve_cli import add_solve_parser
 
     for add in (_add_report, _add_coefficients, _add_inner, add_solve_parser, _add_errata, _add_codegen):
@@ -599,6 +600,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_validate(sub, fmt)
     add_fit_parser(sub, fmt)
     add_flat_parser(sub, fmt)
+    add_map_parser(sub, fmt)
     return ap
 
 
