@@ -46,7 +46,7 @@ def add_map_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
                     "Writes map.csv, E.png, failures.txt and summary.json into --out.  SI units: --R, --H in m.",
         epilog="examples:\n  thinlayer fit-map cells.jpk-force-map --R 5e-6 --nu 0.5 --out E-map\n"
                "  thinlayer fit-map film.h5 --R 5e-6 --H height --height-image topo.npy --nu 0.45 --out film\n"
-               "  thinlayer fit-map curves/ --R 5e-6 --H 2e-6 --nu 0.5 --scheduler local --out run1 --overwrite")
+               "  thinlayer fit-map curves/ --R 5e-6 --H 2e-6 --nu 0.5 --scheduler threads --out run1 --overwrite")
     s.add_argument("source", help="a map file (.jpk-force-map, afmformats .h5, ...) or a folder of curve files")
     s.add_argument("--R", type=finite, help="sphere radius (m), the paraboloid r^2/(2R); or --tip / a tip option")
     s.add_argument("--tip", metavar="KIND:key=value,...", help="a tip of thinlayer.punch.TIPS, e.g. cone:half_angle=70")
