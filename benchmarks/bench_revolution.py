@@ -40,6 +40,12 @@ def run() -> list[tuple[str, float, str]]:
                  "<= 50 ms"))
     rows.append(("cone table law, both estimates, 1e6 depths", best(lambda: cone.error_estimate(chi_c), repeat=7),
                  "<= 50 ms"))
+    from thinlayer.contact.any_thickness_pyramids import pyramid_law
+
+    pyr = pyramid_law(4, 0.45)
+    chi_p = np.random.default_rng(3).uniform(0.0, 10.0, 1_000_000)
+    rows.append(("pyramid law (4 sides, nu = 0.45), P/P_hs, 1e6 depths", best(lambda: pyr.ratios(chi_p), repeat=7),
+                 "<= 50 ms"))
     lay = BondedLayer(0.45)
     for tip in (Punch.sphere(10), Punch.blunted_cone(1, 70)):
         a = tip.level_set(0.5).half_width
