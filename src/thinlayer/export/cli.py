@@ -521,8 +521,8 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                                    "(I.9)), 'two-term' (the sphere near nu = 1/2 (I.11);\nBessel functions: Julia "
                                    "and Octave), 'any-thickness' (the sphere at any H/a (T.7), one nu: numpy module "
                                    "or C), 'flat-punch' (kappa(a/H) of a flat punch, --law thin|thick, one nu),\n"
-                                   "'nanite' (a standalone nanite model module of the sphere at any thickness, one nu "
-                                   "and base).\n"
+                                   "'nanite' (a standalone nanite model module at any thickness, one nu and base: "
+                                   "--tip sphere, cone or pyramid with --sides 3|4).\n"
                                    "Without --out the code is printed. JSON keys: a list of "
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
                        epilog="examples:\n  thinlayer codegen inner --tip elliptic_paraboloid --nu 3/10 --lang c\n"
@@ -552,6 +552,8 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("--delta0", type=finite, help="indentation (composite)")
     g.add_argument("--H", type=finite, help="layer thickness (composite)")
     g.add_argument("--mu", type=finite, default=1.0, help="shear modulus (composite, default 1)")
+    g.add_argument("--sides", type=int, choices=(3, 4), default=None, help="nanite --tip pyramid: 3 or 4 faces "
+                                                                           "(default 4)")
     add_punch_args(g)
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
