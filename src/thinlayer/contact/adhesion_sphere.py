@@ -35,9 +35,10 @@ central difference of the exact ``kappa``).  Half-space limit (``lambda -> 0``):
 ``(e_P, e_c)`` hold at a given depth; at a given contact radius they become ``e_delta = e_c/s_c`` and
 ``e_P1 = e_P + s_P e_delta`` with ``s_c = d log c/d log delta_1`` and ``s_P = d log P_1/d log delta_1`` (both from
 the law).  The flat part's relative estimates ``e_kappa`` (its model's) and ``e_g`` (the same bound: a relative
-remainder ``K lambda^{-p}`` of kappa gives ``p K lambda^{-p}/(p + 1)`` or less in g for the thin forms, the next
-terms of the differentiated series for (F.18), ``4 e_kappa`` for the exact solver, the Chebyshev tail for the
-interpolated exact values) enter through ``d ~ g^{-1/2}``::
+remainder ``K lambda^{-p}`` of kappa gives ``p K lambda^{-p}/(p + 1)`` or less in g for the thin forms,
+the next terms of the differentiated series (F.18), ``4 e_kappa`` for the exact solver, the Chebyshev tail
+for the interpolated exact values)
+enter through ``d ~ g^{-1/2}``::
 
     err delta = e_delta delta_1 + |d| e_g/2,      err P = e_P1 P_1 + S |d| (e_kappa + e_g/2).
 
@@ -67,7 +68,7 @@ flat_punch_kappa = lazy_function("thinlayer.numerics.flat_punch", "flat_punch_ka
 
 __all__ = ["AnyThicknessJKR", "JKRStates", "any_thickness_jkr", "flat_release_factor"]
 
-#: the flat part's model is the first whose relative estimate is within this (thick series, thin form, exact)
+#: the flat part's thin form is used where its relative estimate is within this (else the exact solver's values)
 FLAT_TARGET = 1e-5
 #: the exact flat-punch solver's limit in a/H (beyond it the thin forms are better than 5e-5)
 MAX_EXACT = 200.0
@@ -78,7 +79,7 @@ _GRID = np.geomspace(1e-6, 1e7, 2601)
 # --------------------------------------------------------------------------- (J.17) the flat part
 #: the exact solver's values are interpolated (Chebyshev in log lambda, TABLE_NODES nodes) on [TABLE_LO, <= TABLE_HI]
 TABLE_LO, TABLE_HI, TABLE_NODES = 0.05, 60.0, 40
-#: order of the thick-layer series (F.18) below TABLE_LO (estimate below 1e-7 there)
+#: order of the thick-layer series (F.18) below TABLE_LO (estimate below 1e-7 there; 0.4 s to build per layer)
 THICK_ORDER = 6
 
 
@@ -95,7 +96,8 @@ def _flat_table(layer: Any) -> tuple[float, float, np.ndarray, np.ndarray, float
     ``t = log lambda`` of the exact solver's ``kappa`` and ``g = f(1)^2`` (Krein (F.9)) on ``[TABLE_LO, hi]``,
     ``hi`` where the thin form's estimate reaches FLAT_TARGET (at most TABLE_HI).  The estimates: four times the
     sum of the last four coefficients' magnitudes (measured: 10 to 100 times the true interpolation error at points
-    between the nodes) plus the solver's own estimates.  One exact solve per node, once per layer (about 1 s).
+    between the nodes) plus the solver's own estimate at the largest node (the solver's error grows with lambda).
+    One exact solve per node, once per layer (about 0.5 s).
     """
     th = thin_flat_punch(layer)
     x = np.geomspace(TABLE_LO, TABLE_HI, 400)
@@ -104,11 +106,14 @@ def _flat_table(layer: Any) -> tuple[float, float, np.ndarray, np.ndarray, float
     a, b = math.log(TABLE_LO), math.log(hi)
     k = np.arange(TABLE_NODES)
     xn = np.cos((2 * k + 1) * np.pi / (2 * TABLE_NODES))
-    vals = [_exact_flat(layer, math.exp(0.5 * (a + b) + 0.5 * (b - a) * v)) for v in xn]
-    ck = np.polynomial.chebyshev.chebfit(xn, np.log([v[0] for v in vals]), TABLE_NODES - 1)
-    cg = np.polynomial.chebyshev.chebfit(xn, np.log([v[1] for v in vals]), TABLE_NODES - 1)
-    ek = 4 * float(np.abs(ck[-4:]).sum()) + max(v[2] for v in vals)
-    eg = 4 * float(np.abs(cg[-4:]).sum()) + max(v[3] for v in vals)
+    # the solver's own estimate (a second solve with 0.7 times the nodes) at the largest lambda, where it is largest
+    sols = [flat_punch_kappa(layer, math.exp(0.5 * (a + b) + 0.5 * (b - a) * v), error_estimate=bool(v == xn.max()))
+            for v in xn]
+    solver = max(max(st.error for st in sols), 1e-12)
+    ck = np.polynomial.chebyshev.chebfit(xn, np.log([st.kappa for st in sols]), TABLE_NODES - 1)
+    cg = np.polynomial.chebyshev.chebfit(xn, np.log([st.edge_value**2 for st in sols]), TABLE_NODES - 1)
+    ek = 4 * float(np.abs(ck[-4:]).sum()) + solver
+    eg = 4 * float(np.abs(cg[-4:]).sum()) + 4 * solver
     for arr in (ck, cg):
         arr.setflags(write=False)
     return a, b, ck, cg, ek, eg
@@ -119,8 +124,9 @@ def flat_release_factor(layer: Any, a_over_H: Any) -> tuple[np.ndarray, np.ndarr
     """``(kappa, g, e_kappa, e_g, models)`` of the flat punch at ``lambda = a/H`` (J.17), vectorised.
 
     ``g = d(lambda kappa)/d lambda`` (``= f(1)^2`` by Krein (F.9)); ``e_kappa``, ``e_g`` relative estimates; the
-    model of each value: ``"thick"`` (F.18), ``"thin"`` (F.12)/(F.14)/(F.15), ``"table"`` (the exact solver's values
-    interpolated, :func:`_flat_table`) or ``"exact"`` (F.6)-(F.7) solved at that value.
+    model of each value: ``"thick"`` (F.18) below TABLE_LO, ``"thin"`` (F.12)/(F.14)/(F.15), ``"table"`` (the
+    exact solver's values interpolated, :func:`_flat_table`) or ``"exact"`` (F.6)-(F.7) solved at that value
+    (between TABLE_HI and the thin form's range).
     """
     layer = check_numeric_layer(layer)
     lam = np.atleast_1d(np.asarray(a_over_H, dtype=float))
@@ -351,7 +357,7 @@ class AnyThicknessJKR(RichDisplay):
         return [f"AnyThicknessJKR: the sphere on {self.layer} ({self.base} base, nu = {self.nu:g}) at any thickness"
                 "   (J.16)-(J.18)",
                 "  delta = delta_1(c) + d, P = P_1(c) + 4 vartheta c kappa(c/H) d, d = -sqrt(pi c w/(vartheta g(c/H)))",
-                "  delta_1, P_1: the any-thickness law (T.7); kappa, g = (lambda kappa)': the flat punch (F.18), "
+                "  delta_1, P_1: the any-thickness law (T.7); kappa, g = (lambda kappa)': the flat punch "
                 "(F.12)-(F.15), (F.6)"]
 
 
