@@ -54,7 +54,7 @@ def _python(law):
     return gc, ns[gc.function_name]
 
 
-@pytest.mark.parametrize("nu", [0.3, 0.5])
+@pytest.mark.parametrize("nu", [0.3, pytest.param(0.5, marks=pytest.mark.slow)])  # (J.15): 2 s of sympy
 def test_generated_python_equals_the_law(nu):
     """(J.11) (nu = 0.3) and (J.15) (nu = 1/2): the generated numpy function against ThinLayerJKR.evaluate."""
     law = thin_layer_jkr(nu, 1)
