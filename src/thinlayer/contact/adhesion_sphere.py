@@ -305,8 +305,9 @@ class AnyThicknessJKR(RichDisplay):
 
     def _minimum(self, which: int, H: float, R: float, w: float, mu: float) -> tuple[float, float, float]:
         """``(c, value, error)`` at the minimum of ``delta(c)`` (which 0) or ``P(c)`` (which 1) (J.6)."""
-        a0 = (9 * math.pi * w * R * R / (8 * mu / (1 - self.nu))) ** (1 / 3)  # half-space JKR radius at P = 0
-        grid = np.geomspace(1e-3 * a0, 10 * a0, 31)
+        a0 = (9 * math.pi * w * R * R / (4 * mu / (1 - self.nu))) ** (1 / 3)  # half-space JKR radius at P = 0
+        lo = min(1e-3 * a0, 0.01 * H)  # on a thin layer the minimum of delta(c) lies at c = O(H) (J.12)
+        grid = np.geomspace(lo, 10 * a0, 31 + int(8 * math.log10(1e-3 * a0 / lo)))
 
         def f(x: float) -> float:
             return float(self.evaluate(np.array([x]), H, R, w, mu)[which][0])
@@ -331,7 +332,7 @@ class AnyThicknessJKR(RichDisplay):
         cm = math.exp(0.5 * (a + b))
         st = self.states(np.array([cm]), H, R, w, mu)
         err = (st.delta_error if which == 0 else st.force_error)[0]
-        return cm, (st.delta if which == 0 else st.force)[0], float(err)
+        return cm, float((st.delta if which == 0 else st.force)[0]), float(err)
 
     def pull_off(self, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[float, float, float]:
         """``(c, P_off, error)`` under load control: ``P_off = -min P(c)`` (J.6), a tensile magnitude."""
