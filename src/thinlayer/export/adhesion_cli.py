@@ -110,9 +110,9 @@ def adhesive_fit_text(args: argparse.Namespace, punch: Any, delta: Any, force: A
         return json.dumps({"file": str(args.csv), **res.as_dict(), "base": args.base,
                            "H": None if args.H is None or args.H == float("inf") else args.H}, indent=2,
                           allow_nan=False)
-    from .solve_cli import cli_words, pretty
-
     R = getattr(punch, "sphere_radius", punch)
-    head = (f"fit of E and the work of adhesion w by the {res.model} JKR model: the sphere R = {R:.6g} on a "
-            f"{args.base} layer, ν = {res.nu:.6g}; {res.points} points")
-    return "\n".join([head, *(pretty(cli_words(ln)) for ln in res.text_lines()[1:])])
+    return "\n".join([f"fit of E and the work of adhesion w by the {res.model} JKR model: the sphere R = {R:.6g} on "
+                      f"a {args.base} layer, ν = {res.nu:.6g}; {res.points} points",
+                      f"  E = {res.E:.8g} ± {res.E_error:.2g}",
+                      f"  w = {res.work_of_adhesion:.8g} ± {res.work_of_adhesion_error:.2g}",
+                      f"  rms force residual {res.residual_rms:.3g}"])
