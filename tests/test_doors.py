@@ -341,7 +341,9 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, model=s),
         lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, E0=s),
         lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, sigma=s),
-        lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, fit_H=s)],
+        lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, fit_H=s),
+        lambda s: tl.fit([0.1, 0.2, 0.3], [1, -2, 3], punch=1.0, H=1.0, work_of_adhesion=s),  # issue 26 item 5
+        lambda s: tl.fit(s, [1, -2, 3], punch=1.0, H=1.0, work_of_adhesion="free")],
     "thinlayer.force_arrays": [
         lambda s: tl.force_arrays(s, F().P, [0.1], 0.05), lambda s: tl.force_arrays(F().L, s, [0.1], 0.05),
         lambda s: tl.force_arrays(F().L, F().P, s, 0.05), lambda s: tl.force_arrays(F().L, F().P, [0.1, s], 0.05),

@@ -351,7 +351,7 @@ def _tip(punch: Any) -> tuple[Any, float]:
 @boundary
 def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5, base: str = "bonded", *,
         fit_H: bool = False, fit_offset: bool = False, model: str | None = None, E0: float | None = None,
-        sigma: Any = None, depth_sign: int = 1) -> FitResult:
+        sigma: Any = None, depth_sign: int = 1, work_of_adhesion: Any = None) -> FitResult:
     r"""Estimate Young's modulus (and optionally H and the contact point) from a force-indentation curve.
 
     Parameters
@@ -385,6 +385,12 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
         ``1`` (default): ``delta`` is the depth, positive into the sample, the force growing with it; ``-1``:
         ``delta`` is a tip position (nanite, afmformats: negative into the sample), flipped.  Depths that are all
         ``<= 0`` or whose force falls as they grow are refused (:mod:`thinlayer.contact.guards`).
+    work_of_adhesion : str, optional
+        ``"free"``: an adhesive (JKR) unloading curve, signed forces (tensile negative): E and the work of adhesion
+        w are fitted together (:func:`thinlayer.contact.adhesion_fit.fit_free_adhesion`; the any-thickness JKR
+        law (J.16) on a layer, the direct solver on the half-space); the answer is an
+        :class:`~thinlayer.contact.adhesion_fit.AdhesiveFit` (``E``, ``E_error``, ``work_of_adhesion``,
+        ``work_of_adhesion_error``).  The paraboloid only; ``fit_H``, ``fit_offset`` and ``sigma`` are not taken.
 
     Returns
     -------
@@ -407,6 +413,14 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     >>> round(r.E, 8), bool(r.E_se < 1e-8)
     (3.0, True)
     """
+    if work_of_adhesion is not None:  # an adhesive curve (issue 26 item 5): E and w together
+        from .adhesion_fit import fit_free_adhesion
+
+        check_choice(base, BASES, "base")
+        extras = tuple(n for n, v in (("fit_H", fit_H), ("fit_offset", fit_offset), ("sigma", sigma is not None)) if v)
+        return fit_free_adhesion(delta, force, _tip(punch)[0] if punch is not None else None, H, _nu(nu), base,
+                                 E0=E0, work_of_adhesion=work_of_adhesion, model=model, depth_sign=depth_sign,
+                                 extras=extras)
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # checked below
         res = _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign)
     if not all(math.isfinite(v) for v in (res.E, res.E_se, res.H_se, res.offset, res.residual_rms)) \
@@ -416,6 +430,12 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     if res.valid is False:
         warnings.warn(f"fit(): E = {res.E:.4g} is NOT VALID: {res.validity}", ValidityWarning, stacklevel=3)
     return res
+
+
+def _nu(nu: Any) -> float:
+    if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not -1 < float(nu) <= 0.5:
+        raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}")
+    return float(nu)
 
 
 def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign) -> FitResult:

@@ -154,6 +154,9 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
                         "tip, tip-law for the tips of revolution; direct: the axisymmetric solver, tabulated)")
     s.add_argument("--fit-H", action="store_true", help="also fit the thickness")
     s.add_argument("--fit-offset", action="store_true", help="also fit the contact point (depth offset)")
+    s.add_argument("--work-of-adhesion", choices=("free",), default=None,
+                   help="free: an adhesive (JKR) unloading curve, signed forces: fit E and the work of adhesion w "
+                        "(the sphere, --R)")
     s.add_argument("--columns", default="0,1", help="depth and force columns: indices or header names (default 0,1)")
     s.add_argument("--out", type=Path, help="also write the result (text, or JSON with --json) to this file")
     s.add_argument("--overwrite", action="store_true", help="replace --out if it exists")
@@ -251,6 +254,15 @@ def cmd_fit(args: argparse.Namespace) -> int:
     if _is_instrument(path) or given:
         return _cmd_fit_curve(args, punch, path)
     delta, force = read_curve(args.csv, args.columns)
+    if getattr(args, "work_of_adhesion", None) is not None:  # E and w of an adhesive curve (issue 26 item 5)
+        from .adhesion_cli import adhesive_fit_text
+        from .cli_args import print_text
+
+        text = adhesive_fit_text(args, punch, delta, force)
+        print_text(text)
+        if args.out is not None:
+            atomic_write(args.out, text + "\n")
+        return 0
     with warnings.catch_warnings():  # a fit outside its model's range: the output says NOT VALID and why
         warnings.simplefilter("ignore", ValidityWarning)
         res = fit(delta, force, punch=punch, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
