@@ -42,8 +42,8 @@ from .materials import KelvinVoigt, Material, PowerLaw, Prony
 from .models.base import MODEL_REGISTRY, ForceCurve
 from .problem import Depth, Elastic, Frictionless, Problem
 
-__all__ = ["MAX_NONUNIFORM_POWER", "MAX_STEPS", "ViscoelasticForce", "force_curve_for", "hereditary_integral",
-           "viscoelastic_force"]
+__all__ = ["MAX_NONUNIFORM_POWER", "MAX_STEPS", "ViscoelasticForce", "check_setting", "force_curve_for",
+           "hereditary_integral", "viscoelastic_force"]
 
 #: the most time nodes of a history (measured: 1e6 nodes of a ramp-hold, sphere, 3-term Prony series, in 0.9 s
 #: and 0.12 GB more memory at load 10.9 on 2 cores)
@@ -237,6 +237,31 @@ def force_curve_for(layer: LayerKernel, tip: Any, H: float, nu: float, tol: floa
     return best
 
 
+def check_setting(layer: Any, punch: Any, H: Any, material: Any, nu: Any, tol: Any,
+                  model: Any) -> tuple[LayerKernel, Any, float, float]:
+    """``(layer, tip, nu, H)`` checked for a viscoelastic answer (one-line refusals naming the input)."""
+    if not isinstance(layer, LayerKernel) or not layer.on_rigid_base or not layer.has_thickness:
+        raise InputTypeError(f"layer must be BondedLayer(nu) or FrictionlessLayer(nu), got {layer!r}")
+    if not isinstance(material, Material):
+        raise InputTypeError(f"material must be Prony(...), StandardLinearSolid(...), KelvinVoigt(...) or "
+                             f"PowerLaw(...), got {material!r}")
+    nu_v = float(parse_nu(layer.poisson_ratio(nu), floats="float", upper_closed=True, symbols=False,
+                          example="0.3, '3/10' or 0.5"))
+    HH = positive(H, "H")
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not tol > 0:
+        raise InputError(f"tol must be a positive number (the elastic law's largest relative error), got {tol!r}")
+    names = ("auto", *dict.fromkeys(m.name for m in MODEL_REGISTRY if m.solves and not m.adhesive))
+    if not isinstance(model, str) or model not in names:
+        raise InputError(f"model must be one of {', '.join(names)}; got {model!r}")
+    if isinstance(punch, Tip) and not is_polynomial_tip(punch):
+        tip = punch
+    else:
+        tip = numeric_punch(punch, {})
+    if layer.numeric_nu is None or layer.incompressible_at(nu_v):
+        layer = layer.with_nu(nu_v)
+    return layer, tip, nu_v, HH
+
+
 @boundary
 def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Material, times: Any, depths: Any, *,
                        nu: Any = None, tol: float = DEFAULT_TOL, model: str = "auto") -> ViscoelasticForce:
@@ -271,19 +296,7 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
     >>> bool(out.valid.all()), out.model
     (True, 'any-thickness')
     """
-    if not isinstance(layer, LayerKernel) or not layer.on_rigid_base or not layer.has_thickness:
-        raise InputTypeError(f"layer must be BondedLayer(nu) or FrictionlessLayer(nu), got {layer!r}")
-    if not isinstance(material, Material):
-        raise InputTypeError(f"material must be Prony(...), StandardLinearSolid(...), KelvinVoigt(...) or "
-                             f"PowerLaw(...), got {material!r}")
-    nu_v = float(parse_nu(layer.poisson_ratio(nu), floats="float", upper_closed=True, symbols=False,
-                          example="0.3, '3/10' or 0.5"))
-    HH = positive(H, "H")
-    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not tol > 0:
-        raise InputError(f"tol must be a positive number (the elastic law's largest relative error), got {tol!r}")
-    names = ("auto", *dict.fromkeys(m.name for m in MODEL_REGISTRY if m.solves and not m.adhesive))
-    if not isinstance(model, str) or model not in names:
-        raise InputError(f"model must be one of {', '.join(names)}; got {model!r}")
+    layer, tip, nu_v, HH = check_setting(layer, punch, H, material, nu, tol, model)
     for name, v in (("times", times), ("depths", depths)):
         check_array_size(v, name, MAX_STEPS, "1e6 nodes take ~1 s and 0.12 GB; subsample the history")
         if not isinstance(v, (list, tuple, np.ndarray)) and hasattr(v, "__len__"):  # a range: counted too
@@ -300,12 +313,6 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
         raise InputError("times and depths must be finite (no nan or inf)")
     if np.any(np.diff(t) <= 0):
         raise InputError("times must be strictly increasing")
-    if isinstance(punch, Tip) and not is_polynomial_tip(punch):
-        tip = punch
-    else:
-        tip = numeric_punch(punch, {})
-    if layer.numeric_nu is None or layer.incompressible_at(nu_v):
-        layer = layer.with_nu(nu_v)
     curve = force_curve_for(layer, tip, HH, nu_v, float(tol), d, model)
     u, inv = np.unique(d, return_inverse=True)  # each depth once (a hold repeats one depth)
     F = curve.force(u)[inv]
