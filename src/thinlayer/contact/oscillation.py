@@ -229,8 +229,9 @@ class ContactStiffness(RichDisplay):
     model : str
         The elastic law's model.
     estimate : float
-        The relative error estimate of ``S``: the larger of the law's estimate at ``delta0`` and the jump of its
-        one-sided slopes there (a law pieced from branches, e.g. the any-thickness law at ``chi = 1``).
+        The relative error estimate of ``S``: the law's estimate at ``delta0`` plus twice the jump of its one-sided
+        slopes there (a law pieced from branches, e.g. the any-thickness law at ``chi = 1``: measured against the
+        flat-punch identity, the central slope there is off by up to 1.5 times the jump).
     """
 
     delta0: float
@@ -312,7 +313,7 @@ def contact_stiffness(layer: LayerKernel, punch: Any, H: Any, delta0: Any, *, nu
                          f"(H = {HH:.6g}); raise tol or choose another depth")
     F, S, c, dc, kink = _slope(curve, d0)
     return ContactStiffness(d0, HH, nu_v, S, _half_space_stiffness(tip, nu_v, c, d0), F, c, dc, curve.model,
-                            max(float(curve.estimate(np.array([d0]))[0]), kink))
+                            float(curve.estimate(np.array([d0]))[0]) + 2.0 * kink)
 
 
 @dataclass(frozen=True, eq=False)

@@ -12,11 +12,13 @@ no other entry (:mod:`thinlayer.contact.models.walk`).
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..hereditary import ViscoelasticForce, viscoelastic_depth, viscoelastic_force
 from ..problem import Problem
 from .base import Model, register_model
+
+if TYPE_CHECKING:
+    from ..hereditary import ViscoelasticForce
 
 __all__ = ["LeeRadokModel"]
 
@@ -42,6 +44,8 @@ class LeeRadokModel(Model):
         return None
 
     def run(self, problem: Problem) -> ViscoelasticForce:
+        from ..hereditary import viscoelastic_depth, viscoelastic_force  # it imports the registry: at call time
+
         m, ld = problem.material, problem.loading
         answer = viscoelastic_force if ld.control == "depth" else viscoelastic_depth
         return answer(problem.layer, problem.tip, problem.H, m.relaxation, ld.times, ld.values, nu=m.nu,
