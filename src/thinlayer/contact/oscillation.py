@@ -274,7 +274,7 @@ class ContactStiffness(RichDisplay):
                 f"  S = dP/d delta = {self.stiffness:.8g} mu  (half-space {self.half_space_stiffness:.8g} mu, ratio "
                 f"{self.bottom_effect:.6g})",
                 f"  contact radius c = {self.contact_radius:.8g}, dc/d delta = {self.radius_slope:.6g}",
-                f"  law estimate {self.estimate:.2g}"]
+                f"  relative error estimate of S {self.estimate:.2g}"]
 
     def __str__(self) -> str:
         return "\n".join(self.text_lines())

@@ -599,6 +599,9 @@ def build_parser() -> argparse.ArgumentParser:
     add_validate(sub, fmt)
     add_fit_parser(sub, fmt)
     add_flat_parser(sub, fmt)
+    from .visco_cli import add_visco_parser
+
+    add_visco_parser(sub, fmt)
     return ap
 
 
