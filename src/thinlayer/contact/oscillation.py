@@ -407,7 +407,6 @@ def oscillation(layer: LayerKernel, punch: Any, H: Any, material: Material, delt
     >>> osc.valid, [round(float(p), 4) for p in osc.phase]
     (True, [0.1918, 0.4636])
     """
-    st = contact_stiffness(layer, punch, H, delta0, nu=nu, tol=tol, model=model)
     try:
         raw = np.asarray(omega)
         if raw.dtype.kind not in "iuf":
@@ -418,6 +417,10 @@ def oscillation(layer: LayerKernel, punch: Any, H: Any, material: Material, delt
     if w.size == 0 or not np.all(np.isfinite(w)) or np.any(w < 0):
         raise InputError("omega must hold finite angular frequencies >= 0")
     eps = positive(amplitude, "amplitude")
+    if not isinstance(material, Material):
+        raise InputError(f"material must be Prony(...), StandardLinearSolid(...), KelvinVoigt(...) or PowerLaw(...), "
+                         f"got {material!r}")
+    st = contact_stiffness(layer, punch, H, delta0, nu=nu, tol=tol, model=model)  # the inputs checked first
     k = material.complex_modulus(w) * st.stiffness / (2.0 * (1.0 + st.nu))
     ratio = eps / st.delta0
     valid = ratio <= MAX_RELATIVE_AMPLITUDE
