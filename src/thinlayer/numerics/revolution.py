@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -76,6 +77,12 @@ VERIFIED_FLOOR = 1e-12
 MAX_C0_OVER_H = 30.0
 
 
+@lru_cache(maxsize=16)
+def _legendre(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes and weights, cached (abel_load is called once per trial radius by the time stepper)."""
+    return special.roots_legendre(n)
+
+
 def abel_load(slope: Any, breakpoints: tuple, s: Any, nodes: int = _THETA) -> np.ndarray:
     r"""``h(s) = s int_0^s Phi'(r)/sqrt(s^2 - r^2) dr = s int_0^{pi/2} Phi'(s sin theta) d theta`` (F.11).
 
@@ -84,7 +91,7 @@ def abel_load(slope: Any, breakpoints: tuple, s: Any, nodes: int = _THETA) -> np
     apex, where ``Phi'`` may behave like ``r^{n - 1}`` with a real ``n >= 1``.
     """
     s = np.atleast_1d(np.asarray(s, dtype=float))
-    xg, wg = special.roots_legendre(nodes)
+    xg, wg = _legendre(nodes)
     z, wz = 0.5 * (xg + 1.0), 0.5 * wg
     with np.errstate(divide="ignore", invalid="ignore"):
         cuts = [np.arcsin(np.clip(np.where(s > 0, b / np.where(s > 0, s, 1.0), 1.0), 0.0, 1.0))
