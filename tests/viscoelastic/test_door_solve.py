@@ -91,11 +91,23 @@ def test_power_law_and_kelvin_voigt_creep():
     assert abs(F[-1] / ((1 - math.exp(-2.0 * 2 / 0.5)) / 2) - 1) < 1e-4
 
 
-def test_shrinking_contact_flagged_never_a_number():
+def test_shrinking_contact_ting_for_prony_else_flagged_never_a_number():
     t = np.linspace(0.0, 2.0, 401)
     d = 0.1 * np.minimum(t, 1.0) - 0.05 * np.maximum(t - 1.0, 0.0)  # approach, then retract
-    ans = solve(L, TIP, H=H, material=SLS, history=(t, d))
     shrinking = t > 1.0
+    # a Prony series under a depth history: the registry's Ting row (T3)-(T5) (tested against the direct solver in
+    # test_ting.py), the same numbers as ting_force
+    from thinlayer.contact.ting import ting_force
+
+    ans = solve(L, TIP, H=H, material=SLS, history=(t, d))
+    ref = ting_force(L, TIP, H, SLS, t, d)
+    assert "Ting (T3)-(T5)" in ans.reason and ans.valid.all() == ref.valid.all()
+    assert np.array_equal(ans.force, ref.force, equal_nan=True) and np.isfinite(ans.force[shrinking]).any()
+    # Lee-Radok for the same force while the contact grows
+    assert np.allclose(ans.force[~shrinking], solve(L, TIP, H=H, material=SLS, history=(t[~shrinking],
+                                                                                          d[~shrinking])).force)
+    # a power law: no Ting here, so Lee-Radok flags the shrinking part
+    ans = solve(L, TIP, H=H, material=PowerLaw(2.0, 1.0, 0.2), history=(t, d))
     assert ans.valid[~shrinking].all() and not ans.valid[shrinking].any()
     assert np.isnan(ans.force[shrinking]).all() and np.isfinite(ans.force[~shrinking]).all()
     assert "Ting" in ans.reason and "NOT VALID" in str(ans) and "NOT VALID" in repr(ans)

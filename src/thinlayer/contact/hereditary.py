@@ -21,7 +21,8 @@ for such ``F`` they are exact (to rounding):
 * Kelvin-Voigt: ``E F(t_n) + eta r_n`` (the impulse ``eta delta(t)`` as the rate over the step ending at ``t_n``:
   the left derivative of the piecewise-linear ``F``; for a smooth history, first order in the step).
 
-Where the contact shrinks, Lee-Radok does not hold (Ting's method is needed, not in this slice): those times are
+Where the contact shrinks, Lee-Radok does not hold (Ting's method is needed: :func:`thinlayer.contact.ting.ting_force`,
+which ``solve(material=Prony(...), history=...)`` uses for a depth history rising to one maximum): those times are
 flagged and their force is NaN, as is every time after the first shrink.
 """
 from __future__ import annotations
@@ -314,7 +315,8 @@ def viscoelastic_depth(layer: LayerKernel, punch: Any, H: Any, material: Materia
     reasons = []
     if after.any():
         reasons.append(f"the contact shrinks from t = {t[np.argmax(after)]:.6g} on (F(delta) decreases): Lee-Radok "
-                       "holds only for a growing contact; Ting's method is needed (not in this release)")
+                       "holds only for a growing contact; Ting's method is needed (not for a force history in this "
+                       "release)")
     if bad_law.any():
         reasons.append(f"the {probe.model} law has no depth within tol = {tol:.3g} for the force at t = "
                        f"{t[np.argmax(bad_law)]:.6g}; from there the history is unknown")
@@ -516,7 +518,8 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
     reasons = []
     if after.any():
         reasons.append(f"the contact shrinks from t = {t[np.argmax(after)]:.6g} on: Lee-Radok holds only for a "
-                       "growing contact; Ting's method is needed (not in this release)")
+                       "growing contact; Ting's method is needed (solve(material=Prony(...), history=(t, depths)) uses "
+                       "it for a depth rising to one maximum; not for a power law or Kelvin-Voigt in this release)")
     if tension.any():
         reasons.append(f"the force would be negative (the punch lifts off) from t = {t[np.argmax(tension)]:.6g}")
     if infinite.any():

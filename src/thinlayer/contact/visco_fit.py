@@ -8,7 +8,8 @@ r"""Fitting viscoelastic data on a layer (issue 27 item 4): the material's param
   elastic law at unit modulus, ``P = 1/(2(1 + nu)) int E(t - s) dF(delta(s))``; ``F(delta(t))`` is evaluated once per
   curve (it does not depend on the material), and each evaluation of the model is one O(N) hereditary integral.
   Lee-Radok holds while the contact grows: the points from the first shrink on (the retraction) are **left out** of
-  the fit and counted (``n_excluded``); Ting's method, which would use them, is not wired in this release.
+  the fit and counted (``n_excluded``); Ting's method (:mod:`thinlayer.contact.ting`, which ``solve()`` uses), would
+  use them: it is not wired into the fit in this release.
 * **an oscillation** -- the dynamic stiffness ``K*(w) = (Delta P/Delta delta)(w)`` measured around a depth
   ``delta0`` (:mod:`thinlayer.contact.oscillation`): ``E*(w) = 2(1 + nu) K*/S(delta0)`` with the layer's ``S``,
   fitted by the model's complex modulus (real and imaginary parts).
@@ -285,7 +286,7 @@ def fit_viscoelastic(layer: Any, punch: Any, H: Any, *, material: str = "sls", c
     reason = f"{kind} fitted to {what} for H = {HH:.6g} (least squares, delta-method errors)"
     if excluded:
         reason += (f"; {excluded} points left out where the contact shrinks (Lee-Radok holds for a growing contact; "
-                   "Ting's method not in this release)")
+                   "Ting's method not in the fit in this release)")
     return ViscoFitResult(mat, dict(zip(names, map(float, vals))), dict(zip(names, map(float, errs))), cov,
                           "curves" if curves is not None else "oscillation", law,
                           float(math.sqrt(float(sol.fun @ sol.fun) / n)), int(n if curves is not None else n // 2),
