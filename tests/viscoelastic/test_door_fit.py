@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thinlayer import BondedLayer, Punch, viscoelastic_force
+from thinlayer import BondedLayer, Punch, solve, viscoelastic_force
 from thinlayer.contact.materials import PowerLaw, StandardLinearSolid
 from thinlayer.contact.oscillation import oscillation
 from thinlayer.contact.visco_fit import fit_viscoelastic
@@ -21,12 +21,13 @@ TRUE = {"E0": 3.0, "E_inf": 1.0, "tau": 0.3}
 SLS = StandardLinearSolid(3.0, 1.0, 0.3)
 
 
-def _approach_retract(speed: float, n: int = 301):
-    """Approach to 0.1 at ``speed``, retract at the same speed: (t, d, P) with NaN force while retracting."""
+def _approach_retract(speed: float, n: int = 201):
+    """Approach to 0.1 at ``speed``, retract at the same speed: (t, d, P), the retraction by Ting's method (the door
+    routes a Prony depth history there; Ting is checked against the direct solver in test_ting.py)."""
     T = 0.1 / speed
     t = np.linspace(0.0, 2 * T, n)
     d = np.where(t <= T, speed * t, 0.1 - speed * (t - T))
-    return t, d, viscoelastic_force(L, TIP, H, SLS, t, d).force
+    return t, d, solve(L, TIP, H=H, material=SLS, history=(t, d)).force
 
 
 @pytest.fixture(scope="module")
@@ -48,11 +49,17 @@ def test_exact_data_recovered(curves):
     res = fit_viscoelastic(L, TIP, H, curves=[(t, d, np.where(np.isfinite(P), P, 0.0)) for t, d, P in curves])
     for n, v in TRUE.items():
         assert res.values[n] == pytest.approx(v, rel=1e-6)
-    assert res.n_excluded == sum(d.size - int(np.argmax(d)) - 1 for _, d, _ in curves)  # the retractions left out
-    assert "left out" in res.reason and "Ting" in res.reason
+    assert res.n_excluded == 0 and "2 with its retraction by Ting's method" in res.reason
+    # a power law has no Ting here: its retraction is left out and counted
+    pl = PowerLaw(2.0, 1.0, 0.2)
+    t, d, _ = curves[1]
+    P = viscoelastic_force(L, TIP, H, pl, t, d).force
+    res = fit_viscoelastic(L, TIP, H, material="power-law", curves=[(t, d, np.where(np.isfinite(P), P, 0.0))])
+    assert res.values["alpha"] == pytest.approx(0.2, rel=1e-6)
+    assert res.n_excluded == d.size - int(np.argmax(d)) - 1 and "left out" in res.reason
 
 
-@pytest.mark.parametrize("seed", [0, 1, 2])
+@pytest.mark.parametrize("seed", [0, pytest.param(1, marks=pytest.mark.slow), pytest.param(2, marks=pytest.mark.slow)])
 def test_approach_retract_two_speeds_within_errors(curves, seed):
     res = fit_viscoelastic(L, TIP, H, curves=_noisy(curves, seed))
     assert _within(res, TRUE, 3.5), (res.values, res.errors)
