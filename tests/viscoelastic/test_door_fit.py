@@ -21,7 +21,7 @@ TRUE = {"E0": 3.0, "E_inf": 1.0, "tau": 0.3}
 SLS = StandardLinearSolid(3.0, 1.0, 0.3)
 
 
-def _approach_retract(speed: float, n: int = 201):
+def _approach_retract(speed: float, n: int = 81):
     """Approach to 0.1 at ``speed``, retract at the same speed: (t, d, P), the retraction by Ting's method (the door
     routes a Prony depth history there; Ting is checked against the direct solver in test_ting.py)."""
     T = 0.1 / speed
@@ -46,10 +46,10 @@ def _within(res, truth, k):
 
 
 def test_exact_data_recovered(curves):
-    res = fit_viscoelastic(L, TIP, H, curves=[(t, d, np.where(np.isfinite(P), P, 0.0)) for t, d, P in curves])
+    res = fit_viscoelastic(L, TIP, H, curves=[curves[1]])
     for n, v in TRUE.items():
         assert res.values[n] == pytest.approx(v, rel=1e-6)
-    assert res.n_excluded == 0 and "2 with its retraction by Ting's method" in res.reason
+    assert res.n_excluded == 0 and "1 with its retraction by Ting's method" in res.reason
     # a power law has no Ting here: its retraction is left out and counted
     pl = PowerLaw(2.0, 1.0, 0.2)
     t, d, _ = curves[1]
