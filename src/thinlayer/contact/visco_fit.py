@@ -244,11 +244,12 @@ def fit_viscoelastic(layer: Any, punch: Any, H: Any, *, material: str = "sls", c
         if delta0 is not None:
             raise InputTypeError("delta0 belongs to an oscillation; leave it out with curves=")
         data = _curves(curves)
-        prepared, excluded, law, n_ting = [], 0, "", 0
+        prepared, excluded, law, n_ting, loading = [], 0, "", 0, []
         for t, d, p in data:
             el = viscoelastic_force(layer, tip, HH, Prony(1.0), t, d, nu=nu_v, tol=tol, model=model)
             F = np.where(el.valid, el.force * c2, 0.0)  # the unit-modulus law F(delta(t)) (E = 1)
             law = el.model
+            loading.append((_lee_radok_model(t, F, el.valid, c2), el.valid, p))
             if kind == "sls" and _one_maximum(d) and not el.valid.all():
                 from .ting import ting_force
 
@@ -267,6 +268,12 @@ def fit_viscoelastic(layer: Any, punch: Any, H: Any, *, material: str = "sls", c
         def residual(x: np.ndarray) -> np.ndarray:
             m = build(x)[0]
             return np.concatenate([predict(m) for predict, _, _ in prepared]) - y
+
+        y_load = np.concatenate([p[v] for _, v, p in loading])
+
+        def first_residual(x: np.ndarray) -> np.ndarray:  # Lee-Radok on the loading: Ting's fit starts there
+            m = build(x)[0]
+            return np.concatenate([predict(m) for predict, _, _ in loading]) - y_load
 
         unit = [predict(Prony(1.0)) for predict, _, _ in prepared]  # the force at E = 1
         span = float(max(t[-1] - t[0] for t, *_ in data))
@@ -302,6 +309,10 @@ def fit_viscoelastic(layer: Any, punch: Any, H: Any, *, material: str = "sls", c
     from scipy.optimize import least_squares
 
     x0 = _start(kind, scale, span, guess)
+    if curves is not None and n_ting and y_load.size > x0.size:  # ~10 cheap evaluations save as many Ting ones
+        first = least_squares(first_residual, x0, method="lm", x_scale="jac", max_nfev=2000)
+        if np.all(np.isfinite(first.x)):
+            x0 = first.x
     sol = least_squares(residual, x0, method="lm", x_scale="jac", max_nfev=2000)
     if not np.all(np.isfinite(sol.x)) or not np.all(np.isfinite(sol.fun)):
         raise ComputationError("fit_viscoelastic(): the least-squares fit did not converge to finite values")
