@@ -145,3 +145,24 @@ def test_large_amplitude_flagged_and_bad_input_refused():
         oscillation(*args, 1.0, -1e-3)
     with pytest.raises(ThinlayerError, match="delta0"):
         contact_stiffness(BondedLayer(0.5), Punch.paraboloid(10.0), 1.0, 0.0)
+
+
+@pytest.mark.slow
+def test_against_the_direct_solver_within_the_estimate():
+    # the direct time-stepping solver moves the contact edge itself: the first harmonic of the last of 3 periods
+    from thinlayer.numerics.viscoelastic import solve_history
+
+    layer, tip, m = BondedLayer(0.5), Punch.paraboloid(10.0), StandardLinearSolid(3.0, 1.0, 0.1)
+    d0, w, eps = 0.13, 10.0, 0.02 * 0.13
+    period = 2 * math.pi / w
+    t = np.concatenate([np.linspace(0, 1.0, 101), 1.0 + np.linspace(0, 3 * period, 601)[1:]])
+    hold = np.where(t < 0.05, d0 * t / 0.05, d0)
+    dP = (solve_history(layer, tip, 1.0, m, t, hold + np.where(t > 1.0, eps * np.sin(w * (t - 1.0)), 0.0),
+                        nodes=200).force - solve_history(layer, tip, 1.0, m, t, hold, nodes=200).force)
+    last = t > 1.0 + 2 * period + 1e-12
+    tt = t[last] - 1.0
+    basis = np.stack([np.sin(w * tt), np.cos(w * tt), np.ones_like(tt), np.sin(2 * w * tt), np.cos(2 * w * tt)], 1)
+    coef, *_ = np.linalg.lstsq(basis, dP[last], rcond=None)
+    osc = oscillation(layer, tip, 1.0, m, d0, w, eps)
+    err = abs(complex(coef[0], coef[1]) / eps / complex(osc.dynamic_stiffness[0]) - 1)
+    assert 0.005 < err <= osc.estimate, (err, osc.estimate)  # the edge's first-order effect shows, within the estimate

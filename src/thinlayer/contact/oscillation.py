@@ -29,8 +29,21 @@ Conditions (stated on every result):
   set may be frozen at ``c(delta0)``: a smooth punch's pressure vanishes at its edge, so the strip the edge sweeps
   carries a force of higher order, and ``S(delta0)`` equals the stiffness of a flat punch of the same contact (the
   identity ``dP/d delta = `` flat-punch stiffness of the current contact), for which the fixed-contact response
-  above is exact.  The size of the higher-order remainder against the direct time-stepping solver is not measured
-  in this release.
+  above is exact.
+
+Measured against the direct time-stepping solver (:func:`thinlayer.numerics.viscoelastic.solve_history`, which
+moves the contact edge itself): sphere ``R = 10`` on a bonded incompressible layer ``H = 1`` (``c/H = 1.64``), SLS
+``E0 = 3, E_inf = 1, tau = 0.1``, ``delta0 = 0.13``, ``w = 10``, first harmonic of the last of 3 periods after a
+hold of ``10 tau`` (120 nodes, 100 steps per period; in brackets 200 nodes, 200 steps)::
+
+    eps/delta0        0.001    0.005    0.02             0.05
+    |K|/|K*| - 1     -0.34 %  -0.46 %  -1.34 % (-1.31 %)  -3.2 %
+    phase - arg K*   -0.0024  -0.0028  -0.0055 (-0.0050)  -0.0126
+
+A floor of ~0.3 % (the solver's time step; its phase error) and a part **linear** in ``eps/delta0``, about
+``0.55 eps/delta0``: the moving contact edge costs the linear response a first-order relative error, not
+``(eps/delta0)^2``.  The result's ``estimate`` is ``0.8 eps/delta0`` plus the stiffness's estimate (measured on this
+one case only; flagged as such).
 """
 from __future__ import annotations
 
@@ -337,6 +350,9 @@ class Oscillation(RichDisplay):
         ``eps``.
     valid : bool
         ``eps/delta0 <= MAX_RELATIVE_AMPLITUDE``; ``reason`` the conditions in one line.
+    estimate : float
+        Relative error estimate of ``K*``: ``0.8 eps/delta0`` (the moving contact edge, measured against the direct
+        solver on one case: module docstring) plus the stiffness's estimate.
     """
 
     omega: np.ndarray
@@ -349,6 +365,7 @@ class Oscillation(RichDisplay):
     amplitude: float
     valid: bool
     reason: str
+    estimate: float = math.nan
 
     equation = "K* = E* S/(2(1 + nu))"
 
@@ -378,7 +395,8 @@ class Oscillation(RichDisplay):
                 "dynamic_stiffness_real": self.dynamic_stiffness.real.tolist(),
                 "dynamic_stiffness_imag": self.dynamic_stiffness.imag.tolist(),
                 "force_amplitude": self.force_amplitude.tolist(), "phase": self.phase.tolist(),
-                "radius_amplitude": self.radius_amplitude, "valid": self.valid, "reason": self.reason}
+                "radius_amplitude": self.radius_amplitude, "valid": self.valid, "estimate": self.estimate,
+                "reason": self.reason}
 
 
 @boundary
@@ -424,12 +442,14 @@ def oscillation(layer: LayerKernel, punch: Any, H: Any, material: Material, delt
     k = material.complex_modulus(w) * st.stiffness / (2.0 * (1.0 + st.nu))
     ratio = eps / st.delta0
     valid = ratio <= MAX_RELATIVE_AMPLITUDE
+    estimate = 0.8 * ratio + st.estimate
     reason = (f"Lee-Radok linearised in eps/delta0 = {ratio:.3g} "
-              + ("(<= " if valid else "(NOT VALID: > ") + f"{MAX_RELATIVE_AMPLITUDE:g}); neglected terms of order "
-              "eps/delta0 (second harmonic, mean shift) and (eps/delta0)^2 in the first harmonic; the contact radius "
-              "oscillates, frozen at c(delta0) to first order (a smooth punch's pressure vanishes at the edge)")
+              + ("(<= " if valid else "(NOT VALID: > ") + f"{MAX_RELATIVE_AMPLITUDE:g}); the contact radius "
+              "oscillates, frozen at c(delta0) to first order; the moving edge lowers |K*| by ~0.55 eps/delta0 "
+              f"against the direct solver (one case measured): estimate {estimate:.2g}")
     amp = np.abs(k) * eps
     ph = np.angle(k)
     for a in (w, k, amp, ph):
         a.setflags(write=False)
-    return Oscillation(w, k, amp, ph, abs(st.radius_slope) * eps, st, material, eps, bool(valid), reason)
+    return Oscillation(w, k, amp, ph, abs(st.radius_slope) * eps, st, material, eps, bool(valid), reason,
+                       float(estimate))
