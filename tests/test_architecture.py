@@ -14,6 +14,7 @@ and no module is over 900 lines (no exemptions).
 from __future__ import annotations
 
 import ast
+from functools import lru_cache
 from pathlib import Path
 
 import pytest
@@ -68,6 +69,12 @@ def _module_name(path: Path) -> str:
 MODULES = {_module_name(p): p for p in sorted(SRC.rglob("*.py"))}
 
 
+@lru_cache(maxsize=None)
+def _tree(path: Path) -> ast.AST:
+    """The parsed module, parsed once per run and shared by the checks (which only read it)."""
+    return ast.parse(path.read_text())
+
+
 def _is_package(mod: str) -> bool:
     return MODULES[mod].name == "__init__.py"
 
@@ -81,9 +88,10 @@ def _type_checking_lines(tree: ast.AST) -> set[int]:
     return lines
 
 
+@lru_cache(maxsize=None)
 def _imports(mod: str) -> list[tuple[str, str | None, int]]:
     """``(imported module, imported name or None, line)`` for every executed import of ``mod``."""
-    tree = ast.parse(MODULES[mod].read_text())
+    tree = _tree(MODULES[mod])
     skip = _type_checking_lines(tree)
     package = mod if _is_package(mod) else mod.rsplit(".", 1)[0]
     out = []
@@ -162,7 +170,7 @@ def test_no_private_name_crosses_a_module():
             bad.append(f"{mod}:{line} imports the private module {target}")
     # attribute access to a private name of an imported module: ``module._name``
     for mod, path in MODULES.items():
-        tree = ast.parse(path.read_text())
+        tree = _tree(path)
         aliases = {}
         for node in ast.walk(tree):
             if isinstance(node, (ast.Import, ast.ImportFrom)):
@@ -217,7 +225,7 @@ def _top_level_scipy(mod: str) -> list[str]:
     mods = [m for m in MODULES if m == mod or m.startswith(mod + ".")]
     bad = []
     for m in mods:
-        tree = ast.parse(MODULES[m].read_text())
+        tree = _tree(MODULES[m])
         for node in tree.body:
             if isinstance(node, ast.Import):
                 bad += [a.name for a in node.names if a.name.split(".")[0] == "scipy"]
@@ -232,7 +240,7 @@ def test_no_layer_type_or_name_checks_outside_layers():
     for mod, path in MODULES.items():
         if _group(mod) == "thinlayer.layers":
             continue
-        tree = ast.parse(path.read_text())
+        tree = _tree(path)
         for node in ast.walk(tree):
             if isinstance(node, ast.Call) and getattr(node.func, "id", "") == "isinstance" and len(node.args) == 2:
                 names = {n.id for n in ast.walk(node.args[1]) if isinstance(n, ast.Name)}
@@ -262,7 +270,7 @@ def _tip_classes() -> set[str]:
     bases: dict[str, set[str]] = {}
     for mod, path in MODULES.items():
         if _group(mod) == "thinlayer.punch":
-            for node in ast.walk(ast.parse(path.read_text())):
+            for node in ast.walk(_tree(path)):
                 if isinstance(node, ast.ClassDef):
                     bases[node.name] = {ast.unparse(b).rsplit(".", 1)[-1] for b in node.bases}
     found = {"Tip"}
@@ -319,7 +327,7 @@ def _offences() -> dict[str, list[str]]:
     tips = _tip_classes()
     out = {}
     for mod, path in MODULES.items():
-        tree = ast.parse(path.read_text())
+        tree = _tree(path)
         bad = [] if _group(mod) == "thinlayer.punch" else _tip_offences(mod, tree, tips)
         bad += [] if _group(mod) == "thinlayer.layers" else _base_offences(mod, tree)
         if bad:
@@ -370,7 +378,7 @@ def test_only_the_outer_ring_imports_the_integrations():
     for mod, path in MODULES.items():
         if _group(mod) == "thinlayer.afm":
             continue
-        for node in ast.walk(ast.parse(path.read_text())):
+        for node in ast.walk(_tree(path)):
             names = []
             if isinstance(node, ast.Import):
                 names = [a.name for a in node.names]

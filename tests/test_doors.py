@@ -35,6 +35,8 @@ from thinlayer.errors import ThinlayerError
 PAYLOADS = ("__import__('os').system('touch {m}') or 1",
             "x_1**2 + x_2**2 + 0*__import__('os').system('touch {m}')")
 
+AFM_FILE = Path(__file__).resolve().parent / "afm" / "data" / "fmt-jpk-fd_spot3-0192.jpk-force"  # a real curve
+_curve = lambda: __import__("thinlayer.afm.curves").afm.curves.curve_from_arrays(np.arange(9.0), [0, 0, 0, 0, 1, 2.8, 5.2, 8, 11.2])  # noqa: E501,E731
 #: the stages the README (and the issue) present by their module, beyond the names of thinlayer
 PRESENTED = (("thinlayer.asymptotics.second_order", "edge_constants"),
              ("thinlayer.asymptotics.second_order", "second_order_law"),
@@ -329,6 +331,7 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=0.1, n=s),
         lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=1.0, n=32, extent=s),
         lambda s: tl.solve_2d(F().L, F().P, force=s, H=1.0, n=32),
+        lambda s: tl.solve_2d(F().L, F().P, delta0=0.1, H=1.0, n=32, extent=2.0, surface_load=s),
         lambda s: tl.solve_2d(tl.FrictionlessLayer(), F().P, delta0=0.1, H=1.0, n=32, nu=s)],
     "thinlayer.force_any_thickness": [
         lambda s: tl.force_any_thickness(s, 10.0, 2.0, mu=1.0), lambda s: tl.force_any_thickness(0.1, s, 2.0, mu=1.0),
@@ -338,6 +341,9 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.force_any_thickness(0.1, 10.0, 2.0, 1.0, base=s),
         lambda s: tl.force_any_thickness([0.1, s], 10.0, 2.0, 1.0)],
     "thinlayer.any_thickness_law": [lambda s: tl.any_thickness_law(s), lambda s: tl.any_thickness_law(0.5, s)],
+    "thinlayer.load_curve": [lambda s: tl.load_curve(s), lambda s: tl.load_curve(AFM_FILE, segment=s), lambda s: tl.load_curve(AFM_FILE, index=s)],  # noqa: E501
+    "thinlayer.fit_curve": [lambda s: tl.fit_curve(s, punch=1.0)] + [lambda s, k=k: tl.fit_curve(_curve(), **{"punch": 1.0, k: s}) for k in ("punch", "H", "nu", "base", "model", "fit_H", "baseline", "contact_point", "weighting", "weight_cp", "fit_range", "range_kind", "bootstrap", "seed")],  # noqa: E501
+    "thinlayer.afm.curve_fit.CurveFit.predict": [lambda s: tl.fit_curve(_curve(), punch=1.0).predict(s), lambda s: tl.fit_curve(_curve(), punch=1.0).predict([0.1, s])],  # noqa: E501
     "thinlayer.fit": [
         lambda s: tl.fit(s, [1, 2, 3], punch=1.0, H=1.0), lambda s: tl.fit([0.1, 0.2, 0.3], s, punch=1.0, H=1.0),
         lambda s: tl.fit([0.1, s, 0.3], [1, 2, 3], punch=1.0, H=1.0),
@@ -348,7 +354,9 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, model=s),
         lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, E0=s),
         lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, sigma=s),
-        lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, fit_H=s)],
+        lambda s: tl.fit([0.1, 0.2, 0.3], [1, 2, 3], punch=1.0, H=1.0, fit_H=s),
+        lambda s: tl.fit([0.1, 0.2, 0.3], [1, -2, 3], punch=1.0, H=1.0, work_of_adhesion=s),  # issue 26 item 5
+        lambda s: tl.fit(s, [1, -2, 3], punch=1.0, H=1.0, work_of_adhesion="free")],
     "thinlayer.force_arrays": [
         lambda s: tl.force_arrays(s, F().P, [0.1], 0.05), lambda s: tl.force_arrays(F().L, s, [0.1], 0.05),
         lambda s: tl.force_arrays(F().L, F().P, s, 0.05), lambda s: tl.force_arrays(F().L, F().P, [0.1, s], 0.05),
@@ -511,6 +519,7 @@ INVENTORY: dict[str, list] = {
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution.q": [lambda s: F().wh.q(s), lambda s: F().wh.q(1.0, dps=s),
                                                                lambda s: F().wh.q(1.0, method=s)],
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution.q_numpy": [lambda s: F().wh.q_numpy(s)],
+    "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution.table_check": [lambda s: F().wh.table_check(s)],
     "thinlayer.asymptotics.incompressible.operator.ThinLayerOperator.apply": [
         lambda s: F().op.apply(s), lambda s: F().op.apply(sp.Symbol("x_1") ** 2, v1=s),
         lambda s: F().op.apply(sp.Symbol("x_1") ** 2, v2=s)],
@@ -578,6 +587,7 @@ RESULT_CLASSES = (
     "thinlayer.contact.fit.FitResult", "thinlayer.contact.hereditary.ViscoelasticForce",
     "thinlayer.contact.oscillation.ContactStiffness", "thinlayer.contact.oscillation.Oscillation",
     "thinlayer.contact.oscillation.OscillationLaw", "thinlayer.contact.visco_fit.ViscoFitResult",
+    "thinlayer.afm.curves.Curve", "thinlayer.afm.curve_fit.CurveFit",
     "thinlayer.contact.indentation.DirectComparison",
     "thinlayer.numerics.AxisymmetricContact",
     "thinlayer.numerics.Contact2D", "thinlayer.numerics.GridContact",

@@ -21,7 +21,7 @@ import thinlayer as tl
 from thinlayer import symbols as S
 
 SLOW = os.environ.get("THINLAYER_SLOW") == "1"
-EXAMPLES = 2000 if SLOW else 120
+EXAMPLES = 2000 if SLOW else 60
 FUZZ = settings(max_examples=EXAMPLES, deadline=None, derandomize=not SLOW,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 

@@ -88,15 +88,66 @@ def _shrink(nb, name: str):
     return nb
 
 
-def _execute(nb, monkeypatch, size: str, timeout: int, name: str = ""):
+def _execute(nb, monkeypatch, size: str, timeout: int, name: str = "", kernel=None):
+    """Run ``nb`` in a new kernel, or in ``kernel`` (a running ``(manager, client)``) after a fresh start of its
+    namespace (:data:`FRESH`)."""
     _, nbclient = _need_jupyter()
     if size == "small":
         _shrink(nb, name)
-    monkeypatch.setenv("MPLBACKEND", "Agg")  # inherited by the kernel process
-    client = nbclient.NotebookClient(nb, timeout=timeout, startup_timeout=120, kernel_name="python3",
+    if kernel is None:
+        monkeypatch.setenv("MPLBACKEND", "Agg")  # inherited by the kernel process
+        client = nbclient.NotebookClient(nb, timeout=timeout, startup_timeout=120, kernel_name="python3",
+                                         resources={"metadata": {"path": str(NB_DIR)}})
+        client.execute()
+        return nb
+    km, kc = kernel
+    msg = kc.execute(FRESH.format(path=str(NB_DIR)), store_history=False)
+    reply = kc.get_shell_msg(timeout=60)
+    while reply["parent_header"].get("msg_id") != msg:
+        reply = kc.get_shell_msg(timeout=60)
+    assert reply["content"]["status"] == "ok", f"resetting the shared kernel failed: {reply['content']}"
+    client = nbclient.NotebookClient(nb, km=km, timeout=timeout, kernel_name="python3",
                                      resources={"metadata": {"path": str(NB_DIR)}})
+    client.kc = kc
     client.execute()
     return nb
+
+
+#: run in the shared kernel before each notebook: an empty namespace (``%reset -f`` drops every name, imports
+#: included, so a notebook that forgets an import still fails), figures closed, matplotlib's settings restored and
+#: the working directory back in ``notebooks/``.  Modules stay imported: a notebook then runs as in a new kernel,
+#: minus the seconds of starting one and importing numpy, sympy, matplotlib and thinlayer again.
+FRESH = """%reset -f
+import os as _os, sys as _sys
+if "matplotlib.pyplot" in _sys.modules:
+    _sys.modules["matplotlib.pyplot"].close("all")
+    _sys.modules["matplotlib"].rcdefaults()
+_os.chdir({path!r})
+del _os, _sys
+"""
+
+
+@pytest.fixture(scope="module")
+def shared_kernel():
+    """One ipykernel for the small runs of this module (they share this fixture, hence one xdist worker).
+
+    The full-size runs (``THINLAYER_SLOW=1``) each start their own kernel, as a user opening the notebook would.
+    """
+    _need_jupyter()
+    import os
+
+    from jupyter_client.manager import KernelManager
+
+    km = KernelManager(kernel_name="python3")
+    km.start_kernel(env=dict(os.environ, MPLBACKEND="Agg"), cwd=str(NB_DIR))
+    kc = km.client()
+    kc.start_channels()
+    try:
+        kc.wait_for_ready(timeout=120)
+        yield km, kc
+    finally:
+        kc.stop_channels()
+        km.shutdown_kernel(now=True)
 
 
 def test_there_are_notebooks():
@@ -144,25 +195,27 @@ def test_notebook_tells_a_story(path):
 
 @pytest.mark.parametrize("size", ["small", pytest.param("full", marks=pytest.mark.slow)])
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
-def test_notebook_runs(path, size, monkeypatch):
+def test_notebook_runs(path, size, monkeypatch, shared_kernel):
     nbformat, _ = _need_jupyter()
-    nb = _execute(nbformat.read(path, as_version=4), monkeypatch, size, CELL_TIMEOUT[size], path.stem)
+    kernel = shared_kernel if size == "small" else None
+    nb = _execute(nbformat.read(path, as_version=4), monkeypatch, size, CELL_TIMEOUT[size], path.stem, kernel)
     outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])]
     errors = [o for o in outputs if o.get("output_type") == "error"]
     assert not errors, f"{path.name}: {errors[0].get('ename')}: {errors[0].get('evalue')}"
-    # the kernel really ran every code cell, in order
+    # the kernel really ran every code cell, in order (a shared kernel goes on counting from its last notebook)
     counts = [c.execution_count for c in nb.cells if c.cell_type == "code" and _source(c).strip()]
-    assert counts == list(range(1, len(counts) + 1)), f"{path.name}: execution counts {counts}"
+    first = counts[0] if counts and kernel is not None else 1
+    assert counts == list(range(first, first + len(counts))), f"{path.name}: execution counts {counts}"
 
 
-def test_results_render_as_latex_in_jupyter(monkeypatch):
+def test_results_render_as_latex_in_jupyter(monkeypatch, shared_kernel):
     """Rich display reaches Jupyter: a result object's output has text/latex (our block) and text/plain."""
     nbformat, _ = _need_jupyter()
     nb = nbformat.v4.new_notebook()
     nb.cells = [nbformat.v4.new_code_cell("import thinlayer as tl\n"
                                           "tl.kernel_coefficients(tl.BondedLayer('3/10'), 1)"),
                 nbformat.v4.new_code_cell("print(tl.Punch.paraboloid(R=1))")]
-    _execute(nb, monkeypatch, "small", 120)
+    _execute(nb, monkeypatch, "small", 120, kernel=shared_kernel)
     data = nb.cells[0].outputs[0]["data"]
     assert data["text/latex"].startswith("$$\\begin{gather*}\\mathcal{A} = \\frac{20}{49} \\tag{2.4}")
     assert "m_{1} = \\frac{1}{14} \\tag{2.20}" in data["text/latex"]

@@ -42,6 +42,7 @@ _PUBLIC = {
     **dict.fromkeys(["Indentation", "solve"], "thinlayer.contact.solve"),
     **dict.fromkeys(["any_thickness_law", "force_any_thickness"], "thinlayer.contact.any_thickness"),
     "fit": "thinlayer.contact.fit",
+    "load_curve": "thinlayer.afm.curves", "fit_curve": "thinlayer.afm.curve_fit",  # measured curves (issue 25)
     # viscoelastic materials and the Lee-Radok force history (issue 27, first slice)
     **dict.fromkeys(["viscoelastic_force", "viscoelastic_depth"], "thinlayer.contact.hereditary"),
     **dict.fromkeys(["oscillation", "contact_stiffness", "oscillation_law"], "thinlayer.contact.oscillation"),

@@ -102,7 +102,10 @@ ENTRIES: tuple[Reference, ...] = (
         record="thinlayer's own citation (thinlayer.asymptotics.thick_layer.PUBLISHED_SERIES)",
         note="Cited as thinlayer records it; title, initials, last page and DOI could not be checked against a "
              "record of the publication (no copy or record of it was found: "
-             "thinlayer.validation.published_tips.READ_ATTEMPTS)"),
+             "thinlayer.validation.published_sources.READ_ATTEMPTS). Documents that cite it give Pablo D. Garcia "
+             "and Ricardo Garcia, 'Determination of the elastic moduli of a single cell cultured on a rigid support "
+             "by force microscopy', Biophysical Journal 114(12), 2923-2932, doi 10.1016/j.bpj.2018.05.012 (the "
+             "reference list of ViscoIndent's documentation, an Igor Pro fitting procedure): a secondary record"),
     Reference(
         "gavara2012", authors=("N. Gavara", "R. S. Chadwick"),
         title="Determination of the elastic moduli of thin samples and adherent cells using conical atomic force "
@@ -113,7 +116,47 @@ ENTRIES: tuple[Reference, ...] = (
                "page of its author manuscript in PubMed Central, PMC3492504, NIHMS402200, PMID 23023646 (authors, "
                "journal, volume, issue, pages, DOI)",
         note="Only the title page, abstract and first paragraph could be read; the article's equations were not "
-             "(addresses tried: thinlayer.validation.published_tips.READ_ATTEMPTS)"),
+             "(addresses tried: thinlayer.validation.published_sources.READ_ATTEMPTS)"),
+    Reference(
+        "efremov2017", authors=("Y. M. Efremov", "W.-H. Wang", "S. D. Hardy", "R. L. Geahlen", "A. Raman"),
+        title="Measuring nanoscale viscoelastic parameters of cells directly from AFM force-displacement curves",
+        journal="Scientific Reports", year=2017, volume="7", pages="1541", doi="10.1038/s41598-017-01784-3",
+        record="the article's page in PubMed Central, PMC5431511, PMID 28484282 (its opening: journal, date, volume, "
+               "article number, DOI, authors, title, abstract)",
+        note="Only the opening (abstract, first paragraphs) could be read; the equations were not "
+             "(addresses tried: thinlayer.validation.published_sources.READ_ATTEMPTS)"),
+    Reference(
+        "garcia2020", authors=("P. D. Garcia", "C. R. Guerrero", "R. Garcia"),
+        title="Nanorheology of living cells measured by AFM-based force-distance curves", journal="Nanoscale",
+        year=2020, doi="10.1039/C9NR10316C",
+        record="the article's open-access HTML at pubs.rsc.org (its opening: authors, title, dates, abstract; the DOI "
+               "from the page's address)",
+        note="Volume and pages not in the part read; only the opening could be read (addresses tried: "
+             "thinlayer.validation.published_sources.READ_ATTEMPTS)"),
+    Reference(
+        "sanchez2021", authors=("J. G. Sanchez", "F. M. Espinosa", "R. Miguez", "R. Garcia"),
+        title="The viscoelasticity of adherent cells follows a single power-law with distinct local variations "
+              "within a single cell and across cell lines",
+        journal="Nanoscale", year=2021, volume="13", pages="16339-16348", doi="10.1039/D1NR03894J",
+        record="the article's open-access HTML at pubs.rsc.org (its opening: DOI, journal, volume, pages, title, "
+               "authors, abstract)",
+        note="Only the opening could be read; the bottom-effect model it prints lies past it (addresses tried: "
+             "thinlayer.validation.published_sources.READ_ATTEMPTS)"),
+    Reference(
+        "moura2025", authors=("A. L. D. Moura", "J. R. Tejedor", "F. M. Espinosa", "L. A. Dominguez",
+                              "J. S. de Sousa", "R. Garcia"),
+        title="Evidence of the bottom stiffness effect on atomic force microscopy-based cell mechanobiology",
+        journal="Nanoscale", year=2025, doi="10.1039/D5NR01236H",
+        record="a mirror of the article's open-access HTML (its opening: authors, title, dates, abstract; the DOI from "
+               "the page's address)",
+        note="Volume and pages not in the part read; only the opening could be read"),
+    Reference(
+        "shull2002", authors=("K. R. Shull",), title="Contact mechanics and the adhesion of soft solids",
+        journal="Materials Science and Engineering: R: Reports", year=2002, volume="36", issue="1", pages="1-45",
+        record="Northwestern University's research record of the article (author, title, journal, volume, issue, "
+               "pages, date, abstract)",
+        note="DOI not shown in the record read, so not given; the review's text could not be read (addresses tried: "
+             "thinlayer.validation.published_sources.READ_ATTEMPTS)"),
     Reference(
         "sneddon1965", authors=("I. N. Sneddon",),
         title="The relation between load and penetration in the axisymmetric Boussinesq problem for a punch of "

@@ -289,3 +289,59 @@ def test_table_across_range(nu):
     for tau in (1e-3 * sol.tau_max, 0.05 * sol.tau_max, 0.3 * sol.tau_max):
         assert float(sol.q(tau)) == pytest.approx(float(sol.q_numpy(tau)), abs=1e-10 * scale)
     assert sol.force_defect() == pytest.approx(m1 / 2, abs=1e-9 * scale)
+
+
+# ------------------------------------------------------------------ the shipped tables (issue 28 item 7)
+def _shipped():
+    from thinlayer.asymptotics import _wiener_hopf_tables as T
+
+    return [(nu, T.table_key(nu, *T.SHIPPED_ARGS)) for nu in T.SHIPPED_NUS]
+
+
+def test_every_shipped_nu_has_its_table():
+    from thinlayer.asymptotics import _wiener_hopf_tables as T
+
+    assert sorted(T.shipped_keys()) == sorted(k for _, k in _shipped())
+    # a float is its exact binary value, not the decimal it prints as
+    assert T.table_key(0.3, *T.SHIPPED_ARGS) != T.table_key("3/10", *T.SHIPPED_ARGS)
+    assert T.shipped_table("1/7", *T.SHIPPED_ARGS) is None
+
+
+@pytest.mark.parametrize("nu,key", _shipped(), ids=lambda v: str(v))
+def test_shipped_table_equals_a_fresh_inversion_between_its_nodes(nu, key):
+    """The shipped series at a point between its Chebyshev nodes (the midpoint in the node angle of nodes 5 and 6)
+    equals q̂(τ) - τ computed now by the route that built it (de Hoog), to the table's accuracy 2e-11 (1 + |h|)."""
+    from thinlayer.asymptotics import _wiener_hopf_tables as T
+
+    layer = "frictionless" if nu == "frictionless" else nu
+    sol = wiener_hopf_solution(layer)
+    assert np.array_equal(np.asarray(sol.cheb), T.shipped_table(nu, *T.SHIPPED_ARGS))  # it is what the solution uses
+    n = len(sol.cheb)
+    x = math.cos(math.pi * 6 / n)  # between the nodes cos(pi (5.5)/n) and cos(pi (6.5)/n)
+    tau = (0.5 * math.sqrt(sol.tau_max) * (x + 1)) ** 2
+    fresh = float(sol.table_check(tau)[0])
+    assert float(sol.q_numpy(tau)) - tau == pytest.approx(fresh, abs=2e-11 * (1 + abs(float(sol.h))))
+
+
+def test_a_table_that_is_not_shipped_is_built_and_cached():
+    from thinlayer.asymptotics import _wiener_hopf_tables as T
+    from thinlayer.asymptotics.wiener_hopf import fresh_table
+
+    assert T.shipped_table("1/7", "exact", "alexandrov", 20, 16) is None
+    cheb = fresh_table("1/7", n=16)
+    sol = wiener_hopf_solution("1/7", n=16)
+    assert np.array_equal(cheb, np.asarray(sol.cheb)) and len(cheb) == 16
+    tau = 0.37 * sol.tau_max
+    # 16 nodes resolve q̂ - τ to ~1e-5 of its scale: the table against the mpmath inversion
+    assert float(sol.q_numpy(tau)) == pytest.approx(float(sol.q(tau)), abs=1e-4 * (1 + abs(float(sol.h))))
+
+
+@slow
+@pytest.mark.parametrize("nu,key", _shipped(), ids=lambda v: str(v))
+def test_shipped_table_rebuilt(nu, key):
+    from thinlayer.asymptotics import _wiener_hopf_tables as T
+    from thinlayer.asymptotics.wiener_hopf import fresh_table
+
+    new = fresh_table(nu, *T.SHIPPED_ARGS)
+    old = T.shipped_table(nu, *T.SHIPPED_ARGS)
+    assert new.shape == old.shape and np.max(np.abs(new - old)) < 1e-13

@@ -192,6 +192,36 @@ def test_cone_law_series_joins_the_table():
         assert lo[0] == pytest.approx(lo[1], rel=1e-5) and hi[0] == pytest.approx(hi[1], rel=1e-5)
 
 
+def test_cone_law_vectorised_evaluation_is_scipys_spline_bit_for_bit():
+    """ratios()/error_estimate() (uniform knots, gathered coefficients, the series on the low points only; issue 24
+    item 7) give exactly the values of the law's scipy CubicSplines and the series (T.9) as np.where over all points
+    did, on any shape; chi <= 0, NaN, chi > chi_max refused in one line."""
+    from thinlayer.contact.any_thickness_tips import ConeLaw, cone_law_from
+
+    # the frictionless law without its measured estimate (whose first build takes 30 s or more), the estimate
+    # splines replaced by two other splines on the same knots: the evaluation is under test
+    bare = cone_law_from(_packaged(), 0.3, "frictionless", with_estimate=False)
+    s0, s1 = bare.splines[:2]
+    law = ConeLaw(0.3, "frictionless", bare.chi_max, (s0, s1, s1, s0), bare.series)
+    rng = np.random.default_rng(3)
+    chi = np.concatenate([rng.uniform(1e-4, CHI_SERIES, 40), rng.uniform(CHI_SERIES, law.chi_max, 400),
+                          [CHI_SERIES, law.chi_max, float(np.exp(law.splines[0].x[7]))]])
+    fc, rc, ser = law.series
+    pv = np.polynomial.polynomial.polyval
+    x = np.log(chi)
+    low = chi <= CHI_SERIES
+    ref = [np.exp(np.where(low, np.log(pv(np.minimum(chi, CHI_SERIES), c)), law.splines[j](x)))
+           for j, c in ((0, fc), (1, rc))]
+    ref += [np.where(low, s, law.splines[j](x)) for j, s in zip((2, 3), ser(np.minimum(chi, CHI_SERIES)))]
+    got = [*law.ratios(chi), *law.error_estimate(chi)]
+    assert all(np.array_equal(g, r) for g, r in zip(got, ref))
+    sq = law.ratios(chi[:16].reshape(4, 4))
+    assert sq[0].shape == (4, 4) and np.array_equal(sq[0].ravel(), got[0][:16])
+    for bad, words in ((0.0, "positive"), (float("nan"), "positive"), (1.01 * law.chi_max, "thin layer")):
+        with pytest.raises(tl.InputError, match=words):
+            law.ratios([0.5, bad])
+
+
 # --------------------------------------------------------------------------- the front door
 def test_solve_auto_picks_the_cone_law_forward_and_inverse():
     ans = tl.solve(BondedLayer(0.45), Punch.cone(70), delta0=0.5, H=1.0, mu=1.0, tol=1e-4)

@@ -151,11 +151,61 @@ def _table_check(law, n: float, layer, nu: float, radii) -> float:
     return worst
 
 
+@lru_cache(maxsize=1)
+def _small_law():
+    """A small table (5 radii c/H in [0.05, 0.6]) of r^1.5 on the frictionless base (5 solves, shared)."""
+    return law_from_table(power_law_table(1.5, 0.3, "frictionless", (0.05, 0.6, 5)), 1.5, 0.3, "frictionless")
+
+
 def test_the_power_law_table_law_holds_off_its_nodes_within_its_estimate():
-    # a small table (5 radii c/H in [0.05, 0.6]) of r^1.5 on the frictionless base, checked between its nodes
+    # the small table, checked between its nodes
     n, nu = 1.5, 0.3
-    law = law_from_table(power_law_table(n, nu, "frictionless", (0.05, 0.6, 5)), n, nu, "frictionless")
+    law = _small_law()
     assert _table_check(law, n, tl.FrictionlessLayer(0.3), nu, (0.2,)) < 2e-2  # h = 0.62 in log c; GRID has 0.18
+
+
+def _pointwise(law, chi):
+    """The law's interpolation written point by point (the formula before the vectorised evaluate, issue 24 item 7)."""
+    from thinlayer.contact.any_thickness_tips import CHI_SERIES
+
+    x0, h, Y, Z, EY, EZ = law.splines
+    out = []
+    for c in chi:
+        if c < CHI_SERIES:
+            fc, rc, ser = law.series
+            pv = np.polynomial.polynomial.polyval
+            eP, ec = ser(np.array([c]))
+            out.append((pv(c, fc), pv(c, rc), eP[0], ec[0]))
+            continue
+        t = (math.log(c) - x0) / h
+        k = min(int(t), Y.size - 2)
+        w = t - k
+        out.append((Y[k] + w * (Y[k + 1] - Y[k]), Z[k] + w * (Z[k + 1] - Z[k]), EY[k], EZ[k]))
+    return np.array(out).T
+
+
+def test_the_vectorised_evaluation_is_the_pointwise_formula_bit_for_bit():
+    """evaluate() (in place, np.take, the slopes stored once) gives the point-by-point interpolation's values exactly,
+    below and above the series' end, on any shape; chi <= 0, NaN and chi > chi_max are refused in one line."""
+    from thinlayer.contact.any_thickness_tips import NotTabulatedError
+
+    # a synthetic smooth table (no solve: the evaluation is under test, not the law's values)
+    chi_t = np.geomspace(0.04, 30.0, 14)
+    data = {"chi": chi_t, "y": np.log1p(0.7 * chi_t + 0.02 * chi_t**2), "z": -0.1 * np.log1p(chi_t),
+            "ed": np.full(14, 1e-9), "eP": np.full(14, 1e-9)}
+    law = law_from_table(data, 1.0, 0.3, "frictionless")  # n = 1: the cone's series (T.9), cached
+    rng = np.random.default_rng(7)
+    chi = np.concatenate([rng.uniform(1e-3, 0.06, 50), rng.uniform(0.06, law.chi_max, 200), [0.06, law.chi_max]])
+    got = law.evaluate(chi)
+    ref = _pointwise(law, chi)
+    for g, r in zip(got, ref):
+        assert np.array_equal(g, r)
+    square = law.evaluate(chi[:36].reshape(6, 6))
+    assert all(a.shape == (6, 6) and np.array_equal(a.ravel(), b[:36]) for a, b in zip(square, got))
+    assert all(np.shape(a) == () for a in law.evaluate(0.3))
+    for bad, words in ((0.0, "positive"), (float("nan"), "positive"), (1.01 * law.chi_max, "thin layer")):
+        with pytest.raises(NotTabulatedError, match=words):
+            law.evaluate([0.2, bad])
 
 
 @pytest.mark.slow

@@ -88,6 +88,27 @@ def _curve(argv: list[str], folder: Path) -> None:
         fh.write("depth,force\n" + "".join(f"{float(d)!r},{float(f)!r}\n" for d, f in zip(delta, force)))
 
 
+def _map_inputs(argv: list[str], folder: Path) -> None:
+    """The map a ``fit-map`` example names: the JPK map of tests/afm/data for a ``.jpk-force-map``, else a 2 x 2
+    synthetic map (Hertz/any-thickness curves, E = 1 kPa, afmformats' HDF5 format; a folder holds one such file),
+    and its height image (one pixel at the substrate, three 2 um above it)."""
+    from thinlayer.afm.map_data import write_synthetic_map
+
+    opt = {argv[k]: argv[k + 1] for k in range(len(argv) - 1) if argv[k].startswith("--")}
+    src = folder / argv[1]
+    if argv[1].endswith(".jpk-force-map"):
+        shutil.copy(ROOT / "tests" / "afm" / "data" / "fmt-jpk-fd_map-data-reference-points.jpk-force-map", src)
+        return
+    H = float(opt["--H"]) if opt.get("--H", "inf") not in ("height", "inf") else 2e-6 if "--H" in opt else np.inf
+    if argv[1].endswith("/"):
+        src.mkdir()
+        src = src / "map.h5"
+    write_synthetic_map(src, np.full((2, 2), 1000.0), H, R=float(opt["--R"]), nu=float(opt["--nu"]), points=200,
+                        depth=0.2e-6, noise=2e-12, seed=5)
+    if "--height-image" in opt:
+        np.save(folder / opt["--height-image"], np.array([[0.0, 2e-6], [2e-6, 2e-6]]))
+
+
 def _params():
     out = []
     for name, cmd, comment in EXAMPLES:
@@ -109,6 +130,8 @@ def test_help_example_runs(cmd, tmp_path, monkeypatch, capsys):
         argv.remove("--pdf")
     if argv[0] == "fit":
         _curve(argv, tmp_path)
+    if argv[0] == "fit-map":
+        _map_inputs(argv, tmp_path)
     code = main(argv)
     out, err = capsys.readouterr()
     assert code == 0, f"{cmd!r} exited {code}: {err[-1500:]}"

@@ -46,10 +46,24 @@ def _reference(law, args, pts):
     return np.array(rows)
 
 
+@pytest.fixture(scope="module")
+def references():
+    """Per law: its points and the reference values, computed once for the four languages (the exact sphere's
+    level sets by sympy take seconds); the module's tests share it, so they run in one xdist worker."""
+    cache = {}
+
+    def get(key):
+        if key not in cache:
+            law, args, pts = _points(key)
+            cache[key] = (law, args, pts, _reference(law, args, pts))
+        return cache[key]
+    return get
+
+
 @pytest.mark.parametrize("language", ["c", "fortran", "rust", "python"])
 @pytest.mark.parametrize("key", list(LAWS))
-def test_tip_law_code_equals_the_python_law(key, language, tmp_path):
-    law, args, pts = _points(key)
+def test_tip_law_code_equals_the_python_law(key, language, tmp_path, references):
+    law, args, pts, reference = references(key)
     gc = generate(law, language)
     assert gc.function_name == "tip_force_law" and list(gc.outputs) == ["force", "contact_radius"]
     if language == "python":
@@ -57,7 +71,7 @@ def test_tip_law_code_equals_the_python_law(key, language, tmp_path):
         assert loaded == "[]"
     else:
         got = RUNNERS[language](gc, pts, tmp_path)
-    assert_close(got, _reference(law, args, pts), f"{key} tip law in {language}")
+    assert_close(got, reference, f"{key} tip law in {language}")
 
 
 def test_cone_code_takes_the_angle_in_degrees():

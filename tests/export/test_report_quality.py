@@ -77,6 +77,7 @@ _COMPRESSIBLE = {"2.1", "2.10", "2.17", "2.21", "2.30", "3.21 m_1", "3.21 Alexan
 EXPECTED_ERRATA = {
     "elliptic_paraboloid": _COMPRESSIBLE | {"2.31", "3.1"},
     "sphere": _COMPRESSIBLE | {"2.31"},
+    "sphere_adhesive": _COMPRESSIBLE | {"2.31"},
     "frictionless_sphere": _COMPRESSIBLE | {"2.31"},
     "fourth_degree_paraboloid": _COMPRESSIBLE,
     "quartic_punch": _COMPRESSIBLE,

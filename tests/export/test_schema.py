@@ -16,7 +16,8 @@ ROOT = Path(__file__).resolve().parents[2]
 BASE = {"derivation": "name='x'\n", "layer": "nu='3/10'\n", "punch": "kind='paraboloid'\n"}
 OPTIONAL = {"coefficients": "order=2\n", "inner": "order=2\n", "edge_shift": "nu=[0.3]\n",
             "contact": "delta0=0.1\nH=0.01\nparameters={R=1}\n", "validation": "nu=[0.3]\n", "units": "length='mm'\n",
-            "flat_punch": "a_over_H=[1]\n", "second_order": "nu=['3/10']\n", "tip": "H=1.0\n"}
+            "flat_punch": "a_over_H=[1]\n", "second_order": "nu=['3/10']\n", "tip": "H=1.0\n",
+            "adhesion": "work_of_adhesion=0.1\n"}
 
 
 def _file(tmp_path, tables: dict) -> Path:

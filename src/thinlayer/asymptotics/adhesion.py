@@ -383,7 +383,10 @@ class ThinLayerJKR(RichDisplay):
     force_display: sp.Expr
     m1: float = 0.0
 
-    equation = "J.11"
+    @property
+    def equation(self) -> str:
+        """``"J.11"`` (compressible) or ``"J.15"`` (``nu = 1/2``)."""
+        return "J.15" if self.A == 0 else "J.11"
 
     def evaluate(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[np.ndarray,
                                                                                                      np.ndarray]:
@@ -412,6 +415,27 @@ class ThinLayerJKR(RichDisplay):
         d_b, P_b = other.evaluate(cv, Hv, Rv, work_of_adhesion, mu)
         k = (Hv / cv if self.A > 0 else 2 * Hv / cv) if self.order == 1 else 1.0
         return 2 * k * np.abs(d_a - d_b) + 2 * abs(self.m1) * Hv**2 / Rv, 2 * k * np.abs(P_a - P_b)
+
+    codegen_name = "thin_layer_jkr"
+
+    def codegen_expressions(self) -> tuple[tuple[sp.Symbol, ...], dict[str, sp.Expr]]:
+        """``(arguments, outputs)`` for code generation (:mod:`thinlayer.export.codegen`): ``delta0(c)`` and
+        ``force(c)`` of (J.11) (or (J.15)) in the arguments ``c, H, R, w, mu`` (``vartheta = mu/(1 - nu)``), the
+        layer's ``nu``, ``A``, ``h*`` named constants (:meth:`codegen_constants`).
+        """
+        mu_s, nu_s = sp.Symbol("mu", positive=True), sp.Symbol("nu", real=True)
+        sub = {vt: mu_s / (1 - nu_s)}
+        return (c, _H, _R, w, mu_s), {"delta0": self.depth.subs(sub), "force": self.force.subs(sub)}
+
+    def codegen_constants(self) -> dict:
+        """``{symbol: (number, note)}``: the layer's ``nu``, ``h*`` and (compressible) ``A``."""
+        f = lambda v: sp.Float(v, 17)  # noqa: E731 - the layer's numbers, to double precision
+        out = {sp.Symbol("nu", real=True): (f(self.nu), "Poisson ratio of the bonded layer"),
+               h: (f(self.h), ("edge correction h of the incompressible layer (I.12)" if self.A == 0 else
+                               f"edge shift h*(nu={self.nu:g}), exact Wiener-Hopf solution (3.18), (3.25)"))}
+        if self.A != 0:
+            out[A] = (f(self.A), f"A(nu={self.nu:g}) = (1 - 2 nu)/(2 (1 - nu)^2), lim L(s)/s (2.4)")
+        return out
 
     def pull_off(self, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[float, float]:
         """``(c, -min P)`` under load control from (J.11) (numerical minimum; order 0: ``2 pi w R``)."""

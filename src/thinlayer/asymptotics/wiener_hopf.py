@@ -95,6 +95,7 @@ from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
 from ..normal import normal_latex
+from ._wiener_hopf_tables import shipped_table
 
 __all__ = [
     "KERNELS",
@@ -107,6 +108,7 @@ __all__ = [
     "edge_shift_alexandrov",
     "edge_shift_exact",
     "edge_shift_table",
+    "fresh_table",
     "wiener_hopf_solution",
 ]
 
@@ -700,6 +702,15 @@ class WienerHopfSolution(RichDisplay):
 
             return _qhat_dehoog(lap, tau, dps)
 
+    def table_check(self, tau: Any) -> np.ndarray:
+        """``q̂(τ) - τ`` at ``0 < τ <= tau_max`` by the table's own route (de Hoog on the panel rule, double
+        precision), to check a table (shipped, or from the disk cache) against the code that built it.
+        """
+        tau = np.atleast_1d(np.asarray(tau, dtype=float))
+        if np.any(tau <= 0) or np.any(tau > self.tau_max):
+            raise InputError(f"tau must lie in (0, tau_max = {self.tau_max:.6g}]")
+        return _table_values(self._transform, tau)
+
     def q_numpy(self, tau: Any) -> np.ndarray:
         """``qhat(tau)`` vectorised (Chebyshev series in ``sqrt(tau)``, ``tau + h`` beyond ``tau_max``)."""
         tau = np.asarray(tau, dtype=float)
@@ -756,22 +767,23 @@ class WienerHopfSolution(RichDisplay):
         ]
 
 
-def _build_table(tr: _Transform, tau_max: float, n: int) -> np.ndarray:
-    zmax = math.sqrt(tau_max)
-    k = np.arange(n)
-    x = np.cos(np.pi * (k + 0.5) / n)
-    z = 0.5 * zmax * (x + 1)
-
+def _table_values(tr: _Transform, tau: np.ndarray) -> np.ndarray:
     def lap(p):
         pc = complex(p)
         return mpmath.mpc(1 / (pc * pc * np.exp(tr.log_phi_np(pc))))
 
-    vals = np.array([float(_qhat_dehoog(lap, zi * zi, _TABLE_DPS)) - zi * zi for zi in z])
-    return np.polynomial.chebyshev.chebfit(x, vals, n - 1)
+    return np.array([float(_qhat_dehoog(lap, float(t), _TABLE_DPS)) - float(t) for t in tau])
+
+
+def _build_table(tr: _Transform, tau_max: float, n: int) -> np.ndarray:
+    zmax = math.sqrt(tau_max)
+    x = np.cos(np.pi * (np.arange(n) + 0.5) / n)
+    return np.polynomial.chebyshev.chebfit(x, _table_values(tr, (0.5 * zmax * (x + 1)) ** 2), n - 1)
 
 
 @lru_cache(maxsize=64)
-def _solution(nu: sp.Rational, kernel: str, normaliser: str, dps: int, n: int | None) -> WienerHopfSolution:
+def _solution(nu: sp.Rational, kernel: str, normaliser: str, dps: int, n: int | None,
+              fresh: bool = False) -> WienerHopfSolution:
     lay = _layer(nu)
     h = _edge_shift(lay, kernel, normaliser, dps)
     with mpmath.workdps(dps):
@@ -790,8 +802,11 @@ def _solution(nu: sp.Rational, kernel: str, normaliser: str, dps: int, n: int | 
                 return cheb
             m *= 2
 
-    # the table (seconds of de Hoog inversions) is kept on disk per argument set (thinlayer._cache)
-    cheb = cached("wiener_hopf_table", (nu, kernel, normaliser, dps, n), table)
+    # the table (seconds of de Hoog inversions): shipped for common nu (_wiener_hopf_tables), else kept on disk per
+    # argument set (thinlayer._cache); ``fresh`` computes it now (the builder of the shipped file, the tests)
+    cheb = table() if fresh else shipped_table(str(nu), kernel, normaliser, dps, n)
+    if cheb is None:
+        cheb = cached("wiener_hopf_table", (nu, kernel, normaliser, dps, n), table)
     with mpmath.workdps(dps):
         ha = edge_shift_alexandrov(nu)
         A, m1 = _mp(lay.A), _mp(lay.m1)
@@ -824,9 +839,23 @@ def wiener_hopf_solution(nu: Any, kernel: str = "exact", normaliser: str = "alex
     """
     _check_choice(kernel, KERNELS, "kernel")
     _check_choice(normaliser, NORMALISERS, "normaliser")
+    return _solution(_rational_nu(nu), kernel, normaliser, _check_dps(dps), _table_nodes(n))
+
+
+def _table_nodes(n: Any) -> int | None:
     if n is not None and (isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 8):
         raise InputError(f"n must be None or an integer >= 8, got {n!r}")
-    return _solution(_rational_nu(nu), kernel, normaliser, _check_dps(dps), None if n is None else int(n))
+    return None if n is None else int(n)
+
+
+def fresh_table(nu: Any, kernel: str = "exact", normaliser: str = "alexandrov", dps: int = 20,
+                n: int | None = None) -> np.ndarray:
+    """The Chebyshev table of :meth:`WienerHopfSolution.q_numpy` computed now, by de Hoog inversion (no shipped
+    table, no disk cache): the arguments of :func:`wiener_hopf_solution`.
+    """
+    _check_choice(kernel, KERNELS, "kernel")
+    _check_choice(normaliser, NORMALISERS, "normaliser")
+    return np.array(_solution(_rational_nu(nu), kernel, normaliser, _check_dps(dps), _table_nodes(n), True).cheb)
 
 
 @boundary

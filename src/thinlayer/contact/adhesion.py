@@ -119,7 +119,7 @@ def jkr_radius(fun: Callable[[float], float], target: float, guess: float, branc
 
 @dataclass(frozen=True)
 class PullOff(RichDisplay):
-    """Pull-off and jump-in of an adhesive contact, from the direct JKR curve (J.6).
+    """Pull-off and jump-in of an adhesive contact (J.6), from the direct JKR curve or a law (``source``).
 
     Forces are magnitudes of the tensile (pulling) force at which the contact is lost.
 
@@ -136,7 +136,10 @@ class PullOff(RichDisplay):
         float or None
         Radius of the stable state at ``delta = 0`` and at ``P = 0`` (jump-in on approach).
     curve : Any
-        The :class:`~thinlayer.numerics.adhesion.JKRCurve` (None for the flat punch).
+        The :class:`~thinlayer.numerics.adhesion.JKRCurve` (None for the flat punch and the any-thickness law).
+    source : str
+        Where the numbers come from: ``"direct JKR curve"`` (J.6), ``"any-thickness JKR law"`` (J.16) or
+        ``"flat punch (J.13)"``.
     """
 
     load_force: float
@@ -147,6 +150,7 @@ class PullOff(RichDisplay):
     jump_in_displacement_radius: float | None
     jump_in_load_radius: float | None
     curve: Any = field(default=None, repr=False)
+    source: str = "direct JKR curve"
 
     equation = "J.6"
 
@@ -160,7 +164,7 @@ class PullOff(RichDisplay):
         def fmt(x: float | None) -> str:
             return "none on the sampled range" if x is None else f"{x:.8g}"
 
-        return ["PullOff (direct JKR curve)   (J.6)",
+        return [f"PullOff ({self.source})   (J.6)",
                 f"  pull-off force, load control: {self.load_force:.8g} tensile (pulling), contact radius "
                 f"{self.load_radius:.8g}",
                 f"  pull-off force, displacement control: {fmt(self.displacement_force)} tensile (pulling), contact "

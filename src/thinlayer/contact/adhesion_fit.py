@@ -1,6 +1,6 @@
 r"""Fit Young's modulus and the work of adhesion to an adhesive (JKR) unloading curve (issue 26 item 5).
 
-The model is the direct JKR solver (J.1)-(J.5) at any thickness, tabulated once at unit modulus: at a contact
+The model is the JKR superposition (J.1)-(J.5) at any thickness, tabulated once at unit modulus: at a contact
 radius ``c`` the smooth-edge depth ``delta_1(c)`` and force ``P_1(c)`` (``P_1`` is proportional to ``mu``), the
 flat-punch ``kappa(c/H)`` and ``f(1)`` do not depend on ``E`` or ``w``, so for any ``(E, w)``::
 
@@ -8,7 +8,10 @@ flat-punch ``kappa(c/H)`` and ``f(1)`` do not depend on ``E`` or ``w``, so for a
 
 with ``mu = E/(2(1 + nu))``, ``vartheta = mu/(1 - nu)``.  The table's nodes are interpolated by cubic splines in
 ``log c`` (``delta_1/c^2``, ``P_1/c^3``, ``kappa``, ``f(1)``: slowly varying); the data should lie inside the
-tabulated radii (a depth outside is refused).  Each measured depth is
+tabulated radii (a depth outside is refused).  The table comes from the sphere's any-thickness JKR law (J.16)
+(``model="any-thickness"``, the default for the paraboloid on a layer on a rigid base: 60 nodes in milliseconds)
+or from the direct solver (``model="direct"``, about 0.4 s a node; the half-space and other punches).
+Each measured depth is
 put on the stable branch (``d delta/dc > 0``, displacement control: the unloading curve of an
 indentation instrument) and the residual is the force.  ``scipy.optimize.least_squares`` fits ``(E, w)``; the
 standard errors are those of the linearised problem, ``s^2 (J^T J)^{-1}`` with ``s^2`` the residual variance.
@@ -21,15 +24,16 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import InputError, positive
-from .._lazy import lazy_module
+from .._checks import InputError, check_choice, positive
+from .._lazy import lazy_function, lazy_module
 from ..display import RichDisplay
 from ..numerics.adhesion import adhesive_state
 
 optimize = lazy_module("scipy.optimize")
+any_thickness_jkr = lazy_function("thinlayer.contact.adhesion_sphere", "any_thickness_jkr")
 interpolate = lazy_module("scipy.interpolate")
 
-__all__ = ["AdhesiveFit", "fit_adhesive"]
+__all__ = ["AdhesiveFit", "fit_adhesive", "fit_free_adhesion"]
 
 #: the most data points and table nodes (each node is one direct solve, about 0.4 s)
 MAX_POINTS, MAX_NODES = 100_000, 60
@@ -55,6 +59,8 @@ class AdhesiveFit(RichDisplay):
         Number of data points.
     radii : tuple
         ``(c_min, c_max)`` of the table.
+    model : str
+        ``"any-thickness"`` (the law (J.16)) or ``"direct"`` (the direct solver (J.1)-(J.5)).
     """
 
     E: float
@@ -65,15 +71,28 @@ class AdhesiveFit(RichDisplay):
     residual_rms: float
     points: int
     radii: tuple
+    model: str = "direct"
 
     equation = "J.5"
+
+    @property
+    def E_se(self) -> float:  # noqa: N802 - fit()'s name for the standard error of E
+        """The standard error of E (the name :class:`~thinlayer.contact.fit.FitResult` uses)."""
+        return self.E_error
+
+    def as_dict(self) -> dict:
+        """The numbers by name (JSON)."""
+        return {"model": self.model, "E": self.E, "E_se": self.E_error, "work_of_adhesion": self.work_of_adhesion,
+                "work_of_adhesion_se": self.work_of_adhesion_error, "nu": self.nu, "residual_rms": self.residual_rms,
+                "n_points": self.points, "radii": list(self.radii)}
 
     def latex(self) -> str:
         return (rf"E = {self.E:.6g} \pm {self.E_error:.2g},\quad w = {self.work_of_adhesion:.6g} \pm "
                 rf"{self.work_of_adhesion_error:.2g} \tag{{J.5}}")
 
     def text_lines(self) -> list[str]:
-        return [f"AdhesiveFit: {self.points} points, direct JKR model (J.1)-(J.5), nu = {self.nu:g}",
+        src = "any-thickness JKR law (J.16)" if self.model == "any-thickness" else "direct JKR model (J.1)-(J.5)"
+        return [f"AdhesiveFit: {self.points} points, {src}, nu = {self.nu:g}",
                 f"  E = {self.E:.8g} +- {self.E_error:.2g}", f"  w = {self.work_of_adhesion:.8g} +- "
                 f"{self.work_of_adhesion_error:.2g}", f"  rms force residual {self.residual_rms:.3g}"]
 
@@ -89,20 +108,28 @@ def _array(v: Any, name: str) -> np.ndarray:
 
 
 class _Table:
-    """The unit-modulus direct solutions on the radii, as splines in log c."""
+    """The unit-modulus solutions on the radii (direct, or the any-thickness law), as splines in log c."""
 
-    def __init__(self, layer: Any, punch: Any, radii: np.ndarray, H: float | None, nu: float, n: int | None):
-        rows = [adhesive_state(layer, punch, float(c), H, 1.0, work_of_adhesion=0.0, nu=nu, n=n, energy_route=False)
-                for c in radii]
+    def __init__(self, layer: Any, punch: Any, radii: np.ndarray, H: float | None, nu: float, n: int | None,
+                 model: str = "direct"):
+        if model == "any-thickness":
+            st = any_thickness_jkr(layer, nu).states(radii, H, punch.sphere_radius, 0.0, 1.0)
+            d1, P1, kap, f1 = st.delta_smooth, st.force_smooth, st.kappa, np.sqrt(st.release_factor)
+            self.nu = any_thickness_jkr(layer, nu).nu
+        else:
+            rows = [adhesive_state(layer, punch, float(c), H, 1.0, work_of_adhesion=0.0, nu=nu, n=n,
+                                   energy_route=False) for c in radii]
+            d1, P1 = np.array([r.delta_smooth for r in rows]), np.array([r.force_smooth for r in rows])
+            kap, f1 = np.array([r.kappa for r in rows]), np.array([r.edge_value for r in rows])
+            self.nu = rows[0].nu
         x = np.log(radii)
         self.lo, self.hi = float(radii[0]), float(radii[-1])
-        self.nu = rows[0].nu
         cs = interpolate.CubicSpline
         # delta_1/c^2 and P_1/c^3 vary slowly (constants on the half-space and both thickness limits)
-        self.delta1 = cs(x, [r.delta_smooth / r.radius**2 for r in rows])
-        self.P1 = cs(x, [r.force_smooth / r.radius**3 for r in rows])  # at mu = 1
-        self.kappa = cs(x, [r.kappa for r in rows])
-        self.f1 = cs(x, [r.edge_value for r in rows])
+        self.delta1 = cs(x, d1 / radii**2)
+        self.P1 = cs(x, P1 / radii**3)  # at mu = 1
+        self.kappa = cs(x, kap)
+        self.f1 = cs(x, f1)
         self.grid = np.geomspace(self.lo, self.hi, 2000)
 
     def curve(self, E: float, w: float, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -132,7 +159,8 @@ class _Table:
 
 
 def fit_adhesive(layer: Any, punch: Any, depths: Any, forces: Any, H: float | None = None, *, nu: float,
-                 E0: float, w0: float, radii: Any = None, nodes: int = 16, n: int | None = None) -> AdhesiveFit:
+                 E0: float, w0: float, radii: Any = None, nodes: int | None = None, n: int | None = None,
+                 model: str | None = None) -> AdhesiveFit:
     """Fit ``E`` and ``w`` to an adhesive unloading curve (depths and signed forces, compressive positive).
 
     Parameters
@@ -150,8 +178,10 @@ def fit_adhesive(layer: Any, punch: Any, depths: Any, forces: Any, H: float | No
     radii : (float, float), optional
         Contact radii the table spans; default from the largest depth: ``(c_max/25, c_max)`` with
         ``c_max = 2 sqrt(2 R max(depth))``.
-    nodes : int
-        Table nodes (direct solves), 6 to 60.
+    nodes : int, optional
+        Table nodes, 6 to 60 (default 16 direct solves, 60 nodes of the law).
+    model : str, optional
+        ``"any-thickness"`` (the law (J.16); default for the paraboloid on a layer on a rigid base) or ``"direct"``.
 
     Returns
     -------
@@ -162,9 +192,17 @@ def fit_adhesive(layer: Any, punch: Any, depths: Any, forces: Any, H: float | No
     if d.size != P.size:
         raise InputError(f"depths and forces differ in length: {d.size} and {P.size}")
     E0v, w0v = positive(E0, "E0"), positive(w0, "w0")
+    R = getattr(punch, "sphere_radius", None)
+    law_ok = R is not None and getattr(layer, "has_thickness", False) and getattr(layer, "on_rigid_base", False)
+    if model is None:
+        model = "any-thickness" if law_ok else "direct"
+    check_choice(model, ("any-thickness", "direct"), "model")
+    if model == "any-thickness" and not law_ok:
+        raise InputError("model='any-thickness' fits the paraboloid on a layer on a rigid base; use model='direct'")
+    if nodes is None:
+        nodes = 60 if model == "any-thickness" else 16
     if isinstance(nodes, bool) or not isinstance(nodes, int) or not 6 <= nodes <= MAX_NODES:
         raise InputError(f"nodes must be an integer from 6 to {MAX_NODES}, got {nodes!r}")
-    R = getattr(punch, "sphere_radius", None)
     if radii is None:
         if R is None:
             raise InputError("give radii=(c_min, c_max) for a punch that is not a paraboloid of revolution")
@@ -177,7 +215,7 @@ def fit_adhesive(layer: Any, punch: Any, depths: Any, forces: Any, H: float | No
             raise InputError("radii must be a pair (c_min, c_max) of positive numbers") from None
         if not lo < hi:
             raise InputError(f"radii must satisfy c_min < c_max, got {radii!r}")
-    table = _Table(layer, punch, np.geomspace(lo, hi, nodes), H, nu, n)
+    table = _Table(layer, punch, np.geomspace(lo, hi, nodes), H, nu, n, model)
 
     def resid(p: np.ndarray) -> np.ndarray:
         r = table.force_at(p[0] * E0v, p[1] * w0v, d) - P
@@ -199,4 +237,50 @@ def fit_adhesive(layer: Any, punch: Any, depths: Any, forces: Any, H: float | No
     cov = s2 * np.linalg.inv(J.T @ J)
     return AdhesiveFit(float(res.x[0] * E0v), float(res.x[1] * w0v), float(math.sqrt(cov[0, 0])),
                        float(math.sqrt(cov[1, 1])), float(table.nu), float(math.sqrt(float(r @ r) / d.size)),
-                       int(d.size), (lo, hi))
+                       int(d.size), (lo, hi), model)
+
+
+def fit_free_adhesion(delta: Any, force: Any, tip: Any, H: Any, nu: float, base: str, *, E0: float | None = None,
+                      work_of_adhesion: Any = "free", model: str | None = None, depth_sign: int = 1,
+                      extras: tuple = ()) -> AdhesiveFit:
+    """``fit(..., work_of_adhesion="free")``: E and w from an adhesive (unloading) curve, via :func:`fit_adhesive`.
+
+    ``tip`` is the paraboloid (``tip.sphere_radius``); ``H`` None or inf is the half-space; ``extras`` names the
+    options of :func:`thinlayer.fit` that the adhesive fit does not take (refused in one line).  Starting values:
+    ``w0`` from the largest pull, ``-min P/(1.75 pi R)`` (between JKR's 1.5 and the thin layer's 2, (J.12));
+    ``E0`` (unless given) from Hertz at the deepest point.
+    """
+    if not (isinstance(work_of_adhesion, str) and work_of_adhesion == "free"):
+        raise InputError(f"work_of_adhesion must be 'free' (fit w with E), got {work_of_adhesion!r}; a known w is not "
+                         "fitted in this version")
+    if extras:
+        raise InputError(f"fit(work_of_adhesion='free') does not take {', '.join(extras)}")
+    R = getattr(tip, "sphere_radius", None)
+    if R is None:
+        raise InputError("fit(work_of_adhesion='free') fits the paraboloid (sphere) only: give punch=R")
+    d = _array(delta, "delta") * (1 if depth_sign == 1 else -1)
+    P = _array(force, "force")
+    if d.size != P.size:
+        raise InputError(f"delta and force differ in length: {d.size} and {P.size}")
+    from ..layers.kernels import BondedLayer, FrictionlessLayer, HalfSpace, IncompressibleLayer
+
+    if H is None or (isinstance(H, (int, float)) and math.isinf(H)):
+        layer, Hv = HalfSpace(), None
+    else:
+        Hv = positive(H, "H")
+        layer = FrictionlessLayer() if base == "frictionless" else IncompressibleLayer() if nu == 0.5 \
+            else BondedLayer(nu)
+    pull = -float(np.min(P))
+    if pull <= 0:
+        raise InputError("no tensile (negative) force in the data: an adhesive curve pulls before it comes off "
+                         "(give the unloading curve with its negative forces)")
+    w0 = pull / (1.75 * math.pi * R)
+    if E0 is None:
+        i = int(np.argmax(d))
+        if d[i] <= 0 or P[i] <= 0:
+            raise InputError("give E0= (no point pressed into the layer to start E from)")
+        E0 = 3 * P[i] * (1 - nu * nu) / (4 * math.sqrt(R) * d[i] ** 1.5)
+    c_hi = 2 * math.sqrt(2 * R * max(float(np.max(d)), 1e-300))
+    a_pull = (9 * math.pi * w0 * R * R * (1 - nu * nu) / (4 * float(E0))) ** (1 / 3)
+    c_hi = max(c_hi, 2 * a_pull)
+    return fit_adhesive(layer, tip, d, P, Hv, nu=nu, E0=E0, w0=w0, radii=(c_hi / 40, c_hi), model=model)

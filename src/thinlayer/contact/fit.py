@@ -45,7 +45,7 @@ from .guards import half_space, oriented_depths, regime_flags
 from .models import MODEL_REGISTRY, fit_names
 from .models.published import series_coefficients
 
-__all__ = ["FIT_MODELS", "FitResult", "MODEL_TOL", "curve_entries", "fit", "model_error"]
+__all__ = ["FIT_MODELS", "FitLaw", "FitResult", "MODEL_TOL", "curve_entries", "fit", "fit_law", "model_error"]
 
 #: fit()'s models: the registry's entries with a force curve for fitting (:mod:`thinlayer.contact.models`)
 FIT_MODELS = fit_names()
@@ -351,7 +351,7 @@ def _tip(punch: Any) -> tuple[Any, float]:
 @boundary
 def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5, base: str = "bonded", *,
         fit_H: bool = False, fit_offset: bool = False, model: str | None = None, E0: float | None = None,
-        sigma: Any = None, depth_sign: int = 1) -> FitResult:
+        sigma: Any = None, depth_sign: int = 1, work_of_adhesion: Any = None) -> FitResult:
     r"""Estimate Young's modulus (and optionally H and the contact point) from a force-indentation curve.
 
     Parameters
@@ -385,6 +385,12 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
         ``1`` (default): ``delta`` is the depth, positive into the sample, the force growing with it; ``-1``:
         ``delta`` is a tip position (nanite, afmformats: negative into the sample), flipped.  Depths that are all
         ``<= 0`` or whose force falls as they grow are refused (:mod:`thinlayer.contact.guards`).
+    work_of_adhesion : str, optional
+        ``"free"``: an adhesive (JKR) unloading curve, signed forces (tensile negative): E and the work of adhesion
+        w are fitted together (:func:`thinlayer.contact.adhesion_fit.fit_free_adhesion`; the any-thickness JKR
+        law (J.16) on a layer, the direct solver on the half-space); the answer is an
+        :class:`~thinlayer.contact.adhesion_fit.AdhesiveFit` (``E``, ``E_error``, ``work_of_adhesion``,
+        ``work_of_adhesion_error``).  The paraboloid only; ``fit_H``, ``fit_offset`` and ``sigma`` are not taken.
 
     Returns
     -------
@@ -407,6 +413,14 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     >>> round(r.E, 8), bool(r.E_se < 1e-8)
     (3.0, True)
     """
+    if work_of_adhesion is not None:  # an adhesive curve (issue 26 item 5): E and w together
+        from .adhesion_fit import fit_free_adhesion
+
+        check_choice(base, BASES, "base")
+        extras = tuple(n for n, v in (("fit_H", fit_H), ("fit_offset", fit_offset), ("sigma", sigma is not None)) if v)
+        return fit_free_adhesion(delta, force, _tip(punch)[0] if punch is not None else None, H, _nu(nu), base,
+                                 E0=E0, work_of_adhesion=work_of_adhesion, model=model, depth_sign=depth_sign,
+                                 extras=extras)
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # checked below
         res = _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign)
     if not all(math.isfinite(v) for v in (res.E, res.E_se, res.H_se, res.offset, res.residual_rms)) \
@@ -416,6 +430,12 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     if res.valid is False:
         warnings.warn(f"fit(): E = {res.E:.4g} is NOT VALID: {res.validity}", ValidityWarning, stacklevel=3)
     return res
+
+
+def _nu(nu: Any) -> float:
+    if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not -1 < float(nu) <= 0.5:
+        raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}")
+    return float(nu)
 
 
 def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign) -> FitResult:
@@ -573,3 +593,64 @@ def _tip_validity(curve: Any, depths: np.ndarray, H: float, model: str) -> tuple
     return size, (False, err, f"the {model} model's own estimate reaches {100 * err:.3g} % over the data (c/H up to "
                               f"{size:.3g}; a valid fit needs <= {100 * MODEL_TOL:.3g} %): outside its range; "
                               "model='direct' holds at every thickness")
+
+
+@dataclass(frozen=True)
+class FitLaw:
+    """The force law :func:`fit` fits, for a caller that adds parameters of its own (a baseline, a contact point on a
+    measured axis: :func:`thinlayer.afm.curves.fit_curve`).  Built by :func:`fit_law`.
+
+    ``shape(delta, H, slopes)`` returns ``(P/E, d log P/d log delta, d log P/d log H)`` (zero force for ``delta <=
+    0``; the slopes only when ``slopes``); :meth:`validity` is fit()'s own check of the model over the data.
+    """
+
+    tip: Any
+    R: float
+    model: str
+    nu: float
+    base: str
+    half_space: bool
+    shape: Any = field(repr=False)
+
+    def validity(self, depths: np.ndarray, H: float) -> tuple[float, bool, float, str, tuple]:
+        """``(chi_max (or (c/H)_max), valid, model_error, why, regime flags)`` of the law over ``depths`` (those
+        ``> 0`` are in contact), as :func:`fit` reports them.
+        """
+        d = np.asarray(depths, dtype=float)
+        dmax = max(float(np.max(d)) if d.size else 0.0, 0.0)
+        if self.half_space:
+            chi_max, valid, err, why = 0.0, True, 0.0, "the half-space (H = inf): Hertz's law, the paraboloid's force"
+        elif math.isnan(self.R):
+            chi_max, (valid, err, why) = _tip_validity(self.shape.curve(H), d, H, self.model)
+        else:
+            chi_max = float(math.sqrt(self.R * dmax) / H)
+            valid, err, why = _validity(self.model, self.R, self.nu, self.base, H, chi_max)
+        return chi_max, valid, err, why, regime_flags(dmax, H, None if math.isnan(self.R) else self.R)
+
+
+def fit_law(punch: Any, H: Any, nu: Any = 0.5, base: str = "bonded", model: str | None = None) -> FitLaw:
+    """The law :func:`fit` would fit for these arguments (the same checks, the same model choice), as a
+    :class:`FitLaw`; ``H`` None or inf: Hertz's half-space law (the paraboloid).
+    """
+    if punch is None:
+        raise InputTypeError("fit() needs punch= (the sphere radius R, Punch.paraboloid(R) or another tip)")
+    tip, R = _tip(punch)
+    halfspace = half_space(H)
+    if halfspace and math.isnan(R):
+        raise InputError(f"fit(H=inf): the half-space is fitted for the paraboloid (Hertz) in this version, not the "
+                         f"{tip.name}; give a finite H")
+    if not halfspace:
+        positive(H, "H")
+    check_choice(base, BASES, "base")
+    if model is not None:
+        check_choice(model, fit_names(), "model")
+    if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not -1 < float(nu) <= 0.5:
+        raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}")
+    nu = float(nu)
+    if halfspace:
+        model = "hertz"
+    elif model is None:
+        holds = curve_entries(tip, nu, base)
+        model = "any-thickness" if "any-thickness" in holds or not holds else holds[0]
+    shape = _half_space_shape(R, nu) if halfspace else _shape_function(model, tip, nu, base)
+    return FitLaw(tip, R, model, nu, base, halfspace, shape)

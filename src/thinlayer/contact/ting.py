@@ -59,6 +59,7 @@ unloading at ``P > 0.1 P_max``, in brackets at 101 steps x 100 nodes)::
     bonded nu = 0.3   3.3e-5 (1.3e-4)  3.4e-5 (1.3e-4)  4.4e-5 (1.5e-4)  4.9e-5
     frictionless 0.3  3.3e-5 (1.3e-4)  3.3e-5 (1.3e-4)  4.0e-5 (1.5e-4)  4.8e-5
 
+Cone (70 degrees) on the half-space: 7.9e-5 (101 x 100), 2.0e-5 (201 x 200) against Ting on 2,001 steps.
 The difference falls 4x when the solver's steps and nodes are doubled (its own second-order error): no error of
 Ting's construction shows on the layer, thick to thin, at the solver's accuracy; the solver's ``min_pressure`` and
 ``min_gap`` stay >= 0 (C2, C3) wherever it resolves the layer.
@@ -256,7 +257,12 @@ def ting_force(layer: LayerKernel, punch: Any, H: Any, material: Material, times
         d1, _ = _at(t, d, qd, taus, k, th)
         F1, qF1 = _at(t, F, qF, taus, k, th)
         P = g * _A(einf, E, taus, tn, tt1, F1, qF1)
-        c1 = curve.contact_radius(np.maximum(d1, 0.0))
+        # a_e(delta(t1)); below the history's least positive depth (contact nearly lost), linear from 0: the law is
+        # never asked beyond the depths it was built for (a direct model would solve at depth 1e-300)
+        dpos = u[u > 0]
+        small = d1 < dpos.min()
+        c1 = curve.contact_radius(np.where(small, dpos.min(), d1))
+        c1 = np.where(small, c1 * np.maximum(d1, 0.0) / dpos.min(), c1)
         force[after] = np.where(lost, 0.0, P)
         radius[after] = np.where(lost, 0.0, c1)
         t1[after] = np.where(lost, np.nan, tt1)

@@ -12,7 +12,7 @@ import json
 import sys
 from typing import Any
 
-__all__ = ["add_adhesion_args", "adhesive_lines", "cmd_solve_adhesive"]
+__all__ = ["add_adhesion_args", "adhesive_fit_text", "adhesive_lines", "cmd_solve_adhesive"]
 
 
 def add_adhesion_args(s: argparse.ArgumentParser, number: Any) -> None:
@@ -24,7 +24,8 @@ def add_adhesion_args(s: argparse.ArgumentParser, number: Any) -> None:
                    help="with --work-of-adhesion: the stable (default) or unstable state of the JKR curve")
     s.add_argument("--pull-off", action="store_true",
                    help="with --work-of-adhesion: also the pull-off force under load and displacement control and "
-                        "jump-in (the direct JKR curve; tens of direct solves)")
+                        "jump-in (the answering model's JKR curve: the any-thickness law, or the direct curve, "
+                        "tens of direct solves)")
 
 
 def _pct(x: float) -> str:
@@ -92,6 +93,26 @@ def cmd_solve_adhesive(args: argparse.Namespace, bad: Any, punch_text: Any) -> i
         po = ans.pull_off
         out["pull_off"] = {k: getattr(po, k) for k in ("load_force", "load_radius", "displacement_force",
                                                        "displacement_radius", "displacement_depth",
-                                                       "jump_in_displacement_radius", "jump_in_load_radius")}
+                                                       "jump_in_displacement_radius", "jump_in_load_radius",
+                                                       "source")}
     sys.stdout.write(json.dumps(out, indent=2, allow_nan=False) + "\n")
     return 0
+
+
+def adhesive_fit_text(args: argparse.Namespace, punch: Any, delta: Any, force: Any) -> str:
+    """``thinlayer fit --work-of-adhesion free``: E and w of an adhesive curve, as text or JSON (``--json``)."""
+    from ..contact.fit import fit
+
+    res = fit(delta, force, punch=punch, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
+              fit_offset=args.fit_offset, model=args.model, depth_sign=args.depth_sign,
+              work_of_adhesion=args.work_of_adhesion)
+    if args.json:
+        return json.dumps({"file": str(args.csv), **res.as_dict(), "base": args.base,
+                           "H": None if args.H is None or args.H == float("inf") else args.H}, indent=2,
+                          allow_nan=False)
+    R = getattr(punch, "sphere_radius", punch)
+    return "\n".join([f"fit of E and the work of adhesion w by the {res.model} JKR model: the sphere R = {R:.6g} on "
+                      f"a {args.base} layer, ν = {res.nu:.6g}; {res.points} points",
+                      f"  E = {res.E:.8g} ± {res.E_error:.2g}",
+                      f"  w = {res.work_of_adhesion:.8g} ± {res.work_of_adhesion_error:.2g}",
+                      f"  rms force residual {res.residual_rms:.3g}"])

@@ -234,7 +234,7 @@ def _codegen_result(args):
         if args.nu not in (None, "symbolic"):
             raise BadInput("coefficients are generated as functions of nu: leave out --nu")
         return kernel_coefficients(_layer("symbolic"), args.order or 3)
-    punch = punch_from_args(args) if args.result != "flat-punch" else None
+    punch = punch_from_args(args) if args.result not in ("flat-punch", "jkr") else None
     if args.result == "inner":
         from ..asymptotics.inner import inner_pressure
 
@@ -256,6 +256,21 @@ def _codegen_result(args):
         return _nearly_incompressible_result(args, punch)
     if args.result == "flat-punch":
         return _flat_punch_law(args)
+    if args.result == "jkr":  # the thin-layer JKR law (J.11), (J.15) of one bonded layer (issue 26 item 5)
+        from ..asymptotics.adhesion import thin_layer_jkr
+
+        if args.nu in (None, "symbolic") or args.base != "bonded":
+            raise BadInput("jkr: the thin-layer JKR law (J.11) is generated for one bonded layer: give --nu "
+                           "(-1 < nu < 1/2, or 1/2: (J.15))")
+        from fractions import Fraction
+
+        try:
+            nu = float(Fraction(args.nu.strip()))
+        except (ValueError, ZeroDivisionError):
+            raise BadInput(f"jkr: --nu {args.nu!r} is not a number or a fraction such as 3/10") from None
+        if args.order not in (None, 0, 1):
+            raise BadInput(f"jkr: --order {args.order}: 0 or 1 (the law's order in H/c, default 1)")
+        return thin_layer_jkr(nu, 1 if args.order is None else args.order)
     from ..asymptotics.solution import compressible_solution as solve  # composite: numeric parameters
 
     if args.nu in (None, "symbolic") or args.delta0 is None or args.H is None:
@@ -341,7 +356,7 @@ def _paraboloid_radii(punch) -> tuple | None:
 
 #: what ``thinlayer codegen`` generates (the choices of RESULT)
 CODEGEN_RESULTS = ("inner", "force", "coefficients", "composite", "incompressible", "two-term", "any-thickness",
-                   "flat-punch", "nanite")
+                   "flat-punch", "nanite", "jkr")
 #: the languages of the codegen registry, :data:`thinlayer.export.codegen.LANGUAGES`: written out so that building
 #: the parser imports no sympy printer (``thinlayer --help`` stays fast); a test keeps them equal
 LANGUAGES = ("c", "fortran", "rust", "julia", "octave", "python")
@@ -521,8 +536,10 @@ def _add_codegen(sub: Any, fmt: type) -> None:
                                    "(I.9)), 'two-term' (the sphere near nu = 1/2 (I.11);\nBessel functions: Julia "
                                    "and Octave), 'any-thickness' (the sphere at any H/a (T.7), one nu: numpy module "
                                    "or C), 'flat-punch' (kappa(a/H) of a flat punch, --law thin|thick, one nu),\n"
-                                   "'nanite' (a standalone nanite model module of the sphere at any thickness, one nu "
-                                   "and base).\n"
+                                   "'nanite' (a standalone nanite model module at any thickness, one nu and base: "
+                                   "--tip sphere, cone or pyramid with --sides 3|4), 'jkr' (the thin-layer JKR law of "
+                                   "the sphere (J.11), delta0 and force at the contact radius c, one bonded nu; "
+                                   "--order 0 or 1).\n"
                                    "Without --out the code is printed. JSON keys: a list of "
                                    "{language, function, arguments, outputs, files}; with --out: {files}.",
                        epilog="examples:\n  thinlayer codegen inner --tip elliptic_paraboloid --nu 3/10 --lang c\n"
@@ -552,6 +569,8 @@ def _add_codegen(sub: Any, fmt: type) -> None:
     g.add_argument("--delta0", type=finite, help="indentation (composite)")
     g.add_argument("--H", type=finite, help="layer thickness (composite)")
     g.add_argument("--mu", type=finite, default=1.0, help="shear modulus (composite, default 1)")
+    g.add_argument("--sides", type=int, choices=(3, 4), default=None, help="nanite --tip pyramid: 3 or 4 faces "
+                                                                           "(default 4)")
     add_punch_args(g)
     _add_output_args(g, latex=False)
     g.set_defaults(func=_cmd_codegen)
@@ -592,6 +611,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = ap.add_subparsers(dest="cmd", required=True, metavar="COMMAND")
     from .fit_cli import add_fit_parser
     from .flat_cli import add_flat_parser
+    from .map_cli import add_map_parser
     from .solve_cli import add_solve_parser
 
     for add in (_add_report, _add_coefficients, _add_inner, add_solve_parser, _add_errata, _add_codegen):
@@ -599,6 +619,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_validate(sub, fmt)
     add_fit_parser(sub, fmt)
     add_flat_parser(sub, fmt)
+    add_map_parser(sub, fmt)
     from .visco_cli import add_visco_parser
 
     add_visco_parser(sub, fmt)

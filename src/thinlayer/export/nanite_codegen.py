@@ -10,6 +10,12 @@ values) and evaluated by the same linear interpolation and the same three thick-
 (:mod:`thinlayer.afm.nanite_models`) to rounding (tested to 1e-10).  Above ``chi = 1e8`` (a contact radius 1e8
 layer thicknesses wide) the plugin uses the thin-layer anchor; the generated module refuses there (one line).
 
+``--tip cone`` and ``--tip pyramid --sides 3|4`` embed their laws' cubic splines (the cone's table law of
+:mod:`thinlayer.contact.any_thickness_tips`, the pyramid's of :mod:`thinlayer.contact.any_thickness_pyramids`) and
+their thick-layer series, evaluated by the same numpy operations as the plugin's: equal bit for bit (tested to 1e-10
+on every regime).  Beyond the laws' tables (the thin layer) they refuse in one line.  The flat punch is not generated
+(its plugin solves kappa(a/H) exactly; ``thinlayer codegen flat-punch --law any-thickness`` tabulates it to 2e-7).
+
 The same file serves any package that takes a Python model function of the abscissa and named parameters:
 ``scipy.optimize.curve_fit(f, x, y)`` (``f(x, *params)``; fix R, nu, H with ``functools.partial`` or a lambda),
 ``lmfit.Model(f)`` (parameters from the signature's names, independent variable ``delta``), and nanite/PyJibe
@@ -29,21 +35,41 @@ from ..errors import InputError
 __all__ = ["NANITE_TIPS", "cmd_codegen_nanite", "nanite_model_key", "nanite_source"]
 
 #: the tips ``thinlayer codegen nanite --tip`` takes: the sphere is the paraboloid of radius R (Hertz's sphere)
-NANITE_TIPS = ("sphere", "paraboloid")
+NANITE_TIPS = ("sphere", "paraboloid", "cone", "pyramid")
 
 
-def nanite_model_key(base: str, nu: float) -> str:
-    """The generated model's key: ``thinlayer_sphere_bonded_nu0p5`` (distinct from the plugin's keys)."""
-    return "thinlayer_sphere_{}_nu{}".format(base, re.sub(r"[^0-9a-z]", "p", f"{nu:g}".replace("-", "m")))
+def nanite_model_key(base: str, nu: float, tip: str = "sphere", sides: int = 4) -> str:
+    """The generated model's key: ``thinlayer_sphere_bonded_nu0p5``, ``thinlayer_cone_...``,
+    ``thinlayer_pyr3s_...`` (distinct from the plugin's keys).
+    """
+    name = {"paraboloid": "sphere", "pyramid": f"pyr{sides}s"}.get(tip, tip)
+    return "thinlayer_{}_{}_nu{}".format(name, base, re.sub(r"[^0-9a-z]", "p", f"{nu:g}".replace("-", "m")))
 
 
-def nanite_source(tip: str, base: str, nu: float) -> str:
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("thinlayer")
+    except PackageNotFoundError:  # a source tree that was never installed
+        return "(not installed)"
+
+
+def _blob(values) -> str:
+    """float64 values as base64 text lines (little-endian), for ``np.frombuffer(base64.b64decode(...))``."""
+    blob = base64.b64encode(np.ascontiguousarray(values, dtype="<f8").tobytes()).decode("ascii")
+    return "\n".join(f'    "{blob[i:i + 100]}"' for i in range(0, len(blob), 100))
+
+
+def nanite_source(tip: str, base: str, nu: float, sides: int = 4) -> str:
     """The source of the standalone nanite model module (module docstring)."""
     from ..contact.any_thickness import CHI_MAX, FINE, any_thickness_law
 
     if tip not in NANITE_TIPS:
-        raise InputError(f"codegen nanite: --tip {tip!r}; the generated nanite model is the sphere (the paraboloid of "
-                         f"radius R): --tip sphere (the cone and flat punch: the plugin thinlayer.afm.nanite_models)")
+        raise InputError(f"codegen nanite: --tip {tip!r}; the generated nanite models: --tip sphere, cone, pyramid "
+                         "(--sides 3|4) (the flat punch: the plugin thinlayer.afm.nanite_models)")
+    if tip in ("cone", "pyramid"):
+        return _table_tip_source(tip, base, float(nu), sides)
     law = any_thickness_law(nu, base)  # checks nu and base (a frictionless base's law is one for every nu)
     nu = float(nu)
     table = np.ascontiguousarray(law.log_force, dtype="<f8")
@@ -51,12 +77,7 @@ def nanite_source(tip: str, base: str, nu: float) -> str:
     lines = "\n".join(f'    "{blob[i:i + 100]}"' for i in range(0, len(blob), 100))
     key = nanite_model_key(base, nu)
     s1, s2, s3 = (float(v) for v in law.series[1:4])
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        __version__ = version("thinlayer")
-    except PackageNotFoundError:  # a source tree that was never installed
-        __version__ = "(not installed)"
+    __version__ = _version()
 
     return f'''"""Sphere (paraboloid of radius R) on a layer of thickness H, {base} to a rigid base, nu = {nu!r}:
 a nanite model.
@@ -198,19 +219,23 @@ def cmd_codegen_nanite(args) -> int:
         raise BadInput("codegen nanite: give --nu, a number in (-1, 1/2] (the law is tabulated per nu)")
     tip = (args.tip or "sphere").split(":")[0]
     if tip not in NANITE_TIPS:
-        raise BadInput(f"codegen nanite: --tip {args.tip!r}; the generated nanite model is the sphere (the paraboloid "
-                       "of radius R, a fit parameter): --tip sphere")
+        raise BadInput(f"codegen nanite: --tip {args.tip!r}; the generated nanite models: --tip sphere (the paraboloid "
+                       "of radius R, a fit parameter), cone, pyramid (--sides 3|4)")
+    sides = getattr(args, "sides", None)
+    if sides is not None and tip != "pyramid":
+        raise BadInput(f"codegen nanite: --sides goes with --tip pyramid (got --tip {tip})")
+    sides = 4 if sides is None else sides
     if args.lang not in ("c", "python"):  # --lang defaults to c for the other results: python is the only one here
         raise BadInput(f"codegen nanite writes a Python module; --lang {args.lang!r} does not apply")
     nu = float(parse_number(args.nu, "--nu"))
-    src = nanite_source(tip, args.base, nu)
+    src = nanite_source(tip, args.base, nu, sides)
     if args.out is None:
         print(src)
         return 0
     from ..validation.output import atomic_write, output_lock, refuse_existing
 
     out_dir = Path(args.out)
-    name = args.name or f"model_{nanite_model_key(args.base, nu)}"
+    name = args.name or f"model_{nanite_model_key(args.base, nu, tip, sides)}"
     target = out_dir / f"{name}.py"
     refuse_existing([target], args.overwrite)
     with output_lock(out_dir, name, [target]):
@@ -224,3 +249,224 @@ def cmd_codegen_nanite(args) -> int:
         print(f"wrote {written}", file=sys.stdout)
     return 0
 
+
+
+_TABLE_TEMPLATE = '''"""@TITLE@, @BASE@ to a rigid base, nu = @NU@, on a layer of any thickness H: a nanite model.
+
+Generated by thinlayer @VERSION@ (``thinlayer codegen nanite``); do not edit.  Standalone: numpy only (lmfit
+when nanite asks for the parameters).  @LAW@
+
+Load it with nanite.model.load_model_from_file(path, register=True) or in PyJibe (Preferences, Extensions); it is
+also a plain model function for scipy.optimize.curve_fit and lmfit.Model.
+"""
+import base64
+import math
+
+import numpy as np
+
+NU = @NU@
+BASE = @BASE_R@
+CHI_MAX = @CHI_MAX@
+CHI_SERIES = @CHI_SERIES@
+CHI_FLOOR = @CHI_FLOOR@
+SERIES = np.array(@SERIES@)
+@EXTRA@
+
+def get_parameter_defaults():
+    """Return the default model parameters"""
+    # The order of the parameters must match the order
+    # of ´parameter_names´ and ´parameter_keys´.
+    import lmfit
+
+    params = lmfit.Parameters()
+    params.add("E", value=3e3, min=0)
+    params.add("alpha", value=25, min=0, max=90, vary=False)
+    params.add("nu", value=NU, vary=False)  # the law was generated for this nu
+    params.add("H", value=10e-6, min=0, vary=False)
+    params.add("contact_point", value=0)
+    params.add("baseline", value=0)
+    return params
+
+
+def _ratio(chi):
+    """P/P_hs at chi (1-d, > 0): @RATIO_DOC@"""
+    if not (chi.min() > CHI_FLOOR and chi.max() <= CHI_MAX):
+        raise ValueError(f"chi = {float(np.nanmax(chi)):.4g}: this generated model covers 0 < chi <= {CHI_MAX:.4g} "
+                         "(a thinner layer: thinlayer's tip law or direct solver)")
+@RATIO_BODY@
+
+
+def @FUNC@(delta, E, alpha, nu, H, contact_point=0, baseline=0):
+    r"""@TITLE@ on a layer of any thickness H (thinlayer)
+
+    .. math::
+
+        F = @LATEX@
+
+    Parameters
+    ----------
+    delta: 1d ndarray
+        Tip position [m] (negative into the sample)
+    E: float
+        Young's modulus [N/m²]
+    alpha: float
+        @ANGLE_DOC@ [degrees]
+    nu: float
+        Poisson's ratio (fixed: @NU@, the value this module was generated for)
+    H: float
+        Layer thickness [m] (inf: the half-space)
+    contact_point: float
+        Indentation offset [m]
+    baseline: float
+        Force offset [N]
+
+    Returns
+    -------
+    F: float
+        Force [N]
+    """
+    if nu != NU:
+        raise ValueError(f"this model was generated for nu = {NU}, got nu = {nu}: run thinlayer codegen nanite "
+                         "--nu again")
+    ind = np.asarray(contact_point - np.asarray(delta, dtype=float), dtype=float)
+    pos = ind > 0
+    bb = np.zeros_like(ind)
+    bb[pos] = ind[pos] ** 2
+    tan = np.tan(alpha * math.pi / 180)
+    P0 = @P0@
+    if math.isinf(H) or not pos.any():
+        return P0 + baseline
+    ratio = np.ones_like(ind)
+    ratio[pos] = _ratio(@CHI@)
+    return P0 * ratio + baseline
+
+
+model_doc = @FUNC@.__doc__
+model_func = @FUNC@
+model_key = @KEY@
+model_name = @NAME@
+parameter_keys = ["E", "alpha", "nu", "H", "contact_point", "baseline"]
+parameter_names = ["Young's Modulus", @ANGLE_NAME@, "Poisson's Ratio", "Layer Thickness", "Contact Point",
+                   "Force Baseline"]
+parameter_units = ["Pa", "°", "", "m", "m", "N"]
+valid_axes_x = ["tip position"]
+valid_axes_y = ["force"]
+
+# the law's cubic spline of log(P/P_hs) in log chi (float64, little-endian, base64): thinlayer's law, bit for bit
+_KNOTS = np.frombuffer(base64.b64decode(
+@KNOTS@
+), dtype="<f8")
+_C = np.frombuffer(base64.b64decode(
+@COEFS@
+), dtype="<f8").reshape(4, -1)
+'''
+
+_CONE_BODY = '''    x = np.log(chi)
+    k = ((x - X0) / H_STEP).astype(np.intp)
+    np.clip(k, 0, _KNOTS.size - 2, out=k)
+    x -= np.take(_KNOTS, k, mode="clip")
+    s2 = x * x
+    s3 = s2 * x
+    v = np.take(_C[2], k, mode="clip")
+    v *= x
+    v += np.take(_C[3], k, mode="clip")
+    w = np.take(_C[1], k, mode="clip")
+    w *= s2
+    v += w
+    np.take(_C[0], k, mode="clip", out=w)
+    w *= s3
+    v += w
+    if chi.min() <= CHI_SERIES:
+        low = np.flatnonzero(chi <= CHI_SERIES)
+        v[low] = np.log(np.polynomial.polynomial.polyval(chi[low], SERIES))
+    np.exp(v, out=v)
+    return v'''
+
+_PYRAMID_BODY = '''    x0 = _KNOTS[0]
+    h = _KNOTS[1] - _KNOTS[0]
+    chi_low = float(np.exp(x0))
+    x = np.log(np.maximum(chi, chi_low))  # below the first knot the series answers (below)
+    k = ((x - x0) / h).astype(np.intp)
+    np.clip(k, 0, _KNOTS.size - 2, out=k)
+    x -= np.take(_KNOTS, k, mode="clip")
+    s2 = x * x
+    s3 = s2 * x
+    v = np.take(_C[2], k, mode="clip")
+    v *= x
+    v += np.take(_C[3], k, mode="clip")
+    w = np.take(_C[1], k, mode="clip")
+    w *= s2
+    v += w
+    np.take(_C[0], k, mode="clip", out=w)
+    w *= s3
+    v += w
+    np.exp(v, out=v)
+    if chi.min() < chi_low:
+        low = np.flatnonzero(chi < chi_low)
+        v[low] = np.polynomial.polynomial.polyval(chi[low], SERIES)
+    return v'''
+
+
+def _table_tip_source(tip: str, base: str, nu: float, sides: int) -> str:
+    """The generated module of the cone (its table law, :func:`thinlayer.contact.any_thickness_tips.cone_law`) or the
+    regular pyramid (:func:`thinlayer.contact.any_thickness_pyramids.pyramid_law`): the law's spline embedded bit for
+    bit and evaluated by the same operations as the plugin's.
+    """
+    from ..contact.any_thickness_tips import CHI_SERIES
+
+    key = nanite_model_key(base, nu, tip, sides)
+    if tip == "cone":
+        from ..contact.any_thickness_tips import cone_law
+
+        law = cone_law(nu, base)  # checks nu and base
+        x0, h, knots, coefs = law._pieces()
+        c = coefs[0]
+        series = [float(v) for v in law.series[0]]
+        extra = f"X0 = {x0!r}\nH_STEP = {h!r}\n"
+        fields = {"TITLE": "Cone of half-angle alpha", "FUNC": "thinlayer_cone", "ANGLE_DOC": "Half cone angle",
+                  "ANGLE_NAME": '"Half Cone Angle"',
+                  "LAW": ("The cone's any-thickness law (T.9) of thinlayer.contact.any_thickness_tips.cone_law: "
+                          "F = P_0 Pi(chi) + baseline, P_0 = (2/pi) tan(alpha) E/(1 - nu^2) d^2 (Sneddon, nanite's "
+                          "hertz_cone), chi = c_0/H = (2/pi) d tan(alpha)/H, d = contact_point - delta; Pi from the "
+                          f"thick-layer series (T.9) for chi <= {CHI_SERIES} and a table of direct solutions to chi = "
+                          f"{law.chi_max:.4g}; estimate <= 1e-4 (thinlayer's, measured against the direct solver)."),
+                  "RATIO_DOC": "the series (T.9) below CHI_SERIES, the table's spline above",
+                  "P0": "2 * tan / math.pi * E / (1 - nu ** 2) * bb",
+                  "CHI": "2 / math.pi * ind[pos] * tan / H",
+                  "LATEX": r"\\frac{2\\tan\\alpha}{\\pi} \\frac{E}{1-\\nu^2} \\delta^2 \\Pi(\\chi)",
+                  "NAME": repr(f"conical indenter, {base} layer, any thickness, nu = {nu:g} (thinlayer)"),
+                  "RATIO_BODY": _CONE_BODY}
+        chi_max, chi_series = law.chi_max, CHI_SERIES
+    else:
+        from ..contact.any_thickness_pyramids import CHI_MAX, pyramid_law
+
+        if sides not in (3, 4):
+            raise InputError(f"codegen nanite: --sides {sides!r}; a regular pyramid has 3 or 4 sides")
+        law = pyramid_law(sides, nu, base)
+        knots, c = law.knots, law.coefficients
+        series = [float(v) for v in law.series]
+        extra = f"K_HS = {law.K!r}  # the half-space constant (T.13): P_hs = (K/2) E/(1 - nu^2) tan(alpha) d^2\n"
+        word = {3: "three", 4: "four"}[sides]
+        fields = {"TITLE": f"Regular {word}-sided pyramid of face angle alpha", "FUNC": f"thinlayer_pyr{sides}s",
+                  "ANGLE_DOC": "Face angle (axis to face)", "ANGLE_NAME": '"Face Angle"',
+                  "LAW": ("The pyramid's any-thickness law of thinlayer.contact.any_thickness_pyramids: F = P_hs "
+                          "Pi(chi) + baseline, P_hs = (K/2) tan(alpha) E/(1 - nu^2) d^2 (T.11), K = "
+                          f"{law.K} from the direct solver (T.13), chi = d tan(alpha)/H, d = contact_point - delta; "
+                          "Pi from the thick-layer series (T.12) below chi = 0.05 and a table of solve_2d solutions "
+                          f"to chi = {CHI_MAX:g}."),
+                  "RATIO_DOC": "the series (T.12) below the first knot, the table's spline above",
+                  "P0": "K_HS / 2 * tan * E / (1 - nu ** 2) * bb",
+                  "CHI": "ind[pos] * tan / H",
+                  "LATEX": r"\\frac{K}{2} \\tan\\alpha \\frac{E}{1-\\nu^2} \\delta^2 \\Pi(\\chi)",
+                  "NAME": repr(f"pyramidal indenter, {word}-sided, {base} layer, any thickness, nu = {nu:g} "
+                               "(thinlayer)"),
+                  "RATIO_BODY": _PYRAMID_BODY}
+        chi_max, chi_series = CHI_MAX, 0.0
+    fields.update({"BASE": base, "BASE_R": repr(base), "NU": repr(float(nu)), "VERSION": _version(),
+                   "CHI_MAX": repr(float(chi_max)), "CHI_SERIES": repr(float(chi_series)),
+                   "CHI_FLOOR": "0.0" if tip == "cone" else "-1.0", "SERIES": repr(series),
+                   "EXTRA": extra, "KEY": repr(key), "KNOTS": _blob(knots), "COEFS": _blob(np.asarray(c))})
+    src = _TABLE_TEMPLATE
+    for name, value in fields.items():
+        src = src.replace(f"@{name}@", value)
+    return src

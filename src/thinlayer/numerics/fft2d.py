@@ -402,6 +402,7 @@ class _Problem:
     Phi: np.ndarray = field(repr=False)
     C: np.ndarray = field(repr=False)  # influence coefficients (n x n quadrant)
     workers: int
+    load: np.ndarray | None = field(default=None, repr=False)  # prescribed surface pressure q (hook, see solve_2d)
 
     @property
     def n(self) -> int:
@@ -443,7 +444,7 @@ def _grid(punch: Punch, phi: Callable, extent: Any, delta0: float | None, H_eff:
 
 
 def _setup(layer: Any, punch: Any, delta0: Any, H: Any, mu: Any, n: Any, extent: Any, tol: Any, maxiter: Any,
-           force: Any, nu: Any, workers: Any) -> _Problem:
+           force: Any, nu: Any, workers: Any, surface_load: Any = None) -> _Problem:
     """Check the input of :func:`solve_2d`, build the grid and the FFT convolution with the coefficients."""
     nu_val = numeric_layer_nu(layer, nu)
     mu = positive(mu, "mu")
@@ -459,8 +460,21 @@ def _setup(layer: Any, punch: Any, delta0: Any, H: Any, mu: Any, n: Any, extent:
     punch, phi = _numeric_punch(punch)
     x1, x2, d, Phi = _grid(punch, phi, extent, delta0, H_eff, n)
     C = influence_coefficients(layer, H_eff, d, n, nu=nu_val, mu=mu)
+    load = None
+    if surface_load is not None:
+        if delta0 is None or extent is None:
+            raise InputError("surface_load= needs delta0= and extent= (the load lives on the grid that extent and n "
+                             "define; a prescribed force is not supported with it)")
+        try:
+            load = np.array(surface_load(x1, x2) if callable(surface_load) else surface_load, dtype=float)
+        except (TypeError, ValueError):
+            raise InputTypeError(f"surface_load must be a finite {n} x {n} array of numbers (or a callable of the cell "
+                                 f"centres x1, x2 returning one), got {type(surface_load).__name__}") from None
+        if load.shape != (n, n) or not np.all(np.isfinite(load)):
+            raise InputError(f"surface_load must be a finite {n} x {n} array (or a callable of the cell centres "
+                             f"x1, x2 returning one), got shape {load.shape}")
     return _Problem(layer, punch, nu_val, mu, mu / (1.0 - nu_val), H, delta0, force, tol, maxiter, x1, x2, d, Phi,
-                    C, workers)
+                    C, workers, load)
 
 
 def _overlap_slices(w: np.ndarray) -> tuple[slice, slice]:
@@ -481,6 +495,8 @@ def _iterate(prob: _Problem):
     cell, n, Phi = prob.spacing**2, prob.n, prob.Phi
     if prob.force is None:
         w = prob.delta0 - Phi
+        if prob.load is not None:  # the prescribed surface load's displacement moves the obstacle (hook)
+            w = w - Convolver(prob.C, prob.workers)(prob.load)
         if not (w > 0).any():
             raise InputError(f"Phi >= delta0 = {prob.delta0:.6g} at every cell centre: no contact on the grid "
                              f"(min Phi = {Phi.min():.6g}); refine the grid or increase delta0")
@@ -529,7 +545,7 @@ def _package(prob: _Problem, p: np.ndarray, g: np.ndarray, iters: int, res: floa
     """The frozen :class:`Contact2D` (contour, force (1.8)); raise or warn on non-convergence or a coarse grid."""
     x1, x2, d, n = prob.x1, prob.x2, prob.spacing, prob.n
     cell = d * d
-    P = cell * float(p.sum())
+    P = cell * float(p.sum() if prob.load is None else (p + prob.load).sum())
     inside = p > 0
     if inside.any():
         _check_inside(inside, x1, x2, d)
@@ -553,7 +569,8 @@ def _package(prob: _Problem, p: np.ndarray, g: np.ndarray, iters: int, res: floa
 @boundary
 def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: float | None = None,
              mu: float = 1.0, n: int = 256, extent: Any = None, tol: float = 1e-10, maxiter: int = 5000,
-             *, force: float | None = None, nu: float | None = None, workers: int | None = None) -> Contact2D:
+             *, force: float | None = None, nu: float | None = None, workers: int | None = None,
+             surface_load: Any = None) -> Contact2D:
     """Solve the unilateral contact problem (1.5)-(1.8) on an N x N grid (FFT + Polonsky-Keer CG).
 
     Parameters
@@ -587,6 +604,12 @@ def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: flo
         Poisson ratio, only for layers that carry none (``HalfSpace``, ``FrictionlessLayer``).
     workers : int, optional
         Threads for :mod:`scipy.fft` (default: all CPUs).  The iteration itself calls no BLAS.
+    surface_load : numpy.ndarray or callable, optional
+        A prescribed surface pressure ``q`` (n x n cell values, tensile < 0, or a callable ``q(x1, x2)`` of the 1-D
+        cell-centre coordinates) carried besides the contact pressure: the complementarity (1.5) then holds for
+        ``p >= 0`` with ``u3 = C (p + q)``; ``pressure`` is p, ``gap`` the full gap and ``force`` the total
+        ``Delta^2 sum (p + q)``.  The hook of cohesive laws (:func:`thinlayer.numerics.cohesive.maugis_dugdale_2d`);
+        needs ``delta0`` and ``extent``.
 
     Returns
     -------
@@ -608,5 +631,5 @@ def solve_2d(layer: LayerKernel, punch: Any, delta0: float | None = None, H: flo
     >>> abs(res.force / (8 / 0.7 / 3) - 1) < 0.01, abs(res.contact_radius - 1) < 0.01
     (True, True)
     """
-    prob = _setup(layer, punch, delta0, H, mu, n, extent, tol, maxiter, force, nu, workers)
+    prob = _setup(layer, punch, delta0, H, mu, n, extent, tol, maxiter, force, nu, workers, surface_load)
     return _package(prob, *_iterate(prob))

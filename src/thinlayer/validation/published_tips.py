@@ -7,9 +7,10 @@ AFM users correct Sneddon's cone ``P_S = 4 vartheta tan(theta) delta^2/pi`` (``=
     P/P_S = 1 + sum_n c_n X^n.
 
 Two published series are implemented here as they are quoted (:data:`GAVARA_2012`, :data:`GARCIA_2018_CONE`).
-Neither publication's equations could be read by this project: :data:`READ_ATTEMPTS` lists every address tried and
-what it held (for Gavara & Chadwick the opening of the PubMed Central author manuscript PMC3492504, up to the end of
-its first paragraph, and the publisher's abstract page; for Garcia & Garcia no stored copy at all).  The
+Neither publication's equations could be read by this project, in three rounds of searching: :data:`READ_ATTEMPTS`
+(:mod:`thinlayer.validation.published_sources`) lists every address tried and what it held (for Gavara & Chadwick
+the opening of the PubMed Central author manuscript PMC3492504, up to the end of its first paragraph, and the
+publisher's abstract page; for Garcia & Garcia no stored copy at all, only reference lists citing it).  The
 coefficients are those that two public code repositories attribute to the publications, and every value here is
 labelled "as quoted in" those repositories (a secondary source), never as the paper's own print; no equation number
 or page of either paper is cited, because none was seen.
@@ -90,7 +91,11 @@ terms is ``2.9e-4`` and ``3.4e-5`` at n = 256, falling like ``X^3`` (``THINLAYER
 repositories (pyAF, ViscoIndent) apply the cone's coefficients to pyramids with ``X = delta tan(angle)/h``
 (:data:`GARCIA_2018_PYRAMID_AS_APPLIED`): read with the face angle their first coefficient ``0.721`` is 13 % below
 the pyramid's ``0.8313``, read with the edge angle (``tan = sqrt(2) tan(alpha)``, ``0.721 sqrt(2) = 1.020``) 23 %
-above; the errata registry holds the entry.
+above; the errata registry holds the entry.  The half-space prefactors the repositories put in front
+(:data:`PYRAMID_PREFACTORS_AS_IMPLEMENTED`, ``P = c E tan(angle) delta^2/(1 - nu^2)``): ViscoIndent's ``1.406/2`` and
+PyFMRheo's ``1/sqrt(2)`` are 4.7 % and 4.1 % below the engine's ``k/2 = 0.73764`` read with the face angle, 35 %
+above read with the edge angle (:func:`pyramid_prefactor_differences`; neither file names a publication for it, so
+no errata entry).
 
 Against the engine's any-thickness cone law (:func:`law_comparison`;
 :func:`thinlayer.contact.any_thickness_tips.cone_law`, ``chi = c_0/H = 2X/pi``, within its estimate, at most
@@ -115,49 +120,18 @@ import numpy as np
 import sympy as sp
 
 from .._checks import InputError
+from .published_sources import READ_ATTEMPTS  # every address tried, three rounds (shared registry)
 
 __all__ = ["READ_ATTEMPTS", "PublishedCorrection", "GAVARA_2012", "GARCIA_2018_CONE", "PUBLISHED", "ComparisonRow",
-           "cone_series", "paraboloid_series", "derived_cone_ratio", "direct_cone_ratio", "comparison_table",
+           "cone_series", "paraboloid_series", "derived_cone_coefficients", "derived_cone_ratio", "direct_cone_ratio",
+           "comparison_table",
            "format_table", "PYRAMID_STATUS", "ThinRow", "thin_layer_table", "GARCIA_2018_PYRAMID_AS_APPLIED",
            "homogeneous_tip_series", "pyramid_half_space_coefficient", "pyramid_series", "direct_pyramid_ratio",
-           "LawComparison", "law_comparison"]
+           "LawComparison", "law_comparison", "PYRAMID_PREFACTORS_AS_IMPLEMENTED", "pyramid_prefactor_differences"]
 
 #: the quoting repositories (a secondary source: the publications' own equations were not read)
 PYAF = "sebastienjanel/pyAF, file src/compute_tools/stiffness_correction.py"
 PYFMRHEO = "jlopezalo/PyFMRheo, file src/pyfmrheo/models/correction_factors.py"
-
-#: every address where the publications were looked for (issue 24 item 5, two rounds), and what each held:
-#: ``{citation key: ((address or query, what was found), ...)}``.  The search tool's stored web pages return the
-#: opening of a page only (about 2,400 characters), never its body.
-READ_ATTEMPTS = {
-    "gavara2012": (
-        ("https://pmc.ncbi.nlm.nih.gov/articles/PMC3492504",
-         "the author manuscript in PubMed Central, stored: its opening only (Nat Nanotechnol 2012 Sep 30; "
-         "7(11):733-736, doi 10.1038/nnano.2012.163, PMCID PMC3492504, NIHMSID NIHMS402200, PMID 23023646; "
-         "abstract; the first paragraph of the text). The BECC formula lies past the part returned. (The brief's "
-         "PMC3835343 is not this article's PMCID.)"),
-        ("https://www.nature.com/articles/nnano.2012.163",
-         "the publisher's page: abstract, figure titles and reference list; the text is behind a paywall"),
-        ("pages corpus: queries on the BECC formula, its wording, the supplementary information, Europe PMC",
-         "no other copy of the article or of its supplementary information"),
-        ("find_string 'nnano.2012.163', 'Gavara2012', 'Gavara_2012'",
-         "PyFMRheo's bec_gavara_cone citing the nature.com page, and a log of a failed full-text download of "
-         "PMC3492504: no copy of the article"),
-        ("docs and issues corpora; find_string 'Bottom Effect Cone Correction', 'Gavara N, Chadwick'",
-         "a README of a MATLAB analysis repository and a reference list citing another Gavara & Chadwick article: no "
-         "equation"),
-    ),
-    "garcia2018": (
-        ("pages corpus: title, 'Biophys J. 2018;114(12):2923-2932', doi 10.1016/j.bpj.2018.05.012, PMC6026379",
-         "no stored page of the article (PubMed Central, Europe PMC, cell.com, PubMed): only later articles of the "
-         "same group (Nanoscale 2021 d1nr03894j, Nanoscale 2025 d5nr01236h), of which only the opening is returned"),
-        ("docs and issues corpora: Garcia 2018 bottom-effect coefficients, cone, pyramid", "nothing on the article"),
-        ("find_string 'single cell cultured on a rigid support'", "no hit"),
-        ("find_string 'j.bpj.2018.05.012', 'Garcia2018.pdf'",
-         "code that cites the DOI (yu-efremov/ViscoIndent bottom_effect_correction.py, an Igor HertzFit procedure, a "
-         "PyFMRheo example): a secondary source, the same coefficients; no copy of the article"),
-    ),
-}
 
 #: what became of the pyramid of Garcia & Garcia (2018): the publication was not read (READ_ATTEMPTS); the repositories
 #: that cite it apply the cone's coefficients to pyramids (GARCIA_2018_PYRAMID_AS_APPLIED), compared with (PT.5)
@@ -378,12 +352,16 @@ def _moments(nu: float, base: str = "bonded") -> dict:
     return {_b0: float(b[0]), _b1: float(b[1])}
 
 
+def derived_cone_coefficients(nu: float = 0.5, order: int = ORDER, base: str = "bonded") -> np.ndarray:
+    """(PT.3) in numbers: ``(1, beta_1, ..., beta_order)`` of ``P/P_S = sum_n beta_n X^n`` for the layer."""
+    return np.array([float(c.subs(_moments(nu, base))) for c in cone_series(order)[0]])
+
+
 def derived_cone_ratio(X: Any, nu: float = 0.5, order: int = ORDER, base: str = "bonded") -> np.ndarray:
     """(PT.3) evaluated: ``P/P_S`` of the cone on a layer bonded to (or lying without friction on, ``base =
     "frictionless"``, independent of nu) a rigid base, at ``X = delta tan(theta)/H``.
     """
-    coeffs = [float(c.subs(_moments(nu, base))) for c in cone_series(order)[0]]
-    return np.polynomial.polynomial.polyval(np.asarray(X, dtype=float), coeffs)
+    return np.polynomial.polynomial.polyval(np.asarray(X, dtype=float), derived_cone_coefficients(nu, order, base))
 
 
 def direct_cone_ratio(X: float, nu: float = 0.5, half_angle_deg: float = 45.0, n: int | None = None,
@@ -532,6 +510,28 @@ def pyramid_half_space_coefficient(sides: int = 4, n: int = 128) -> float:
 
 def _extent(sides: int) -> float:
     return 1.5 if sides == 4 else 2.2  # corners at 1/cos(pi/N): 1.414, 2.0 (delta tan(alpha) = 1)
+
+
+#: the half-space prefactor ``c`` of ``P = c E tan(angle) delta^2/(1 - nu^2)`` that two repositories use for a 4-sided
+#: pyramid (a secondary source; neither file cites a publication for it, ViscoIndent's documentation calls its model
+#: "Bilodeau"): ``{repository, file: c}``.  The engine's is ``k/2`` with ``k`` of
+#: :func:`pyramid_half_space_coefficient` (face angle: ``P = k vartheta tan(alpha) delta^2``, ``vartheta = E/(2 (1 -
+#: nu^2))``).
+PYRAMID_PREFACTORS_AS_IMPLEMENTED = {
+    "yu-efremov/ViscoIndent, Ting_numerical.py (commit c90ee84): K1 = 1.406/2 tan(angle)": 1.406 / 2,
+    "jlopezalo/PyFMRheo, src/pyfmrheo/models/geom_coeffs.py: 1/sqrt(2) tan(angle)": 1 / math.sqrt(2),
+}
+
+
+def pyramid_prefactor_differences(n: int = 128) -> dict[str, tuple[float, float]]:
+    """Each implemented prefactor against the engine's ``k/2`` (2D solver, ``n x n``): ``(relative difference with the
+    angle read as the face angle, with the angle read as the edge angle, tan larger by sqrt(2))``.
+
+    Measured: ``k/2 = 0.73764`` (n = 512); ViscoIndent ``-4.7 %`` (face) or ``+34.8 %`` (edge), PyFMRheo ``-4.1 %``
+    or ``+35.6 %``.
+    """
+    half = pyramid_half_space_coefficient(4, n) / 2
+    return {key: (c / half - 1, c * math.sqrt(2) / half - 1) for key, c in PYRAMID_PREFACTORS_AS_IMPLEMENTED.items()}
 
 
 def pyramid_series(nu: float = 0.5, sides: int = 4, n: int = 128) -> tuple[float, float]:

@@ -3,6 +3,9 @@ r"""The adhesive (JKR) rows of the model registry (issue 26 item 5): ``solve(...
 * ``"thin-layer-jkr"`` (preference 12, asymptotic): the paraboloid on a bonded layer by the thin-layer JKR law
   (J.11) (``-1 < nu < 1/2``) or (J.15) (``nu = 1/2``) at order 1, with its measured estimate
   :meth:`~thinlayer.asymptotics.adhesion.ThinLayerJKR.error_estimate`; refused below ``c = 5 H``.
+* ``"any-thickness"`` (preference 60): the sphere at any thickness, bonded or frictionless base, by the law
+  (J.16)-(J.18) of :mod:`thinlayer.contact.adhesion_sphere` (the any-thickness sphere law (T.7) plus the flat punch's
+  compliance), where its estimate is within ``tol`` (else the walk goes on to the direct solver).
 * ``"direct"`` (preference 95, adhesive): the direct JKR solver (J.1)-(J.6) for the paraboloid and (J.13) for the
   flat-ended cylinder, any thickness, bonded or frictionless base.
 
@@ -26,8 +29,9 @@ thin_layer_jkr = lazy_function("thinlayer.asymptotics.adhesion", "thin_layer_jkr
 adhesive_state = lazy_function("thinlayer.numerics.adhesion", "adhesive_state")
 flat_punch_detachment = lazy_function("thinlayer.numerics.adhesion", "flat_punch_detachment")
 jkr_curve = lazy_function("thinlayer.numerics.adhesion", "jkr_curve")
+any_thickness_jkr = lazy_function("thinlayer.contact.adhesion_sphere", "any_thickness_jkr")
 
-__all__ = ["DirectJKRModel", "ThinLayerJKRModel"]
+__all__ = ["AnyThicknessJKRModel", "DirectJKRModel", "ThinLayerJKRModel"]
 
 #: the thin-layer law is measured for c >= 5 H only (ThinLayerJKR.error_estimate)
 MIN_C_OVER_H = 5.0
@@ -144,6 +148,70 @@ class ThinLayerJKRModel(_AdhesiveModel):
         return _answer(problem, self.name, P, d, c, est, branch, (tag, tag), law, _pull_off_direct(problem, c))
 
 
+def _pull_off_law(law, problem: Problem):
+    """A callable computing pull-off and jump-in from the any-thickness JKR law (J.16), (J.6)."""
+    def compute() -> PullOff:
+        R, H, mu, w = problem.tip.sphere_radius, problem.H, problem.mu, problem.interaction.work_of_adhesion
+        c_l, P_l, _ = law.pull_off(H, R, w, mu)
+        c_d, P_d, d_d, _ = law.pull_off_displacement(H, R, w, mu)
+
+        def fn(idx: int):
+            return lambda x: float(law.evaluate(x, H, R, w, mu)[idx])
+
+        ji = [jkr_radius(fn(k), 0.0, 2.0 * c, "stable", "depth" if k == 0 else "force") for k, c in ((0, c_d),
+                                                                                                  (1, c_l))]
+        return PullOff(P_l, c_l, P_d, c_d, d_d, ji[0], ji[1], source="any-thickness JKR law (J.16)")
+    return compute
+
+
+class AnyThicknessJKRModel(_AdhesiveModel):
+    """The sphere's JKR law at any thickness (J.16)-(J.18): bonded or frictionless base, any ``H/R``."""
+
+    name = "any-thickness"
+    preference = 60
+    equations = ("J.16", "J.16")
+    declines = (ValidityError,)
+
+    def refuses(self, problem: Problem) -> str | None:
+        return _paraboloid_reason(problem)
+
+    def applies(self, problem: Problem) -> str | None:
+        if not problem.layer.on_rigid_base or not problem.layer.has_thickness:
+            return "the any-thickness JKR law is built for a layer on a rigid base"
+        return None
+
+    def run(self, problem: Problem) -> AdhesiveIndentation:
+        law = any_thickness_jkr(problem.layer, _nu_arg(problem))
+        R, H, mu = problem.tip.sphere_radius, problem.H, problem.mu
+        w = problem.interaction.work_of_adhesion
+        branch = problem.interaction.branch
+
+        def state(c: float):
+            return law.states(c, H, R, w, mu)
+
+        kind, target = _target(problem)
+        attr = "delta" if kind == "delta" else "force"
+        guess = max(0.5 * H, math.sqrt(2 * R * abs(target)) if kind == "delta" else H)
+        c = jkr_radius(lambda x: float(getattr(state(x), attr)[0]), target, guess, branch,
+                       "depth" if kind == "delta" else "force", xtol=1e-11)
+        st = state(c)
+        sd, sP = slope(lambda x: (lambda s: (s.delta[0], s.force[0]))(state(x)), c)
+        e_d, e_P = float(st.delta_error[0]), float(st.force_error[0])
+        if kind == "delta":
+            ec = e_d / abs(sd) + 1e-11 * c
+            e_P = e_P + abs(sP) * ec
+        else:
+            ec = e_P / abs(sP) + 1e-11 * c
+            e_d = e_d + abs(sd) * ec
+        est = relative_estimates(e_P, e_d, ec, st.force[0], st.delta[0], c, math.pi * w * R, c * c / R)
+        if max(est.values()) > problem.tol:
+            words = ", ".join(f"{k.replace('_', ' ')} {100 * v:.3g} %" for k, v in est.items())
+            raise ValidityError(f"solve(): any-thickness: estimates {words} exceed tol {100 * problem.tol:.3g} %",
+                                "force", max(est.values()), problem.tol, "direct")
+        return _answer(problem, self.name, st.force[0], st.delta[0], c, est, branch, ("J.16", "J.16"), st,
+                       _pull_off_law(law, problem))
+
+
 class DirectJKRModel(_AdhesiveModel):
     """The direct JKR solver (J.1)-(J.6) for the paraboloid, (J.13) for the flat punch; any thickness."""
 
@@ -206,9 +274,10 @@ class DirectJKRModel(_AdhesiveModel):
                                     f"detachment force {det.force:.6g} (J.13)", "force", math.inf, problem.tol,
                                     "direct")
         est = {"force": det.error, "depth": det.error, "contact_radius": 0.0}
-        po = PullOff(det.force, a, det.force, a, det.depth, None, None)
+        po = PullOff(det.force, a, det.force, a, det.depth, None, None, source="flat punch (J.13)")
         return _answer(problem, self.name, P, d, a, est, "stable", ("J.13", "F.1"), det, lambda: po)
 
 
 register_model(ThinLayerJKRModel)
+register_model(AnyThicknessJKRModel)
 register_model(DirectJKRModel)

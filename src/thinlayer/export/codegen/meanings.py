@@ -33,6 +33,7 @@ ARGUMENTS: dict[str, tuple[str, str, str]] = {
     "m_1": ("kernel coefficient m_1 of L(s)/s = A (1 + m_1 s^2 + ...)", "1", "2.20"),
     "A": ("kernel coefficient A = lim L(s)/s", "1", "2.4"),
     "c": ("contact radius", "length", "I.9"),
+    "w": ("work of adhesion (JKR)", "force/length", "J.5"),
     "r": ("distance from the punch axis", "length", "I.9"),
     "rho": ("distance from the punch axis at which the pressure is evaluated", "length", "I.9"),
     "a_over_H": ("radius of the flat punch over the layer thickness, a/H", "1", "F.1"),

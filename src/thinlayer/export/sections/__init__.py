@@ -154,6 +154,7 @@ def figure_files(derivation: Any, folder: Path) -> list[Path]:
 
 # the report's sections, each in its module (their ORDER makes the report's order, not the list below)
 from . import (  # noqa: E402 - the registry above is what they register into
+    adhesion,
     boundary_layer,
     contact,
     edge_shift,
@@ -171,5 +172,5 @@ from . import (  # noqa: E402 - the registry above is what they register into
 )
 
 for _section in (intro, kernel, inner, boundary_layer, two_term, incompressible, edge_shift, tip, second_order,
-                 contact, validation, flat_punch, errata, references):
+                 contact, validation, flat_punch, adhesion, errata, references):
     register_section(_section)

@@ -1,0 +1,110 @@
+"""Force maps (issue 25 item 5): a 64 x 64 map of 2,000-point curves fitted, target <= 15 s on 2 cores.
+
+The curves are synthetic (thinlayer.afm.map_data.synthetic_curve, built in memory, not timed): E from 3 to 12 kPa
+over the map, contact heights over +-0.3 um, a sphere R = 5 um pressed 0.15 um (half of each curve off contact),
+noise 2 pN.  Timed: ``fit_map`` from the curves to the MapResult on a dask LocalCluster of 2 worker processes
+(``scheduler="local"``; start-up, sending the curves and each worker's first build of the law included), for the
+half-space (Hertz, closed form) and a layer H = 2 um (the any-thickness law (T.7)), by the fast fitter
+``fit_curve_basic``; the default ``fit_curve_full`` (thinlayer.afm.curve_fit.fit_curve: contact point and baseline
+fitted) on the whole map only with ``THINLAYER_BENCH_FULL=1`` (minutes).  Reading a map file is a separate row: a
+16 x 16 map written in afmformats' HDF5 format and read back by ``read_map`` (afmformats opens the file for every
+column of every curve: the per-curve cost is afmformats').  Load-independent rows: the CPU seconds per curve of each
+fitter (serial, 64 curves) and the time 2 idle cores would take for the map from it (an extrapolation without
+start-up or transfer).  ``THINLAYER_BENCH_MAP=N`` sets the side (default 64); the load average is printed beside
+the rows: the 2 cores are shared.
+"""
+from __future__ import annotations
+
+import importlib.util
+import math
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from _timing import Row, main, once
+
+SIDE = int(os.environ.get("THINLAYER_BENCH_MAP", "64"))
+POINTS = 2000
+R = 5e-6
+
+
+def _load() -> str:
+    try:
+        return "load average " + ", ".join(f"{x:.2f}" for x in os.getloadavg())
+    except OSError:  # pragma: no cover
+        return "load average n/a"
+
+
+def _curves(n: int, H: float, seed: int = 0):
+    import numpy as np
+
+    from thinlayer.afm.map_data import MapCurve, synthetic_curve
+
+    rng = np.random.default_rng(seed)
+    yy, xx = np.mgrid[0:n, 0:n]
+    E = 3e3 + 9e3 * (xx + yy) / max(1, 2 * (n - 1))
+    contact = 0.3e-6 * np.sin(xx / 7.0) * np.cos(yy / 9.0)
+    curves = [MapCurve((i, j), *synthetic_curve(float(E[i, j]), H, R=R, points=POINTS, depth=0.15e-6,
+                                                contact=float(contact[i, j]), noise=2e-12, rng=rng))
+              for i in range(n) for j in range(n)]
+    return curves, E
+
+
+def run() -> list[Row]:
+    if importlib.util.find_spec("afmformats") is None or importlib.util.find_spec("distributed") is None:
+        return []
+    import numpy as np
+
+    from thinlayer.afm.map_data import read_map, write_synthetic_map
+    from thinlayer.afm.maps import fit_curve_basic, fit_curve_full, fit_map
+    from thinlayer.contact.any_thickness import any_thickness_law
+
+    n = SIDE
+    any_thickness_law(0.5, "bonded")  # this process's law (the workers build theirs inside the timed runs)
+    data = {H: _curves(n, H) for H in (math.inf, 2e-6)}
+    print(f"# bench_maps: {n} x {n} curves of {POINTS} points; {_load()} before the runs", file=sys.stderr)
+    rows = []
+    runs = [(math.inf, fit_curve_basic, "<= 15 s"), (2e-6, fit_curve_basic, "<= 15 s")]
+    if os.environ.get("THINLAYER_BENCH_FULL") == "1":
+        runs += [(math.inf, fit_curve_full, ""), (2e-6, fit_curve_full, "")]
+    for H, fitter, target in runs:
+        where = "half-space (Hertz)" if math.isinf(H) else "layer H = 2 um (T.7)"
+        curves, E = data[H]
+
+        def go(fitter=fitter, H=H, curves=curves, E=E, where=where):
+            r = fit_map(curves, punch=R, H=None if math.isinf(H) else H, nu=0.5, fit_one=fitter, progress=False,
+                        scheduler="local", workers=2, timeout=3600)
+            ok = np.isfinite(r.E)
+            err = float(np.max(np.abs(r.E[ok] / E[ok] - 1))) if ok.any() else math.nan
+            print(f"#   {fitter.__name__}, {where}: {int(ok.sum())}/{n * n} pixels fitted, largest |E/E_true - 1| = "
+                  f"{err:.2g}; {_load()}", file=sys.stderr)
+
+        rows.append(Row(f"fit_map {n}x{n} x {POINTS} pts, {fitter.__name__}, {where}, local cluster 2 procs", once(go),
+                        target))
+    for H in (math.inf, 2e-6):
+        curves = data[H][0][:64]
+        Hs = None if math.isinf(H) else H
+        where = "half-space" if math.isinf(H) else "H = 2 um"
+        for fitter in (fit_curve_basic, fit_curve_full):
+            fitter(curves[0], punch=R, H=Hs, nu=0.5)
+            t0 = time.process_time()
+            for c in curves:
+                fitter(c, punch=R, H=Hs, nu=0.5)
+            cpu = (time.process_time() - t0) / len(curves)
+            rows.append(Row(f"CPU per curve, {fitter.__name__}, {where} (64 curves, serial)", cpu, ""))
+            rows.append(Row(f"  -> {n}x{n} curves on 2 idle cores, from that CPU (extrapolated)", cpu * n * n / 2, ""))
+    with tempfile.TemporaryDirectory() as tmp:
+        p = write_synthetic_map(Path(tmp) / "map16.h5", np.full((16, 16), 5e3), math.inf, R=R, points=POINTS,
+                                depth=0.15e-6, noise=2e-12)
+        t0 = time.process_time()
+        wall = once(read_map, p)
+        rows.append(Row(f"read_map 16x16 x {POINTS} pts (afmformats HDF5), per curve, wall", wall / 256, ""))
+        rows.append(Row("read_map, CPU per curve", (time.process_time() - t0) / 256, ""))
+    print(f"# bench_maps done; {_load()}", file=sys.stderr)
+    return rows
+
+
+if __name__ == "__main__":
+    main(run)

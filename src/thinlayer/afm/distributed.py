@@ -1,0 +1,229 @@
+"""Large batches on dask.distributed (issue 25 item 6): one function mapped over many items, in order.
+
+:func:`map_batch` is the one batch API of thinlayer: the pixels of a force map (:func:`thinlayer.afm.maps.fit_map`),
+a parameter sweep of :func:`thinlayer.solve` (:func:`solve_sweep`) or of the direct solvers, the cases of a
+validation study.  The same call runs
+
+* serially in this process (``scheduler=None``, the default: no dask needed);
+* on dask's in-process threads (``scheduler="threads"``: a ``LocalCluster(processes=False)``; numpy and scipy
+  release the GIL in their loops, Python code does not);
+* on a local cluster of worker processes (``scheduler="local"``: ``LocalCluster(processes=True)``, one worker per
+  core, one thread each), the embedded default for a large batch;
+* on an existing cluster (``scheduler="tcp://host:8786"``, or a ``distributed.Client`` already connected).
+
+No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about 4 per worker: a
+4096-pixel map on 2 workers is 8 tasks, not 4096), sent to the workers by ``Client.scatter``, mapped by
+``Client.map`` and collected by ``distributed.as_completed``; the results come back in the items' order.  A cluster
+started here logs nothing below CRITICAL (its shutdown chatter); the tasks' errors reach the caller through their
+futures.  Each item is computed by the same function on the same numbers on every path: the serial, threaded and
+process results are equal bit for bit (``tests/afm/test_maps_distributed.py``).
+
+dask is imported on first use (the extra ``thinlayer[afm]``); the serial path never imports it.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import sys
+from collections.abc import Callable, Iterable, Sequence
+from typing import Any
+
+from ..errors import InputError, InputTypeError
+
+__all__ = ["SCHEDULERS", "chunked", "map_batch", "solve_sweep"]
+
+#: the named schedulers (besides a ``tcp://``/``tls://``/``inproc://`` address or a ``distributed.Client``)
+SCHEDULERS = (None, "serial", "threads", "local")
+#: seconds to wait for a cluster to start or a scheduler to answer before giving up (one line, never a hang)
+CONNECT_TIMEOUT = 60.0
+
+
+def chunked(items: Sequence[Any], size: int) -> list[list[Any]]:
+    """``items`` cut into consecutive lists of at most ``size`` (order kept)."""
+    return [list(items[i:i + size]) for i in range(0, len(items), size)]
+
+
+def _run_chunk(func: Callable[[Any], Any], chunk: list[Any]) -> list[Any]:
+    """One dask task: ``func`` over a chunk of items, in order."""
+    return [func(item) for item in chunk]
+
+
+class Progress:
+    """A progress bar over ``total`` items: tqdm when installed, else a plain counter on stderr; off when
+    ``enabled`` is false.
+    """
+
+    def __init__(self, total: int, enabled: bool, label: str = "curves") -> None:
+        self.total, self.done, self.enabled, self.label = total, 0, bool(enabled) and total > 0, label
+        self._bar = None
+        self._step = max(1, total // 20)
+        if self.enabled:
+            try:
+                from tqdm import tqdm  # optional: nicer, not needed
+            except ImportError:
+                self._bar = None
+            else:
+                self._bar = tqdm(total=total, unit=f" {label}", file=sys.stderr)
+
+    def update(self, n: int = 1) -> None:
+        """``n`` more items done."""
+        if not self.enabled:
+            return
+        self.done += n
+        if self._bar is not None:
+            self._bar.update(n)
+        elif self.done == self.total or self.done // self._step != (self.done - n) // self._step:
+            tty = sys.stderr.isatty()  # a terminal: one line rewritten; a log file: a line per 5 %
+            print(f"{chr(13) if tty else ''}{self.done}/{self.total} {self.label}",
+                  end="\n" if self.done >= self.total or not tty else "", file=sys.stderr, flush=True)
+
+    def close(self) -> None:
+        """End the bar (tqdm's line)."""
+        if self._bar is not None:
+            self._bar.close()
+
+
+def _client(scheduler: Any, workers: int | None):
+    """``(client, owned)``: a dask Client for ``scheduler`` and whether this call must close it (and its cluster)."""
+    try:
+        from distributed import Client, LocalCluster
+    except ImportError:  # pragma: no cover - the extra is installed where dask is asked for
+        raise InputError(f"scheduler={scheduler!r} needs dask.distributed: pip install 'thinlayer[afm]' (or "
+                         "'dask[distributed]'); scheduler=None runs serially") from None
+    if isinstance(scheduler, Client):
+        return scheduler, False
+    if scheduler in ("threads", "local"):
+        n = workers or (2 if scheduler == "threads" else _cores())
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": a free port
+                               dashboard_address=":0", silence_logs=logging.CRITICAL)
+        return Client(cluster, timeout=CONNECT_TIMEOUT), True
+    try:
+        return Client(scheduler, timeout=CONNECT_TIMEOUT), True
+    except OSError as exc:
+        raise InputError(f"scheduler {scheduler!r}: no dask scheduler answered within {CONNECT_TIMEOUT:g} s "
+                         f"({str(exc).splitlines()[0][:120]}); give a running scheduler's address, 'local' or None")\
+            from None
+
+
+def _cores() -> int:
+    import os
+
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def check_scheduler(scheduler: Any) -> Any:
+    """``scheduler`` if it is one :func:`map_batch` takes, else one line naming the valid ones."""
+    if scheduler in SCHEDULERS:
+        return scheduler
+    if isinstance(scheduler, str):
+        if scheduler.startswith(("tcp://", "tls://", "inproc://", "ucx://", "ws://", "wss://")):
+            return scheduler
+        raise InputError(f"scheduler must be None (serial), 'threads', 'local' (a dask LocalCluster) or a dask "
+                         f"scheduler address such as 'tcp://host:8786', got {scheduler[:80]!r}")
+    if type(scheduler).__name__ == "Client" and type(scheduler).__module__.startswith("distributed"):
+        return scheduler
+    raise InputTypeError(f"scheduler must be None, 'threads', 'local', an address 'tcp://host:8786' or a "
+                         f"distributed.Client, got {type(scheduler).__name__}")
+
+
+def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: Any = None, chunk: int | None = None,
+              workers: int | None = None, progress: bool = False, label: str = "items",
+              timeout: float | None = None) -> list[Any]:
+    """``[func(item) for item in items]``, serially or on dask.distributed, in the items' order.
+
+    Parameters
+    ----------
+    func : callable
+        One item to one result.  For a process cluster it must pickle (a module-level function or a
+        ``functools.partial`` of one).  Exceptions are the caller's to catch inside ``func`` (a map records a failed
+        pixel with its reason): an exception that escapes ``func`` stops the batch and is raised here.
+    items : iterable
+        The work, one item per call.
+    scheduler : None, str or distributed.Client
+        ``None`` or ``"serial"``: this process; ``"threads"``: a dask ``LocalCluster`` of threads in this process;
+        ``"local"``: a ``LocalCluster`` of worker processes (one per core); ``"tcp://host:port"``: that cluster's
+        scheduler; a ``Client``: used as it is (and left open).  A cluster started here is closed before return.
+    chunk : int, optional
+        Items per dask task (default: about 4 tasks per worker, at least 1 item).
+    workers : int, optional
+        Workers of a cluster started here (default: 2 threads, or one process per core).
+    progress : bool
+        A progress bar on stderr (tqdm when installed, else a counter).
+    label : str
+        What the items are, for the progress bar.
+    timeout : float, optional
+        Seconds to wait for the dask results; past it a :class:`TimeoutError` is raised (and a cluster started here
+        closed) instead of waiting for ever.
+
+    Returns
+    -------
+    list
+        One result per item, in order.
+
+    Examples
+    --------
+    >>> map_batch(abs, [-1, 2, -3])
+    [1, 2, 3]
+    """
+    items = list(items)
+    scheduler = check_scheduler(scheduler)
+    bar = Progress(len(items), progress, label)
+    try:
+        if scheduler in (None, "serial") or not items:
+            out = []
+            for item in items:
+                out.append(func(item))
+                bar.update()
+            return out
+        client, owned = _client(scheduler, workers)
+        try:
+            from distributed import as_completed
+
+            if chunk is None:
+                n = max(1, len(client.scheduler_info(n_workers=-1).get("workers", {})))
+                chunk = max(1, math.ceil(len(items) / (4 * n)))
+            parts = chunked(items, int(chunk))
+            data = client.scatter(parts)  # the items sent to the workers once, not embedded in the task graph
+            futures = client.map(_run_chunk, [func] * len(parts), data, pure=False)
+            order = {f.key: i for i, f in enumerate(futures)}
+            results: list[Any] = [None] * len(parts)
+            for fut in as_completed(futures, timeout=timeout):
+                results[order[fut.key]] = fut.result()
+                bar.update(len(parts[order[fut.key]]))
+            return [r for part in results for r in part]
+        finally:
+            if owned:
+                cluster = getattr(client, "cluster", None)
+                client.close()
+                if cluster is not None:
+                    cluster.close()
+    finally:
+        bar.close()
+
+
+def _solve_one(kwargs: dict[str, Any]) -> Any:
+    from ..contact.solve import solve
+
+    return solve(**kwargs)
+
+
+def solve_sweep(cases: Iterable[dict[str, Any]], *, scheduler: Any = None, **options: Any) -> list[Any]:
+    """:func:`thinlayer.solve` over a parameter sweep: one keyword dictionary per case, through :func:`map_batch`.
+
+    Parameters
+    ----------
+    cases : iterable of dict
+        The keyword arguments of each ``solve()`` call (``punch``, ``layer``, ``H``, ``delta``/``force``, ``model``
+        such as ``"direct"``, ...).
+    scheduler, **options
+        As :func:`map_batch`.
+
+    Returns
+    -------
+    list
+        One ``solve()`` result per case, in order.
+    """
+    return map_batch(_solve_one, [dict(c) for c in cases], scheduler=scheduler, **options)
