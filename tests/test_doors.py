@@ -188,6 +188,13 @@ INVENTORY: dict[str, list] = {
                                                        H=1.0, material=tl.Prony(1.0), times=[0.0, 1.0],
                                                        depths=[0.0, 0.1]), k: s})
         for k in ("layer", "punch", "H", "material", "times", "depths", "nu", "tol", "model")],
+    # force control, oscillation, fit (issue 27 item 4: viscodoor)
+    "thinlayer.viscoelastic_depth": [lambda s, k=k: tl.viscoelastic_depth(**{**dict(layer=tl.BondedLayer(0.5), punch=tl.Punch.paraboloid(10), H=1.0, material=tl.Prony(1.0), times=[0.0, 1.0], forces=[0.0, 0.1]), k: s}) for k in ("layer", "punch", "H", "material", "times", "forces", "nu", "tol", "model")],  # noqa: E501
+    "thinlayer.oscillation": [lambda s, k=k: tl.oscillation(**{**dict(layer=tl.BondedLayer(0.5), punch=tl.Punch.paraboloid(10), H=1.0, material=tl.Prony(1.0), delta0=0.1, omega=[1.0], amplitude=1e-3), k: s}) for k in ("layer", "punch", "H", "material", "delta0", "omega", "amplitude", "nu", "tol", "model")],  # noqa: E501
+    "thinlayer.contact_stiffness": [lambda s, k=k: tl.contact_stiffness(**{**dict(layer=tl.BondedLayer(0.5), punch=tl.Punch.paraboloid(10), H=1.0, delta0=0.1), k: s}) for k in ("layer", "punch", "H", "delta0", "nu", "tol", "model")],  # noqa: E501
+    "thinlayer.contact.oscillation.ContactStiffness.complex_modulus": [lambda s: tl.contact_stiffness(tl.BondedLayer(0.5), tl.Punch.paraboloid(10), 1.0, 0.1).complex_modulus(s)],  # noqa: E501
+    "thinlayer.contact.oscillation.ContactStiffness.half_space_complex_modulus": [lambda s: tl.contact_stiffness(tl.BondedLayer(0.5), tl.Punch.paraboloid(10), 1.0, 0.1).half_space_complex_modulus(s)],  # noqa: E501
+    "thinlayer.fit_viscoelastic": [lambda s, k=k: tl.fit_viscoelastic(tl.BondedLayer(0.5), tl.Punch.paraboloid(10), 1.0, **{**dict(curves=[([0.0, 1.0, 2.0], [0.0, 0.1, 0.1], [0.0, 1.0, 0.8])]), k: s}) for k in ("material", "curves", "oscillation", "delta0", "nu", "t0", "guess", "tol", "model")],  # noqa: E501
     # constructors of the layers and the punch
     "thinlayer.BondedLayer": [lambda s: tl.BondedLayer(s), lambda s: tl.BondedLayer(parameter=s),
                               lambda s: tl.BondedLayer(0.3, dps=s)],
@@ -299,6 +306,12 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.solve(F().L, F().P, delta0=s, H=0.05, mu=1.0, work_of_adhesion=0.01),
         lambda s: tl.solve(F().L, F().P, force=s, H=0.05, mu=1.0, work_of_adhesion=0.01),
         lambda s: tl.solve(F().L, F().P, delta0=0.1, H=0.05, mu=1.0, work_of_adhesion=0.01, model=s),
+        # viscoelastic (issue 27 item 4)
+        lambda s: tl.solve(F().L, F().P, H=1.0, material=s, history=([0.0, 1.0], [0.0, 0.1])),
+        lambda s: tl.solve(F().L, F().P, H=1.0, material=tl.Prony(1.0), history=s),
+        lambda s: tl.solve(F().L, F().P, H=1.0, material=tl.Prony(1.0), history=([0.0, 1.0], s)),
+        lambda s: tl.solve(F().L, F().P, H=1.0, material=tl.Prony(1.0), history=([0.0, 1.0], [0.0, 0.1]), control=s),
+        lambda s: tl.solve(F().L, F().P, H=1.0, material=tl.Prony(1.0), history=([0.0, 1.0], [0.0, 0.1]), model=s),
     ],
     "thinlayer.Indentation": [lambda s: tl.Indentation(*([s] * 17))],
     "thinlayer.Indentation.pressure": [lambda s: F().ind.pressure(s, 0.0), lambda s: F().ind.pressure(0.0, s)],
@@ -551,6 +564,8 @@ NO_USER_VALUES: dict[str, str] = {
     "thinlayer.punch.base.LevelSet": "a result class: thinlayer builds it; its constructor stores values and "
                                      "evaluates none",
     "thinlayer.Indentation.as_dict": "returns the numbers it holds",
+    "thinlayer.contact.hereditary.ViscoelasticForce.to_json": "returns the numbers it holds, as JSON",
+    "thinlayer.oscillation_law": "takes no argument: the sympy derivation",
     "thinlayer.errors.boundary": "a decorator for thinlayer's own functions (its argument is code, not a value)",
     "thinlayer.errors.boundary_methods": "a class decorator for thinlayer's own classes",
     "thinlayer.errors.translate": "turns an exception into thinlayer's; never evaluates its text",
@@ -570,6 +585,8 @@ RESULT_CLASSES = (
     "thinlayer.asymptotics.solution.ContactSolution", "thinlayer.asymptotics.solution.ForceArrays",
     "thinlayer.asymptotics.wiener_hopf.WienerHopfSolution", "thinlayer.contact.any_thickness.AnyThicknessLaw",
     "thinlayer.contact.fit.FitResult", "thinlayer.contact.hereditary.ViscoelasticForce",
+    "thinlayer.contact.oscillation.ContactStiffness", "thinlayer.contact.oscillation.Oscillation",
+    "thinlayer.contact.oscillation.OscillationLaw", "thinlayer.contact.visco_fit.ViscoFitResult",
     "thinlayer.afm.curves.Curve", "thinlayer.afm.curve_fit.CurveFit",
     "thinlayer.contact.indentation.DirectComparison",
     "thinlayer.numerics.AxisymmetricContact",

@@ -44,7 +44,9 @@ _PUBLIC = {
     "fit": "thinlayer.contact.fit",
     "load_curve": "thinlayer.afm.curves", "fit_curve": "thinlayer.afm.curve_fit",  # measured curves (issue 25)
     # viscoelastic materials and the Lee-Radok force history (issue 27, first slice)
-    "viscoelastic_force": "thinlayer.contact.hereditary",
+    **dict.fromkeys(["viscoelastic_force", "viscoelastic_depth"], "thinlayer.contact.hereditary"),
+    **dict.fromkeys(["oscillation", "contact_stiffness", "oscillation_law"], "thinlayer.contact.oscillation"),
+    "fit_viscoelastic": "thinlayer.contact.visco_fit",
     **dict.fromkeys(["Prony", "StandardLinearSolid", "KelvinVoigt", "PowerLaw"], "thinlayer.contact.materials"),
     "force_arrays": "thinlayer.asymptotics.solution",
     **dict.fromkeys(["solve_2d", "solve_axisymmetric"], "thinlayer.numerics"),

@@ -21,14 +21,15 @@ for such ``F`` they are exact (to rounding):
 * Kelvin-Voigt: ``E F(t_n) + eta r_n`` (the impulse ``eta delta(t)`` as the rate over the step ending at ``t_n``:
   the left derivative of the piecewise-linear ``F``; for a smooth history, first order in the step).
 
-Where the contact shrinks, Lee-Radok does not hold (Ting's method is needed, not in this slice): those times are
+Where the contact shrinks, Lee-Radok does not hold (Ting's method is needed: :func:`thinlayer.contact.ting.ting_force`,
+which ``solve(material=Prony(...), history=...)`` uses for a depth history rising to one maximum): those times are
 flagged and their force is NaN, as is every time after the first shrink.
 """
 from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -42,8 +43,8 @@ from .materials import KelvinVoigt, Material, PowerLaw, Prony
 from .models.base import MODEL_REGISTRY, ForceCurve
 from .problem import Depth, Elastic, Frictionless, Problem
 
-__all__ = ["MAX_NONUNIFORM_POWER", "MAX_STEPS", "ViscoelasticForce", "force_curve_for", "hereditary_integral",
-           "viscoelastic_force"]
+__all__ = ["MAX_NONUNIFORM_POWER", "MAX_STEPS", "ViscoelasticForce", "check_setting", "force_curve_for",
+           "hereditary_integral", "inverse_hereditary", "viscoelastic_depth", "viscoelastic_force"]
 
 #: the most time nodes of a history (measured: 1e6 nodes of a ramp-hold, sphere, 3-term Prony series, in 0.9 s
 #: and 0.12 GB more memory at load 10.9 on 2 cores)
@@ -164,6 +165,170 @@ _EVALUATORS = {Prony: _prony, KelvinVoigt: _kelvin_voigt, PowerLaw: _power_law}
 
 
 # =============================================================================================
+# force control: the hereditary integral inverted by time stepping
+# =============================================================================================
+def _prony_inverse(t: np.ndarray, g: np.ndarray, m: Prony) -> np.ndarray:
+    """``F`` with ``E_inf F_n + sum_i E_i q_i(t_n) = g_n`` (the recursion of :func:`_prony`, solved for ``F_n``)."""
+    E = np.array([e for e, _ in m.terms])
+    tau = np.array([x for _, x in m.terms])
+    F = np.empty_like(g)
+    F[0] = g[0] / m.instantaneous
+    q = E * 0.0 + F[0]  # q_i(t_0) = F_0 (the step)
+    h = np.diff(t)
+    for n in range(1, len(t)):
+        a = np.exp(-h[n - 1] / tau)
+        gi = tau * -np.expm1(-h[n - 1] / tau) / h[n - 1]  # q_i gains r_n h gi
+        qa = a * q
+        # g_n = E_inf F_n + sum E_i (qa_i + (F_n - F_{n-1}) gi)
+        F[n] = (g[n] - E @ qa + F[n - 1] * (E @ gi)) / (m.E_inf + E @ gi)
+        q = qa + (F[n] - F[n - 1]) * gi
+    return F
+
+
+def _kelvin_voigt_inverse(t: np.ndarray, g: np.ndarray, m: KelvinVoigt) -> np.ndarray:
+    """``E F_n + eta (F_n - F_{n-1})/h_n = g_n`` (``F_0 = 0``: the impulse takes a step in force without depth)."""
+    F = np.zeros_like(g)
+    h = np.diff(t)
+    for n in range(1, len(t)):
+        F[n] = (g[n] + m.eta * F[n - 1] / h[n - 1]) / (m.E + m.eta / h[n - 1])
+    return F
+
+
+def _power_inverse(t: np.ndarray, g: np.ndarray, m: PowerLaw) -> np.ndarray:
+    """Product integration of :func:`_power_law` solved step by step for the slopes (``F_0 = 0``: E(0+) = inf)."""
+    if len(t) > MAX_NONUNIFORM_POWER:
+        raise WorkLimitError(f"a power-law force history is inverted in O(N^2): at most {MAX_NONUNIFORM_POWER} "
+                             f"nodes, got {len(t)}; subsample the history")
+    beta = 1.0 - m.alpha
+    c = m.E0 * m.t0**m.alpha / beta
+    r = np.zeros(len(t) - 1)
+    F = np.zeros_like(g)
+    for n in range(1, len(t)):
+        A = t[n] - t[:n]  # t_n - t_{k-1}, k = 1..n
+        B = t[n] - t[1:n + 1]  # t_n - t_k
+        W = c * (A**beta - B**beta)
+        r[n - 1] = (g[n] - W[:-1] @ r[: n - 1]) / W[-1]
+        F[n] = F[n - 1] + r[n - 1] * (t[n] - t[n - 1])
+    return F
+
+
+_INVERSES = {Prony: _prony_inverse, KelvinVoigt: _kelvin_voigt_inverse, PowerLaw: _power_inverse}
+
+
+def inverse_hereditary(material: Material, times: Any, G: Any) -> np.ndarray:
+    r"""``F`` (linear in time between nodes) with ``int_0^t E(t - s) dF(s) = G(t)`` at every node: the exact inverse
+    of :func:`hereditary_integral` on the same grid (time stepping; Prony O(N), power law O(N^2)).
+
+    Under a material with infinite ``E(0+)`` (power law, Kelvin-Voigt) ``F[0] = 0``: a step in force needs no step
+    in ``F``.
+
+    >>> import numpy as np
+    >>> m = Prony(1.0, [(2.0, 0.5)])
+    >>> t = np.linspace(0.0, 2.0, 41)
+    >>> F = inverse_hereditary(m, t, np.ones_like(t))        # creep under a unit step
+    >>> bool(np.allclose(hereditary_integral(m, t, F), 1.0, rtol=1e-13))
+    True
+    """
+    t = np.asarray(times, dtype=float)
+    g = np.asarray(G, dtype=float)
+    if t.ndim != 1 or g.shape != t.shape or t.size == 0:
+        raise InputError(f"times and G must be 1-d arrays of one length, got shapes {t.shape} and {g.shape}")
+    if not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0) or not np.all(np.isfinite(g)):
+        raise InputError("times must be finite and strictly increasing, G finite")
+    invert = _INVERSES.get(type(material))
+    if invert is None:
+        raise InputTypeError(f"material must be Prony, StandardLinearSolid, KelvinVoigt or PowerLaw, got {material!r}")
+    return invert(t, g, material)
+
+
+def _depths_for(curve: ForceCurve, F: np.ndarray, scale: float) -> np.ndarray:
+    """The depths at which the unit-modulus law gives the forces ``F >= 0`` (NaN beyond the law's valid range)."""
+    out = np.zeros_like(F)
+    pos = F > 0
+    if not pos.any():
+        return out
+    top = float(F[pos].max())
+    hi = scale
+    for _ in range(200):  # bracket the largest force (the law is increasing in the depth)
+        fh = float(curve.force(np.array([hi]))[0])
+        if not np.isfinite(fh) or fh >= top:
+            break
+        hi *= 2.0
+    grid = np.geomspace(hi * 1e-9, hi, 4001)
+    fg = curve.force(grid)
+    ok = np.isfinite(fg) & (fg > 0)
+    if ok.sum() < 2:
+        out[pos] = np.nan
+        return out
+    lg, lf = np.log(grid[ok]), np.log(fg[ok])
+    x = np.interp(np.log(F[pos]), lf, lg, left=np.nan, right=np.nan)
+    for _ in range(3):  # Newton steps in log depth on log F(delta) = log F, the slope from the grid
+        y = np.log(curve.force(np.exp(x)))
+        slope = np.interp(x, lg, np.gradient(lf, lg))
+        x = x - (y - np.log(F[pos])) / slope
+    out[pos] = np.exp(x)
+    return out
+
+
+@boundary
+def viscoelastic_depth(layer: LayerKernel, punch: Any, H: Any, material: Material, times: Any, forces: Any, *,
+                       nu: Any = None, tol: float = DEFAULT_TOL, model: str = "auto") -> ViscoelasticForce:
+    r"""The depth and contact radius against time for a **force** history (Lee-Radok inverted; contact must grow).
+
+    ``2 (1 + nu) P(t) = int E(t - s) d/ds F(delta(s)) ds`` is solved for ``F`` by time stepping
+    (:func:`inverse_hereditary`, exact for ``F`` linear in time between nodes), then ``delta = F^{-1}``.  Where
+    ``F`` decreases the contact shrinks and Lee-Radok does not hold: flagged, NaN from there on.
+
+    >>> import numpy as np
+    >>> from thinlayer import BondedLayer, Punch, StandardLinearSolid
+    >>> t = np.linspace(0, 1, 201)
+    >>> out = viscoelastic_depth(BondedLayer(0.5), Punch.paraboloid(10.0), 1.0, StandardLinearSolid(3.0, 1.0, 0.2),
+    ...                          t, np.full_like(t, 5.0))          # creep under a step force
+    >>> bool(out.valid.all()), bool(np.all(np.diff(out.depths) > 0))
+    (True, True)
+    """
+    layer, tip, nu_v, HH = check_setting(layer, punch, H, material, nu, tol, model)
+    for name, v in (("times", times), ("forces", forces)):
+        check_array_size(v, name, MAX_STEPS, "1e6 nodes take ~1 s and 0.12 GB; subsample the history")
+    try:
+        t = np.array(times, dtype=float)
+        P = np.array(forces, dtype=float)
+    except (TypeError, ValueError):
+        raise InputTypeError("times and forces must be sequences of numbers") from None
+    if t.ndim != 1 or P.shape != t.shape or t.size < 1:
+        raise InputError(f"times and forces must be 1-d and of one length, got shapes {t.shape} and {P.shape}")
+    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(P))):
+        raise InputError("times and forces must be finite (no nan or inf)")
+    if np.any(np.diff(t) <= 0):
+        raise InputError("times must be strictly increasing")
+    if np.any(P < 0):
+        raise InputError("forces must be >= 0 (compressive positive; a punch cannot pull without adhesion)")
+    F = inverse_hereditary(material, t, 2.0 * (1.0 + nu_v) * P)
+    scale = float(getattr(tip, "sphere_radius", None) or HH) * 1e-3
+    probe = force_curve_for(layer, tip, HH, nu_v, float(tol), np.array([scale]), model)
+    d = _depths_for(probe, np.maximum(F, 0.0), scale)
+    c = probe.contact_radius(np.where(np.isfinite(d), d, 0.0))
+    shrink = np.concatenate([[False], np.diff(F) < -1e-12 * np.maximum(np.abs(F[1:]), 1e-300)])
+    after = np.logical_or.accumulate(shrink)
+    bad_law = np.logical_or.accumulate(~np.isfinite(d) | ~np.isfinite(c))
+    valid = ~(after | bad_law)
+    reasons = []
+    if after.any():
+        reasons.append(f"the contact shrinks from t = {t[np.argmax(after)]:.6g} on (F(delta) decreases): Lee-Radok "
+                       "holds only for a growing contact; Ting's method is needed (not for a force history in this "
+                       "release)")
+    if bad_law.any():
+        reasons.append(f"the {probe.model} law has no depth within tol = {tol:.3g} for the force at t = "
+                       f"{t[np.argmax(bad_law)]:.6g}; from there the history is unknown")
+    depth = np.where(valid, d, np.nan)
+    radius = np.where(valid, c, np.nan)
+    for a in (t, P, depth, radius, valid):
+        a.setflags(write=False)
+    return ViscoelasticForce(t, depth, P, radius, valid, "; ".join(reasons) or "Lee-Radok: the contact grows",
+                             probe.model, material, nu_v, HH, control="force", tol=float(tol))
+
+
+# =============================================================================================
 # the front door
 # =============================================================================================
 @dataclass(frozen=True, eq=False)
@@ -184,10 +349,30 @@ class ViscoelasticForce:
     material: Material
     nu: float
     H: float
+    #: ``"depth"`` (the depths were given, the force computed) or ``"force"`` (the reverse)
+    control: str = "depth"
+    tol: float = DEFAULT_TOL
+    entry: Any = field(default=None, repr=False, compare=False)
 
     def latex(self) -> str:
         return (r"P(t) = \frac{1}{2(1+\nu)}\int_0^t E(t-s)\,\frac{d}{ds}F\big(\delta(s)\big)\,ds,\quad "
                 + self.material.latex() + rf",\ \nu = {self.nu:.4g}\ \text{{({self.model})}}")
+
+    def as_dict(self) -> dict:
+        """Plain lists and numbers for JSON (NaN where not valid becomes None)."""
+        def col(a: np.ndarray) -> list:
+            return [float(x) if np.isfinite(x) else None for x in a]
+
+        return {"control": self.control, "model": self.model, "nu": self.nu, "H": self.H,
+                "material": self.material.latex(), "reason": self.reason, "times": col(self.times),
+                "depths": col(self.depths), "force": col(self.force), "contact_radius": col(self.contact_radius),
+                "valid": [bool(v) for v in self.valid]}
+
+    def to_json(self) -> str:
+        """The history as JSON (strict: no NaN)."""
+        import json
+
+        return json.dumps(self.as_dict(), allow_nan=False)
 
     def __repr__(self) -> str:
         n_bad = int((~self.valid).sum())
@@ -196,8 +381,10 @@ class ViscoelasticForce:
 
     def __str__(self) -> str:
         n_bad = int((~self.valid).sum())
+        top = (f"force up to {np.nanmax(self.force, initial=0.0):.6g}" if self.control == "depth" else
+               f"depth up to {np.nanmax(np.where(self.valid, self.depths, np.nan), initial=0.0):.6g} (force given)")
         return (f"ViscoelasticForce ({self.model} law, {len(self.times)} times, nu = {self.nu:.4g}, H = {self.H:.6g}): "
-                f"force up to {np.nanmax(self.force, initial=0.0):.6g}"
+                + top
                 + (f"; {n_bad} times NOT VALID: {self.reason}" if n_bad else ""))
 
 
@@ -237,6 +424,32 @@ def force_curve_for(layer: LayerKernel, tip: Any, H: float, nu: float, tol: floa
     return best
 
 
+def check_setting(layer: Any, punch: Any, H: Any, material: Any, nu: Any, tol: Any,
+                  model: Any) -> tuple[LayerKernel, Any, float, float]:
+    """``(layer, tip, nu, H)`` checked for a viscoelastic answer (one-line refusals naming the input)."""
+    if not isinstance(layer, LayerKernel) or not layer.on_rigid_base or not layer.has_thickness:
+        raise InputTypeError(f"layer must be BondedLayer(nu) or FrictionlessLayer(nu), got {layer!r}")
+    if not isinstance(material, Material):
+        raise InputTypeError(f"material must be Prony(...), StandardLinearSolid(...), KelvinVoigt(...) or "
+                             f"PowerLaw(...), got {material!r}")
+    nu_v = float(parse_nu(layer.poisson_ratio(nu), floats="float", upper_closed=True, symbols=False,
+                          example="0.3, '3/10' or 0.5"))
+    HH = positive(H, "H")
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not tol > 0:
+        raise InputError(f"tol must be a positive number (the elastic law's largest relative error), got {tol!r}")
+    names = ("auto", *dict.fromkeys(m.name for m in MODEL_REGISTRY if m.solves and not m.adhesive
+                                    and not getattr(m, "viscoelastic", False)))
+    if not isinstance(model, str) or model not in names:
+        raise InputError(f"model must be one of {', '.join(names)}; got {model!r}")
+    if isinstance(punch, Tip) and not is_polynomial_tip(punch):
+        tip = punch
+    else:
+        tip = numeric_punch(punch, {})
+    if layer.numeric_nu is None or layer.incompressible_at(nu_v):
+        layer = layer.with_nu(nu_v)
+    return layer, tip, nu_v, HH
+
+
 @boundary
 def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Material, times: Any, depths: Any, *,
                        nu: Any = None, tol: float = DEFAULT_TOL, model: str = "auto") -> ViscoelasticForce:
@@ -271,19 +484,7 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
     >>> bool(out.valid.all()), out.model
     (True, 'any-thickness')
     """
-    if not isinstance(layer, LayerKernel) or not layer.on_rigid_base or not layer.has_thickness:
-        raise InputTypeError(f"layer must be BondedLayer(nu) or FrictionlessLayer(nu), got {layer!r}")
-    if not isinstance(material, Material):
-        raise InputTypeError(f"material must be Prony(...), StandardLinearSolid(...), KelvinVoigt(...) or "
-                             f"PowerLaw(...), got {material!r}")
-    nu_v = float(parse_nu(layer.poisson_ratio(nu), floats="float", upper_closed=True, symbols=False,
-                          example="0.3, '3/10' or 0.5"))
-    HH = positive(H, "H")
-    if isinstance(tol, bool) or not isinstance(tol, numbers.Real) or not tol > 0:
-        raise InputError(f"tol must be a positive number (the elastic law's largest relative error), got {tol!r}")
-    names = ("auto", *dict.fromkeys(m.name for m in MODEL_REGISTRY if m.solves and not m.adhesive))
-    if not isinstance(model, str) or model not in names:
-        raise InputError(f"model must be one of {', '.join(names)}; got {model!r}")
+    layer, tip, nu_v, HH = check_setting(layer, punch, H, material, nu, tol, model)
     for name, v in (("times", times), ("depths", depths)):
         check_array_size(v, name, MAX_STEPS, "1e6 nodes take ~1 s and 0.12 GB; subsample the history")
         if not isinstance(v, (list, tuple, np.ndarray)) and hasattr(v, "__len__"):  # a range: counted too
@@ -300,12 +501,6 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
         raise InputError("times and depths must be finite (no nan or inf)")
     if np.any(np.diff(t) <= 0):
         raise InputError("times must be strictly increasing")
-    if isinstance(punch, Tip) and not is_polynomial_tip(punch):
-        tip = punch
-    else:
-        tip = numeric_punch(punch, {})
-    if layer.numeric_nu is None or layer.incompressible_at(nu_v):
-        layer = layer.with_nu(nu_v)
     curve = force_curve_for(layer, tip, HH, nu_v, float(tol), d, model)
     u, inv = np.unique(d, return_inverse=True)  # each depth once (a hold repeats one depth)
     F = curve.force(u)[inv]
@@ -323,7 +518,8 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
     reasons = []
     if after.any():
         reasons.append(f"the contact shrinks from t = {t[np.argmax(after)]:.6g} on: Lee-Radok holds only for a "
-                       "growing contact; Ting's method is needed (not in this release)")
+                       "growing contact; Ting's method is needed (solve(material=Prony(...), history=(t, depths)) uses "
+                       "it for a depth rising to one maximum; not for a power law or Kelvin-Voigt in this release)")
     if tension.any():
         reasons.append(f"the force would be negative (the punch lifts off) from t = {t[np.argmax(tension)]:.6g}")
     if infinite.any():
@@ -338,4 +534,4 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
     for a in (t, d, force, radius, valid):
         a.setflags(write=False)
     return ViscoelasticForce(t, d, force, radius, valid, "; ".join(reasons) or "Lee-Radok: the contact grows",
-                             curve.model, material, nu_v, HH)
+                             curve.model, material, nu_v, HH, tol=float(tol))

@@ -4,9 +4,11 @@ r"""The question a model answers: layer + tip + material + interaction + loading
 registry (:mod:`thinlayer.contact.models`) reads it and nothing else.  Each part has one class today and a
 role that another class can fill later without touching the models that do not care:
 
-* material: :class:`Elastic` (``mu``, ``nu``; ``E = 2 mu (1 + nu)``); a viscoelastic material is another class;
+* material: :class:`Elastic` (``mu``, ``nu``; ``E = 2 mu (1 + nu)``) or :class:`Viscoelastic` (``E(t)`` at a
+  constant ``nu``: the viscoelastic rows answer it, :mod:`thinlayer.contact.models.viscoelastic`);
 * interaction: :class:`Frictionless` (frictionless, non-adhesive); adhesion is another class;
-* loading: :class:`Depth` (the depth ``delta0`` (1.5) is given) or :class:`Force` (the total force (1.8) is given).
+* loading: :class:`Depth` (the depth ``delta0`` (1.5) is given) or :class:`Force` (the total force (1.8) is given),
+  or a :class:`History` of either against time (viscoelastic problems).
 """
 from __future__ import annotations
 
@@ -17,7 +19,8 @@ from typing import Any, ClassVar
 
 from .._checks import InputError, InputTypeError, positive
 
-__all__ = ["Adhesive", "Depth", "ELASTIC_HINT", "Elastic", "Force", "Frictionless", "Problem"]
+__all__ = ["Adhesive", "Depth", "ELASTIC_HINT", "Elastic", "Force", "Frictionless", "History", "Problem",
+           "Viscoelastic"]
 
 ELASTIC_HINT = "give exactly one of mu= (shear modulus) or E= (Young's modulus), with the Poisson ratio nu"
 
@@ -28,6 +31,7 @@ class Elastic:
 
     mu: float
     nu: float
+    viscoelastic: ClassVar[bool] = False
 
     @property
     def E(self) -> float:  # noqa: N802 - Young's modulus is E
@@ -45,6 +49,24 @@ class Elastic:
         if not (math.isfinite(mm) and mm > 0):
             raise InputError(f"E = {E!r} gives the shear modulus mu = E/(2(1 + nu)) = {mm!r}: out of the double range")
         return cls(mm, float(nu))
+
+
+@dataclass(frozen=True)
+class Viscoelastic:
+    """A linear viscoelastic material: Young's relaxation modulus ``E(t)`` (``relaxation``, a
+    :class:`~thinlayer.contact.materials.Material`) at a constant Poisson ratio ``nu`` (issue 27 item 1).
+    It has no single shear modulus: ``mu`` is NaN (only the viscoelastic rows read this material).
+    """
+
+    relaxation: Any
+    nu: float
+    #: the elastic law at unit modulus the correspondence uses (``"auto"``: the first valid over the history)
+    law: str = "auto"
+    viscoelastic: ClassVar[bool] = True
+
+    @property
+    def mu(self) -> float:
+        return math.nan
 
 
 @dataclass(frozen=True)
@@ -80,6 +102,15 @@ class Force:
 
 
 @dataclass(frozen=True, eq=False)
+class History:
+    """Loading by a history against time: ``values`` are depths (``control="depth"``) or forces (``"force"``)."""
+
+    times: Any
+    values: Any
+    control: str = "depth"
+
+
+@dataclass(frozen=True, eq=False)
 class Problem:
     """One contact problem, validated: what every model of :mod:`thinlayer.contact.models` reads.
 
@@ -103,9 +134,9 @@ class Problem:
 
     layer: Any
     tip: Any
-    material: Elastic
+    material: Elastic | Viscoelastic
     interaction: Frictionless | Adhesive
-    loading: Depth | Force
+    loading: Depth | Force | History
     H: float
     tol: float
     n: int | None = None

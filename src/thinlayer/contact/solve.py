@@ -51,7 +51,7 @@ from .indentation import DirectComparison, Indentation
 from .indentation import tex_num as _tex_num  # noqa: F401 - the name tests and older callers import from here
 from .models import MODEL_REGISTRY, model_names, walk
 from .models.direct import MAX_CELLS_2D  # noqa: F401 - kept importable from here
-from .problem import ELASTIC_HINT, Adhesive, Depth, Elastic, Force, Frictionless, Problem
+from .problem import ELASTIC_HINT, Adhesive, Depth, Elastic, Force, Frictionless, History, Problem, Viscoelastic
 
 __all__ = ["Indentation", "DirectComparison", "MODELS", "solve", "ELASTIC_HINT"]
 
@@ -66,7 +66,8 @@ MODELS = model_names()
 def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu: Any = None, *, E: Any = None,
           force: Any = None, nu: Any = None, model: str = "auto", tol: Any = DEFAULT_TOL,
           parameters: dict | None = None, n: int | None = None, work_of_adhesion: Any = None,
-          branch: str = "stable", **options: Any) -> Indentation:
+          branch: str = "stable", material: Any = None, history: Any = None, control: str = "depth",
+          **options: Any) -> Indentation:
     r"""Force, contact size and pressure of a rigid punch pressed into a layer, by the model that holds.
 
     Parameters
@@ -103,6 +104,14 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         ``pull_off``); models ``"thin-layer-jkr"`` (J.11)/(J.15) and ``"direct"`` (J.1)-(J.6), (J.13).
     branch : str
         With adhesion: ``"stable"`` (default) or ``"unstable"`` state of the JKR curve.
+    material, history, control
+        A viscoelastic layer (issue 27): ``material`` a :class:`~thinlayer.contact.materials.Prony`,
+        ``StandardLinearSolid``, ``KelvinVoigt`` or ``PowerLaw`` (Young's ``E(t)``, ``nu`` constant) instead of
+        ``mu``/``E``, and ``history=(times, values)`` instead of ``delta0``/``force``: depths (``control="depth"``)
+        or forces (``control="force"``).  The answer is a
+        :class:`~thinlayer.contact.hereditary.ViscoelasticForce` (force, depth and contact radius against time,
+        ``valid`` and ``reason``) from the registry's viscoelastic row (:mod:`thinlayer.contact.models.viscoelastic`);
+        ``model`` then names the elastic law at unit modulus (``"auto"``: the first valid over the history).
     options
         For the compressible model: ``order``, ``terms``, ``boundary_layer``
         (:func:`thinlayer.asymptotics.solution.compressible_solution`).
@@ -143,6 +152,14 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     True
     """
     layer, nu_v = _check_model_layer(layer, nu)
+    if material is not None or history is not None:
+        given = [k for k, v in (("delta0", delta0), ("force", force), ("mu", mu), ("E", E),
+                                ("work_of_adhesion", work_of_adhesion), ("n", n)) if v is not None]
+        extra = ", ".join(given + sorted(options) + (["parameters"] if parameters else []))
+        if extra:
+            raise InputTypeError(f"solve(material=..., history=...) takes the modulus from the material and the "
+                                 f"loading from the history: leave out {extra}")
+        return walk(_viscoelastic_problem(layer, punch, H, nu_v, material, history, control, model, tol), "auto")
     material = Elastic.from_moduli(mu, E, nu_v)
     adhesive = work_of_adhesion is not None
     choice = check_choice(model, adhesive_model_names() if adhesive else model_names(), "model")
@@ -185,6 +202,26 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         ans = walk(Problem(layer, tip, material, Frictionless(), loading, HH, tol_v, n, dict(options)), choice)
     flags = regime_flags(ans.delta0, HH, getattr(tip, "sphere_radius", None))
     return dataclasses.replace(ans, flags=flags) if flags else ans
+
+
+def _viscoelastic_problem(layer: LayerKernel, punch: Any, H: Any, nu: float, material: Any, history: Any,
+                          control: Any, model: Any, tol: Any) -> Problem:
+    """The viscoelastic problem of ``solve(material=..., history=(times, values), control=...)``."""
+    if material is None or history is None:
+        raise InputTypeError("solve(): a viscoelastic answer needs both material=Prony(...)|PowerLaw(...)|... and "
+                             "history=(times, depths) (or forces with control='force')")
+    if isinstance(history, (str, bytes)) or not isinstance(history, (tuple, list)) or len(history) != 2:
+        raise InputTypeError(f"history must be a pair (times, values), got {type(history).__name__}")
+    kind = check_choice(control, ("depth", "force"), "control")
+    if half_space(H):
+        raise InputError("solve(material=...) answers for a layer of finite thickness H")
+    if not isinstance(model, str):
+        raise InputError(f"model must be a string naming the elastic law (or 'auto'), got {model!r}")
+    tip = punch if isinstance(punch, Tip) and not is_polynomial_tip(punch) else numeric_punch(punch, {})
+    if layer.numeric_nu is None or layer.incompressible_at(nu):
+        layer = layer.with_nu(nu)
+    return Problem(layer, tip, Viscoelastic(material, nu, law=model), Frictionless(), History(*history, kind),
+                   positive(H, "H"), _tol(tol))
 
 
 def _check_model_layer(layer: Any, nu: Any) -> tuple[LayerKernel, float]:

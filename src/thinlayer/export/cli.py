@@ -620,6 +620,9 @@ def build_parser() -> argparse.ArgumentParser:
     add_fit_parser(sub, fmt)
     add_flat_parser(sub, fmt)
     add_map_parser(sub, fmt)
+    from .visco_cli import add_visco_parser
+
+    add_visco_parser(sub, fmt)
     return ap
 
 

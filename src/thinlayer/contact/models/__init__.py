@@ -18,6 +18,7 @@ from . import (  # noqa: F401,E501 - they register
     pyramid_thick,
     tip_law,
     two_term,
+    viscoelastic,
 )
 from .base import (
     MODEL_REGISTRY,

@@ -175,6 +175,8 @@ class Model(ABC):
     declines: ClassVar[tuple[type[BaseException], ...]] = ()
     #: True: an adhesive (JKR) entry, offered only problems with a work of adhesion (and those only such entries)
     adhesive: ClassVar[bool] = False
+    #: True: a viscoelastic entry, offered only problems with a viscoelastic material (and those only such entries)
+    viscoelastic: ClassVar[bool] = False
 
     def refuses(self, problem: Problem) -> str | None:
         """None, or why this model is not one for this kind of problem at all (an InputError when named)."""
@@ -275,7 +277,7 @@ def model_names() -> tuple[str, ...]:
     """``solve()``'s choices of ``model``: ``"auto"``, ``"asymptotic"``, then the public names by preference."""
     out = ["auto", "asymptotic"]
     for m in MODEL_REGISTRY:
-        if m.solves and m.selectable and m.name not in out and not m.adhesive:
+        if m.solves and m.selectable and m.name not in out and not m.adhesive and not m.viscoelastic:
             out.append(m.name)
     return tuple(out)
 

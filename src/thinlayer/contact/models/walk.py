@@ -107,7 +107,8 @@ def walk(problem: Problem, choice: str) -> Any:
     tried: list[str] = []
     guess = None
     for entry in list(MODEL_REGISTRY):
-        if not entry.solves or entry.adhesive != problem.interaction.adhesive or entry.skips(problem) \
+        if not entry.solves or entry.adhesive != problem.interaction.adhesive \
+                or entry.viscoelastic != problem.material.viscoelastic or entry.skips(problem) \
                 or (choice == "asymptotic" and not entry.asymptotic):
             continue
         if entry.asymptotic:
