@@ -117,9 +117,22 @@ _STUDY: list = []
 
 @contextlib.contextmanager
 def quick_validation() -> Iterator[None]:
-    """``validation_study`` answers at once with one small study computed once (the files are what is tested)."""
+    """``validation_study`` answers at once with one small study computed once, and figures are saved as a few
+    bytes of their format instead of being drawn (the files are what is tested, as with :data:`FAKE_PDFLATEX`;
+    drawing the validation figures took ~7 s of CPU per run; tests/validation/test_study_plots.py checks them)."""
+    import matplotlib.figure
+
     import thinlayer.validation as v
     import thinlayer.validation.runner as runner
+
+    real_savefig = matplotlib.figure.Figure.savefig
+
+    def fake_savefig(self, fname, *args, format=None, **kw):  # noqa: A002 - matplotlib's keyword
+        data = b"%PDF-1.4\n% fake figure\n" if format == "pdf" else b"\x89PNG\r\n\x1a\n fake figure\n"
+        if hasattr(fname, "write"):
+            fname.write(data)
+        else:
+            Path(fname).write_bytes(data)
 
     real = runner.validation_study
     if not _STUDY:
@@ -132,9 +145,11 @@ def quick_validation() -> Iterator[None]:
     old = vars(v).get("validation_study")
     runner.validation_study = quick
     v.validation_study = quick
+    matplotlib.figure.Figure.savefig = fake_savefig
     try:
         yield
     finally:
+        matplotlib.figure.Figure.savefig = real_savefig
         runner.validation_study = real
         if had:
             v.validation_study = old

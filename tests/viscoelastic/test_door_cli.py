@@ -1,7 +1,7 @@
 """``thinlayer visco solve|fit|oscillation`` (issue 27 item 4), run in-process through ``thinlayer.export.cli.main``.
 
 The numbers are compared with the library doors they print (tested against independent references in
-test_door_solve.py, test_door_fit.py, test_door_oscillation.py); here: the files read, the formats, the exit codes.
+test_door_solve.py, test_visco_fit.py, test_door_oscillation.py); here: the files read, the formats, the exit codes.
 """
 from __future__ import annotations
 
