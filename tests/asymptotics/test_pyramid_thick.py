@@ -133,3 +133,14 @@ def test_solve_auto_answers_thick_pyramids_and_declines_beyond():
     assert law.estimate(0.7) == (math.inf, math.inf)
     with pytest.raises(tl.InputError, match="Punch.pyramid"):
         pt.pyramid_thick_law(tl.BondedLayer(0.3), tl.Punch.cone(70))
+
+
+def test_beyond_the_series_range_the_law_declines_to_the_direct_solver():
+    """chi = 3, where the series (T.12) gives a negative force: the law declines ("above tol", the direct solver
+    next), never "express the lengths in other units" (tests/test_tip_acceptance.py's cell pyramid35-bonded-chi3
+    stopped there before)."""
+    tip = tl.Punch.pyramid(35, 4)
+    t = math.tan(math.radians(35))
+    with pytest.raises(tl.ValidityError, match="above tol") as info:
+        tl.solve(tl.BondedLayer(0.3), tip, delta0=0.5, H=0.5 * t / 3, mu=1.0, model="any-thickness")
+    assert "other units" not in str(info.value)

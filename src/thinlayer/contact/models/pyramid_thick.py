@@ -61,14 +61,16 @@ class PyramidThickModel(Model):
         except InputError as exc:
             raise ValidityError(f"solve(): any-thickness: {exc}", "force", math.inf, tol, "direct") from None
         est = {"force": v.force_error, "contact_area": v.area_error}
-        if not (0 < v.force < math.inf and 0 < v.contact_area < math.inf):  # the law holds; its numbers do not
-            raise ValidityError(f"solve(): any-thickness: the pyramid's force {v.force:.3g} or contact area "
-                                f"{v.contact_area:.3g} leaves the double range at chi = {v.chi:.3g}; express the "
-                                "lengths and the moduli in other units", "force", v.force_error, tol, "other units")
+        # the estimate first: beyond the series' range (a negative or infinite force) the law does not hold, and
+        # model='auto' goes on to the direct solver; only a law that holds reports numbers outside the double range
         if not max(est.values()) <= tol:
             raise ValidityError(f"solve(): any-thickness: the pyramid's thick-layer series (T.12) estimates force "
                                 f"{v.force_error:.3g}, contact area {v.area_error:.3g} at chi = delta0 tan(alpha)/H = "
                                 f"{v.chi:.3g}, above tol = {tol:.3g}", "force", v.force_error, tol, "direct")
+        if not (0 < v.force < math.inf and 0 < v.contact_area < math.inf):  # the law holds; its numbers do not
+            raise ValidityError(f"solve(): any-thickness: the pyramid's force {v.force:.3g} or contact area "
+                                f"{v.contact_area:.3g} leaves the double range at chi = {v.chi:.3g}; express the "
+                                "lengths and the moduli in other units", "force", v.force_error, tol, "other units")
         tip, d0 = problem.tip, v.delta0
         force = v.force if problem.force is None else problem.force
         scale = force / v.contact_area  # the mean pressure; the law gives no pressure field beyond it
