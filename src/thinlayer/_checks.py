@@ -115,6 +115,34 @@ def positive(value: Any, name: str) -> float:
     return v
 
 
+def work_of_adhesion(value: Any) -> float:
+    """A work of adhesion: a finite number >= 0, as a float (the adhesion stages and solvers, (J.1)).
+
+    >>> work_of_adhesion(0.5)
+    0.5
+    """
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}") from None
+    if not (math.isfinite(v) and v >= 0):
+        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}")
+    return v
+
+
+def positive_radii(radius: Any) -> Any:
+    """Contact radii: a finite positive number or array, as a float numpy array."""
+    import numpy as np
+
+    try:
+        a = np.asarray(radius, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"radius must be a positive number or array, got {radius!r}") from None
+    if not np.all(np.isfinite(a)) or np.any(a <= 0):
+        raise InputError("radius must be finite and > 0")
+    return a
+
+
 def check_choice(value: str, allowed: tuple[str, ...], name: str) -> str:
     """One of a fixed set of strings."""
     if value not in allowed:

@@ -109,7 +109,8 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from .._checks import InputError, check_choice, positive
+from .._checks import InputError, check_choice, positive, positive_radii
+from .._checks import work_of_adhesion as check_work
 from ..display import RichDisplay
 from ..layers.kernels import BondedLayer, GenericLayer, IncompressibleLayer
 from ..punch import Punch
@@ -129,26 +130,6 @@ h = sp.Symbol("h^*", real=True)
 p_e, p_s = sp.symbols("p_e p_s", real=True)
 vt, H, delta = S.vartheta, S.H, S.delta0
 _H, _R = H, R  # the symbols, for methods whose arguments are named H and R
-
-
-def _radii(radius: Any) -> np.ndarray:
-    try:
-        a = np.asarray(radius, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(f"radius must be a positive number or array, got {radius!r}") from None
-    if not np.all(np.isfinite(a)) or np.any(a <= 0):
-        raise InputError("radius must be finite and > 0")
-    return a
-
-
-def _work(value: Any) -> float:
-    try:
-        wv = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}") from None
-    if not (math.isfinite(wv) and wv >= 0):
-        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}")
-    return wv
 
 
 # --------------------------------------------------------------------------- (J.7) the half-space
@@ -392,8 +373,9 @@ class ThinLayerJKR(RichDisplay):
                                                                                                      np.ndarray]:
         """``(delta, P)`` of (J.11), vectorised in the contact radius; ``vartheta = mu/(1 - nu)``."""
         fd, fP = _compiled(self.order, self.A, self.h)
-        cv = _radii(radius)
-        vals = (cv, positive(H, "H"), positive(R, "R"), _work(work_of_adhesion), positive(mu, "mu") / (1 - self.nu))
+        cv = positive_radii(radius)
+        vals = (cv, positive(H, "H"), positive(R, "R"), check_work(work_of_adhesion),
+                positive(mu, "mu") / (1 - self.nu))
         return np.asarray(fd(*vals), dtype=float), np.asarray(fP(*vals), dtype=float)
 
     def error_estimate(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any,
@@ -408,7 +390,7 @@ class ThinLayerJKR(RichDisplay):
         At ``nu = 1/2`` (J.15) the order-1 factor is doubled (measured: the true error tends to 0.5 of the estimate;
         ``R = c^2/(8H)``, ``w = 0.05 vartheta c^2/H``, c/H = 5 ... 40).
         """
-        cv = _radii(radius)
+        cv = positive_radii(radius)
         Hv, Rv = positive(H, "H"), positive(R, "R")
         other = thin_layer_jkr(self.nu, 1 - self.order)
         d_a, P_a = self.evaluate(cv, Hv, Rv, work_of_adhesion, mu)
@@ -623,8 +605,8 @@ class ThinFlatDetachment(RichDisplay):
 
     def __call__(self, radius: Any, H: Any, work_of_adhesion: Any, mu: Any = 1.0) -> np.ndarray:
         """``P_off`` (a magnitude), vectorised in the radius."""
-        a = _radii(radius)
-        Hv, wv = positive(H, "H"), _work(work_of_adhesion)
+        a = positive_radii(radius)
+        Hv, wv = positive(H, "H"), check_work(work_of_adhesion)
         vtv = positive(mu, "mu") / (1 - self.nu)
         return np.asarray(_flat_compiled(self.force, self.A, self.h)(a, Hv, wv, vtv), dtype=float)
 

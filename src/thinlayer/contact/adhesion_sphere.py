@@ -56,7 +56,8 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import InputError, positive
+from .._checks import InputError, positive, positive_radii
+from .._checks import work_of_adhesion as check_work
 from .._lazy import lazy_function
 from ..display import RichDisplay
 from .any_thickness import any_thickness_law
@@ -257,7 +258,7 @@ class AnyThicknessJKR(RichDisplay):
 
     def smooth(self, radius: Any, H: Any, R: Any, mu: Any = 1.0) -> tuple[np.ndarray, ...]:
         """``(delta_1, P_1, err delta_1, err P_1)``: the non-adhesive sphere at contact radius ``c`` (J.16), (J.18)."""
-        c = _radii(radius)
+        c = positive_radii(radius)
         Hv, Rv, vt = positive(H, "H"), positive(R, "R"), positive(mu, "mu") / (1.0 - self.nu)
         law = self._law
         chi = self._chi_of_radius(c / Hv)
@@ -275,8 +276,8 @@ class AnyThicknessJKR(RichDisplay):
 
     def states(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> JKRStates:
         """The JKR states at the contact radii ``c`` (J.16)-(J.18), vectorised."""
-        c = np.atleast_1d(_radii(radius))
-        Hv, wv, vt = positive(H, "H"), _work(work_of_adhesion), positive(mu, "mu") / (1.0 - self.nu)
+        c = np.atleast_1d(positive_radii(radius))
+        Hv, wv, vt = positive(H, "H"), check_work(work_of_adhesion), positive(mu, "mu") / (1.0 - self.nu)
         d1, P1, ed1, eP1 = self.smooth(c, Hv, R, mu)
         kappa, g, ek, eg, models = flat_release_factor(self.layer, c / Hv)
         d = -np.sqrt(math.pi * c * wv / (vt * g))  # (J.17): G = w, tensile root
@@ -370,26 +371,6 @@ def _grid(nu: float, base: str) -> tuple[np.ndarray, np.ndarray]:
     for a in (lg, sl):
         a.setflags(write=False)
     return lg, sl
-
-
-def _radii(radius: Any) -> np.ndarray:
-    try:
-        a = np.asarray(radius, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(f"radius must be a positive number or array, got {radius!r}") from None
-    if not np.all(np.isfinite(a)) or np.any(a <= 0):
-        raise InputError("radius must be finite and > 0")
-    return a
-
-
-def _work(value: Any) -> float:
-    try:
-        wv = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}") from None
-    if not (math.isfinite(wv) and wv >= 0):
-        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {value!r}")
-    return wv
 
 
 def any_thickness_jkr(layer: Any, nu: Any = None) -> AnyThicknessJKR:

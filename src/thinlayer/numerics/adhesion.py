@@ -75,6 +75,7 @@ from typing import Any
 import numpy as np
 
 from .._checks import InputError, positive
+from .._checks import work_of_adhesion as check_work
 from .._lazy import lazy_module
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
@@ -207,16 +208,6 @@ def _material(layer: Any, H: Any, mu: Any, nu: Any) -> tuple[LayerKernel, float 
     return layer, None, mu_val, nu_val
 
 
-def _work(w: Any) -> float:
-    try:
-        val = float(w)
-    except (TypeError, ValueError):
-        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {w!r}") from None
-    if not math.isfinite(val) or val < 0:
-        raise InputError(f"work_of_adhesion must be a finite number >= 0, got {w!r}")
-    return val
-
-
 def adhesive_state(layer: LayerKernel, punch: Any, radius: float, H: float | None = None, mu: float = 1.0, *,
                    work_of_adhesion: float | None = None, delta: float | None = None, nu: float | None = None,
                    n: int | None = None, energy_route: bool = True) -> AdhesiveState:
@@ -271,7 +262,7 @@ def adhesive_state(layer: LayerKernel, punch: Any, radius: float, H: float | Non
                                 else nu_val)
     kappa, f1sq, dg, kerr = flat_release_rate_factor(layer, lam, energy_route)
     if work_of_adhesion is not None:
-        w = _work(work_of_adhesion)
+        w = check_work(work_of_adhesion)
         d = -math.sqrt(math.pi * c * w / vt / f1sq)  # (J.5)
     else:
         try:
@@ -397,7 +388,7 @@ def jkr_curve(layer: LayerKernel, punch: Any, radii: Any, H: float | None = None
     if c.ndim != 1 or c.size < 3 or c.size > 400 or not np.all(np.isfinite(c)) or np.any(c <= 0) \
             or np.any(np.diff(c) <= 0):
         raise InputError("radii must be 3 to 400 increasing positive contact radii")
-    w = _work(work_of_adhesion)
+    w = check_work(work_of_adhesion)
 
     def state(ci: float) -> AdhesiveState:
         return adhesive_state(layer, punch, float(ci), H, mu, work_of_adhesion=w, nu=nu, n=n)
@@ -496,7 +487,7 @@ def flat_punch_detachment(layer: LayerKernel, radius: float, H: float | None = N
     """
     layer, H_val, mu_val, nu_val = _material(layer, H, mu, nu)
     a = positive(radius, "radius")
-    wv = _work(work_of_adhesion)
+    wv = check_work(work_of_adhesion)
     vt = mu_val / (1.0 - nu_val)
     kappa, f1sq, dg, kerr = flat_release_rate_factor(layer, a / H_val if H_val is not None else 1.0)
     d = -math.sqrt(math.pi * a * wv / vt / f1sq)
