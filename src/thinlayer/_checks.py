@@ -143,6 +143,28 @@ def positive_radii(radius: Any) -> Any:
     return a
 
 
+def check_history(times: Any, values: Any, name: str, min_size: int = 1) -> tuple[Any, Any]:
+    """A load history: ``times`` strictly increasing and ``values`` (``name``: depths, forces), finite, 1-d, of one
+    length (at least ``min_size``), as new float numpy arrays (the hereditary laws and the time-stepping solver).
+    """
+    import numpy as np
+
+    try:
+        t = np.array(times, dtype=float)
+        v = np.array(values, dtype=float)
+    except (TypeError, ValueError):
+        raise InputTypeError(f"times and {name} must be sequences of numbers") from None
+    if t.ndim != 1 or v.shape != t.shape or t.size < min_size:
+        length = "of one length" if min_size <= 1 else f"of one length >= {min_size}"
+        sep = " and " if min_size <= 1 else ", "
+        raise InputError(f"times and {name} must be 1-d{sep}{length}, got shapes {t.shape} and {v.shape}")
+    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(v))):
+        raise InputError(f"times and {name} must be finite (no nan or inf)")
+    if np.any(np.diff(t) <= 0):
+        raise InputError("times must be strictly increasing")
+    return t, v
+
+
 def check_choice(value: str, allowed: tuple[str, ...], name: str) -> str:
     """One of a fixed set of strings."""
     if value not in allowed:

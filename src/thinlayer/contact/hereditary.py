@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import check_array_size, check_bounded, parse_nu, positive
+from .._checks import check_array_size, check_bounded, check_history, parse_nu, positive
 from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import InputError, InputTypeError, WorkLimitError, boundary
 from ..layers.kernels import LayerKernel
@@ -290,17 +290,7 @@ def viscoelastic_depth(layer: LayerKernel, punch: Any, H: Any, material: Materia
     layer, tip, nu_v, HH = check_setting(layer, punch, H, material, nu, tol, model)
     for name, v in (("times", times), ("forces", forces)):
         check_array_size(v, name, MAX_STEPS, "1e6 nodes take ~1 s and 0.12 GB; subsample the history")
-    try:
-        t = np.array(times, dtype=float)
-        P = np.array(forces, dtype=float)
-    except (TypeError, ValueError):
-        raise InputTypeError("times and forces must be sequences of numbers") from None
-    if t.ndim != 1 or P.shape != t.shape or t.size < 1:
-        raise InputError(f"times and forces must be 1-d and of one length, got shapes {t.shape} and {P.shape}")
-    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(P))):
-        raise InputError("times and forces must be finite (no nan or inf)")
-    if np.any(np.diff(t) <= 0):
-        raise InputError("times must be strictly increasing")
+    t, P = check_history(times, forces, "forces")
     if np.any(P < 0):
         raise InputError("forces must be >= 0 (compressive positive; a punch cannot pull without adhesion)")
     F = inverse_hereditary(material, t, 2.0 * (1.0 + nu_v) * P)
@@ -490,17 +480,7 @@ def viscoelastic_force(layer: LayerKernel, punch: Any, H: Any, material: Materia
         if not isinstance(v, (list, tuple, np.ndarray)) and hasattr(v, "__len__"):  # a range: counted too
             check_bounded(len(v), f"the number of values of {name}", MAX_STEPS,
                           "1e6 nodes take ~1 s and 0.12 GB; subsample the history")
-    try:
-        t = np.array(times, dtype=float)  # copies: the result's arrays are made read-only
-        d = np.array(depths, dtype=float)
-    except (TypeError, ValueError):
-        raise InputTypeError("times and depths must be sequences of numbers") from None
-    if t.ndim != 1 or d.shape != t.shape or t.size < 1:
-        raise InputError(f"times and depths must be 1-d and of one length, got shapes {t.shape} and {d.shape}")
-    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(d))):
-        raise InputError("times and depths must be finite (no nan or inf)")
-    if np.any(np.diff(t) <= 0):
-        raise InputError("times must be strictly increasing")
+    t, d = check_history(times, depths, "depths")  # copies: the result's arrays are made read-only
     curve = force_curve_for(layer, tip, HH, nu_v, float(tol), d, model)
     u, inv = np.unique(d, return_inverse=True)  # each depth once (a hold repeats one depth)
     F = curve.force(u)[inv]

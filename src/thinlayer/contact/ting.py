@@ -77,7 +77,7 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import check_array_size, parse_nu, positive
+from .._checks import check_array_size, check_history, parse_nu, positive
 from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import InputError, InputTypeError, boundary
 from ..layers.kernels import LayerKernel
@@ -193,17 +193,7 @@ def ting_force(layer: LayerKernel, punch: Any, H: Any, material: Material, times
         raise InputError(f"tol must be a positive number (the elastic law's largest relative error), got {tol!r}")
     for name, v in (("times", times), ("depths", depths)):
         check_array_size(v, name, MAX_STEPS, "1e6 nodes take ~1 s; subsample the history")
-    try:
-        t = np.array(times, dtype=float)
-        d = np.array(depths, dtype=float)
-    except (TypeError, ValueError):
-        raise InputTypeError("times and depths must be sequences of numbers") from None
-    if t.ndim != 1 or d.shape != t.shape or t.size < 2:
-        raise InputError(f"times and depths must be 1-d, of one length >= 2, got shapes {t.shape} and {d.shape}")
-    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(d))):
-        raise InputError("times and depths must be finite (no nan or inf)")
-    if np.any(np.diff(t) <= 0):
-        raise InputError("times must be strictly increasing")
+    t, d = check_history(times, depths, "depths", min_size=2)
     tip = punch if isinstance(punch, Tip) and not is_polynomial_tip(punch) else numeric_punch(punch, {})
     if layer.numeric_nu is None or layer.incompressible_at(nu_v):
         layer = layer.with_nu(nu_v)

@@ -85,7 +85,7 @@ from typing import Any
 
 import numpy as np
 
-from .._checks import InputError, InputTypeError, check_bounded, check_int, positive
+from .._checks import InputError, InputTypeError, check_bounded, check_history, check_int, positive
 from .._lazy import lazy_module
 from ..display import RichDisplay
 from ..errors import boundary
@@ -459,17 +459,7 @@ def _solve_history(layer: Any, tip: Any, H: Any, material: Any, times: Any, dept
     if (depths is None) == (forces is None):
         raise InputError("give exactly one of depths (depth control) and forces (force control)")
     control = "depth" if depths is not None else "force"
-    try:
-        t = np.array(times, dtype=float)
-        y = np.array(depths if depths is not None else forces, dtype=float)
-    except (TypeError, ValueError):
-        raise InputTypeError(f"times and {control}s must be sequences of numbers") from None
-    if t.ndim != 1 or y.shape != t.shape or t.size < 1:
-        raise InputError(f"times and {control}s must be 1-d and of one length, got shapes {t.shape} and {y.shape}")
-    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(y))):
-        raise InputError(f"times and {control}s must be finite (no nan or inf)")
-    if np.any(np.diff(t) <= 0):
-        raise InputError("times must be strictly increasing")
+    t, y = check_history(times, depths if depths is not None else forces, f"{control}s")
     if np.any(y < 0) or not np.max(y) > 0:
         raise InputError(f"{control}s must be >= 0 with at least one > 0")
     if layer.has_thickness:
