@@ -44,6 +44,22 @@ approximation for small face angles) is 0.71 % stiffer than the converged direct
 curve (tested on real curves).  nanite 4.2.3 has no four-sided pyramid; Bilodeau's four-sided constant 0.7453 (as
 quoted in the AFM literature, not checked against the paper here) is 1.04 % above ``K/2 = 0.737617``.
 
+Viscoelastic models (issue 27 item 4), ``thinlayer_<material>_<tip>_<base>`` for every tip and base above, built by
+:func:`visco_model_module` and registered by :func:`register` beside the elastic family: the **approach** of an
+indentation at **constant speed** (parameter ``speed`` [m/s], fixed), so that ``delta = v t`` from the contact point on
+and Lee-Radok's integral is a function of the tip position (:func:`visco_force`):
+
+===============================  ===================================================================================
+``thinlayer_sls_<tip>_<base>``   standard linear solid: ``E0`` (instantaneous), ``E_inf`` (relaxed) [Pa], ``tau`` [s]
+``thinlayer_powerlaw_<t>_<b>``   ``E(t) = E0 (t/t0)^(-exponent)``: ``E0`` [Pa], ``exponent``, ``t0`` [s] (fixed, 1 s)
+===============================  ===================================================================================
+
+then ``speed``, the tip's size, ``nu``, ``H`` (fixed or free, ``inf``: the half-space), ``contact_point``,
+``baseline``.  Not for a retraction (the contact shrinks: Ting's method, :func:`thinlayer.fit_viscoelastic` with
+``contact_point=True``) nor for a speed that changes during the approach.  ``E0 = E_inf`` is the elastic model with
+``E = E_inf`` (to rounding); against the closed forms on the half-space the error is below 1e-6 of the largest force
+(tests/afm/test_nanite_visco.py).
+
 Not provided: the exact sphere at finite thickness (the paraboloid is the sphere to ``delta/(10 R)`` in force,
 :mod:`thinlayer.contact.guards`).  A force outside a law's table is refused (one line), never extrapolated.
 """
