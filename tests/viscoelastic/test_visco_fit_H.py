@@ -188,9 +188,9 @@ def test_cli_fit_H_contact_point(tmp_path, capsys):
                  "--delta0", "0.1", "--fit-H"]) == 2
     err = capsys.readouterr().err
     assert "go with --curves" in err and "Traceback" not in err
-    assert main([*argv[:-4], files[0], "--contact-point", "--H", "1"]) == 0  # H given, one curve: z0 and b0
+    assert main([*argv[:-2], "--contact-point", "--H", "1"]) == 0  # H given: z0, b0 fitted
     text = capsys.readouterr().out
-    assert "z0     =" in text and "b0     =" in text and "H = 1 given" in text
+    assert "z0_2   =" in text and "b0_1   =" in text and "H = 1 given" in text and "H      =" not in text
 
 
 # =============================================================================================
