@@ -194,7 +194,7 @@ INVENTORY: dict[str, list] = {
     "thinlayer.contact_stiffness": [lambda s, k=k: tl.contact_stiffness(**{**dict(layer=tl.BondedLayer(0.5), punch=tl.Punch.paraboloid(10), H=1.0, delta0=0.1), k: s}) for k in ("layer", "punch", "H", "delta0", "nu", "tol", "model")],  # noqa: E501
     "thinlayer.contact.oscillation.ContactStiffness.complex_modulus": [lambda s: tl.contact_stiffness(tl.BondedLayer(0.5), tl.Punch.paraboloid(10), 1.0, 0.1).complex_modulus(s)],  # noqa: E501
     "thinlayer.contact.oscillation.ContactStiffness.half_space_complex_modulus": [lambda s: tl.contact_stiffness(tl.BondedLayer(0.5), tl.Punch.paraboloid(10), 1.0, 0.1).half_space_complex_modulus(s)],  # noqa: E501
-    "thinlayer.fit_viscoelastic": [lambda s, k=k: tl.fit_viscoelastic(tl.BondedLayer(0.5), tl.Punch.paraboloid(10), 1.0, **{**dict(curves=[([0.0, 1.0, 2.0], [0.0, 0.1, 0.1], [0.0, 1.0, 0.8])]), k: s}) for k in ("material", "curves", "oscillation", "delta0", "nu", "t0", "guess", "tol", "model")],  # noqa: E501
+    "thinlayer.fit_viscoelastic": [lambda s, k=k: tl.fit_viscoelastic(tl.BondedLayer(0.5), tl.Punch.paraboloid(10), 1.0, **{**dict(curves=[([0.0, 1.0, 2.0], [0.0, 0.1, 0.1], [0.0, 1.0, 0.8])]), k: s}) for k in ("material", "curves", "oscillation", "delta0", "nu", "t0", "guess", "tol", "model", "fit_H", "contact_point")],  # noqa: E501
     # constructors of the layers and the punch
     "thinlayer.BondedLayer": [lambda s: tl.BondedLayer(s), lambda s: tl.BondedLayer(parameter=s),
                               lambda s: tl.BondedLayer(0.3, dps=s)],

@@ -44,6 +44,22 @@ approximation for small face angles) is 0.71 % stiffer than the converged direct
 curve (tested on real curves).  nanite 4.2.3 has no four-sided pyramid; Bilodeau's four-sided constant 0.7453 (as
 quoted in the AFM literature, not checked against the paper here) is 1.04 % above ``K/2 = 0.737617``.
 
+Viscoelastic models (issue 27 item 4), ``thinlayer_<material>_<tip>_<base>`` for every tip and base above, built by
+:func:`visco_model_module` and registered by :func:`register` beside the elastic family: the **approach** of an
+indentation at **constant speed** (parameter ``speed`` [m/s], fixed), so that ``delta = v t`` from the contact point on
+and Lee-Radok's integral is a function of the tip position (:func:`visco_force`):
+
+===============================  ===================================================================================
+``thinlayer_sls_<tip>_<base>``   standard linear solid: ``E0`` (instantaneous), ``E_inf`` (relaxed) [Pa], ``tau`` [s]
+``thinlayer_powerlaw_<t>_<b>``   ``E(t) = E0 (t/t0)^(-exponent)``: ``E0`` [Pa], ``exponent``, ``t0`` [s] (fixed, 1 s)
+===============================  ===================================================================================
+
+then ``speed``, the tip's size, ``nu``, ``H`` (fixed or free, ``inf``: the half-space), ``contact_point``,
+``baseline``.  Not for a retraction (the contact shrinks: Ting's method, :func:`thinlayer.fit_viscoelastic` with
+``contact_point=True``) nor for a speed that changes during the approach.  ``E0 = E_inf`` is the elastic model with
+``E = E_inf`` (to rounding); against the closed forms on the half-space the error is below 1e-6 of the largest force
+(tests/afm/test_nanite_visco.py).
+
 Not provided: the exact sphere at finite thickness (the paraboloid is the sphere to ``delta/(10 R)`` in force,
 :mod:`thinlayer.contact.guards`).  A force outside a law's table is refused (one line), never extrapolated.
 """
@@ -56,8 +72,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["BASES", "TIPS", "model_keys", "model_module", "paraboloid_force", "cone_force", "flat_force",
-           "pyramid_force", "register"]
+__all__ = ["BASES", "TIPS", "VISCO_MATERIALS", "model_keys", "model_module", "paraboloid_force", "cone_force",
+           "flat_force", "pyramid_force", "register", "visco_force", "visco_model_keys", "visco_model_module"]
 
 #: the tips: key -> (size parameter, its name, unit, default value)
 TIPS = {"para": ("R", "Tip Radius", "m", 10e-6), "cone": ("alpha", "Half Cone Angle", "°", 25.0),
@@ -230,13 +246,183 @@ def _model_function(tip: str, base: str):
 
 
 def register(keys: list[str] | None = None) -> list[Any]:
-    """Register the models with nanite (all, or those of ``keys``); returns nanite's ``NaniteFitModel`` objects."""
+    """Register the models with nanite (all -- elastic and viscoelastic --, or those of ``keys``); returns nanite's
+    ``NaniteFitModel`` objects.
+    """
     from nanite.model import register_model
 
-    wanted = model_keys() if keys is None else list(keys)
-    bad = [k for k in wanted if k not in model_keys()]
+    known = model_keys() + visco_model_keys()
+    wanted = known if keys is None else list(keys)
+    bad = [k for k in wanted if k not in known]
     if bad:
         from .._checks import InputError
 
-        raise InputError(f"unknown thinlayer nanite model {bad[0]!r}; the models: {', '.join(model_keys())}")
-    return [register_model(model_module(*k.split("_")[1:])) for k in wanted]
+        raise InputError(f"unknown thinlayer nanite model {bad[0]!r}; the models: {', '.join(known)}")
+    return [register_model(model_module(*k.split("_")[1:]) if k in model_keys() else
+                           visco_model_module(*k.split("_")[1:])) for k in wanted]
+
+
+# =============================================================================================
+# viscoelastic models (issue 27 item 4): a constant-speed approach, Lee-Radok on the layer
+# =============================================================================================
+#: the materials: key -> (parameter keys, names, units, defaults) before the speed
+VISCO_MATERIALS = {
+    "sls": (("E0", "E_inf", "tau"), ("Instantaneous Modulus", "Relaxed Modulus", "Relaxation Time"), ("Pa", "Pa", "s"),
+            (6e3, 3e3, 0.1)),
+    "powerlaw": (("E0", "exponent", "t0"), ("Modulus At t0", "Power-Law Exponent", "Reference Time"), ("Pa", "", "s"),
+                 (3e3, 0.1, 1.0)),
+}
+#: time nodes of the hereditary integral's grid (besides the data's own times for the SLS)
+VISCO_GRID = 2049
+
+
+def _unit_force(tip: str, d: np.ndarray, size: float, nu: float, H: float, base: str) -> np.ndarray:
+    """The elastic force at unit Young's modulus (the elastic family's force function with ``E = 1``)."""
+    if tip in ("pyr3s", "pyr4s"):
+        return pyramid_force(d, 1.0, size, nu, H, base, int(tip[3]))
+    return _FORCES[tip](d, 1.0, size, nu, H, base)
+
+
+def visco_force(indentation: Any, material: str, m1: float, m2: float, m3: float, speed: float, tip: str, size: float,
+                nu: float, H: float, base: str = "bonded") -> np.ndarray:
+    r"""Lee-Radok force of a constant-speed approach on the layer (``inf``: the half-space), zero where ``<= 0``.
+
+    The indentation grows at the constant speed ``v`` from the contact point on, ``delta = v t``, so the time since
+    contact is ``delta/v`` and (Lee & Radok 1960; the correspondence at constant nu,
+    :mod:`thinlayer.contact.hereditary`)
+
+    .. math:: P(\delta) = \int_0^{\delta/v} E(\delta/v - s)\, \frac{d}{ds} f\big(v s\big)\, ds,
+
+    ``f`` the elastic force at unit Young's modulus (the elastic model of the same tip and base).
+
+    * ``material="sls"`` (``m1, m2, m3 = E0, E_inf, tau``): ``E(t) = E_inf + (E0 - E_inf) exp(-t/tau)``, so
+      ``P = E_inf f(delta) + (E0 - E_inf) Q(delta)``, ``Q`` the exponential branch by the exact Prony recursion
+      (:func:`thinlayer.contact.hereditary.hereditary_integral`, ``f`` linear in time between the nodes: the data's
+      own times and a uniform grid of :data:`VISCO_GRID` nodes).  ``E0 = E_inf`` (or ``tau -> 0``) is the elastic
+      model with ``E = E_inf``.
+    * ``material="powerlaw"`` (``m1, m2, m3 = E0, exponent, t0``): ``E(t) = E0 (t/t0)^(-exponent)`` (the exponent
+      is named so: ``alpha`` is the cone's and the pyramids' angle), product integration by
+      FFT on a uniform grid of :data:`VISCO_GRID` nodes, linear interpolation to the data (relative error ~1e-6).
+    """
+    ind = np.asarray(indentation, dtype=float)
+    out = np.zeros_like(ind)
+    pos = ind > 0
+    if not pos.any():
+        return out
+    from ..contact.hereditary import hereditary_integral
+    from ..contact.materials import PowerLaw, Prony
+
+    times = ind[pos] / speed
+    grid = np.linspace(0.0, float(times.max()), VISCO_GRID)
+    if material == "sls":
+        E0, E_inf, tau = m1, m2, m3
+        f = _unit_force(tip, ind[pos], size, nu, H, base)
+        if E0 == E_inf:
+            out[pos] = E_inf * f
+            return out
+        tg, inv = np.unique(np.concatenate([grid, times]), return_inverse=True)
+        Q = hereditary_integral(Prony(0.0, [(1.0, tau)]), tg, _unit_force(tip, speed * tg, size, nu, H, base))
+        out[pos] = E_inf * f + (E0 - E_inf) * Q[inv[VISCO_GRID:]]
+        return out
+    E0, exponent, t0 = m1, m2, m3
+    P = hereditary_integral(PowerLaw(E0, t0, exponent), grid, _unit_force(tip, speed * grid, size, nu, H, base))
+    out[pos] = np.interp(times, grid, P)
+    return out
+
+
+def visco_model_keys() -> list[str]:
+    """The nanite keys of the viscoelastic models: ``thinlayer_<material>_<tip>_<base>``."""
+    return [f"thinlayer_{m}_{t}_{b}" for m in VISCO_MATERIALS for t in TIPS for b in BASES]
+
+
+def visco_model_module(material: str, tip: str, base: str) -> types.ModuleType:
+    """The nanite model module of a viscoelastic material (``"sls"``, ``"powerlaw"``), a tip and a base:
+    the approach segment of a constant-speed indentation (:func:`visco_force`).
+
+    What it assumes: the **approach** segment only (the contact grows: Lee-Radok; a retraction needs Ting's method,
+    :func:`thinlayer.fit_viscoelastic`), the indentation growing at the **constant speed** ``speed`` (fixed: the
+    tip's speed into the sample, not the piezo's if the cantilever bends much) from the contact point on, the sample
+    at rest before it, a constant Poisson ratio.
+    """
+    from .._checks import check_choice
+
+    check_choice(material, tuple(VISCO_MATERIALS), "material")
+    check_choice(tip, tuple(TIPS), "tip")
+    check_choice(base, BASES, "base")
+    size, size_name, size_unit, size_default = TIPS[tip]
+    mkeys, mnames, munits, mdefaults = VISCO_MATERIALS[material]
+    key = f"thinlayer_{material}_{tip}_{base}"
+
+    def get_parameter_defaults():
+        """Return the default model parameters (nanite's order: that of ``parameter_keys``)."""
+        import lmfit
+
+        params = lmfit.Parameters()
+        params.add(mkeys[0], value=mdefaults[0], min=0)
+        if material == "sls":
+            params.add("E_inf", value=mdefaults[1], min=0)
+            params.add("tau", value=mdefaults[2], min=0)
+        else:
+            params.add("exponent", value=mdefaults[1], min=0, max=1)
+            params.add("t0", value=mdefaults[2], min=0, vary=False)
+        params.add("speed", value=1e-6, min=0, vary=False)
+        params.add(size, value=size_default, min=0, max=90 if size == "alpha" else np.inf, vary=False)
+        params.add("nu", value=.5, min=0, max=0.5, vary=False)
+        params.add("H", value=10e-6, min=0, vary=False)
+        params.add("contact_point", value=0)
+        params.add("baseline", value=0)
+        return params
+
+    func = _visco_function(material, tip, base)
+    words = "standard linear solid" if material == "sls" else "power-law material"
+    func.__doc__ = (f"{_WORDS[tip].capitalize()} on a layer of a {words}, thickness H, on a {base} rigid base "
+                    f"(thinlayer): the approach at constant indentation speed.\n\n{visco_model_module.__doc__}\n\n"
+                    f"{visco_force.__doc__}\n\nParameters: delta (tip position, negative into the sample) [m], "
+                    + ", ".join(f"{k} [{u}]" for k, u in zip(mkeys, munits))
+                    + f", speed [m/s], {size} [{size_unit}], nu, H [m] (inf: the half-space), contact_point [m], "
+                    "baseline [N].  Returns the force [N].")
+    mod = types.ModuleType(f"thinlayer.afm.nanite_models.{key}", func.__doc__)
+    mod.get_parameter_defaults = get_parameter_defaults
+    mod.model_func = func
+    mod.model_doc = func.__doc__
+    mod.model_key = key
+    mod.model_name = f"{_WORDS[tip]}, {base} layer, {words}, approach (thinlayer)"
+    mod.parameter_keys = [*mkeys, "speed", size, "nu", "H", "contact_point", "baseline"]
+    mod.parameter_names = [*mnames, "Indentation Speed", size_name, "Poisson's Ratio", "Layer Thickness",
+                           "Contact Point", "Force Baseline"]
+    mod.parameter_units = [*munits, "m/s", size_unit, "", "m", "m", "N"]
+    mod.valid_axes_x = ["tip position"]
+    mod.valid_axes_y = ["force"]
+    return mod
+
+
+def _visco_function(material: str, tip: str, base: str):
+    """``f(delta, <material's three>, speed, <size>, nu, H, contact_point=0, baseline=0)``, nanite's convention (the
+    size argument named as the tip's parameter: nanite reads the names).
+    """
+    def force(delta, m1, m2, m3, speed, size, nu, H, contact_point, baseline):
+        return visco_force(contact_point - np.asarray(delta, dtype=float), material, m1, m2, m3, speed, tip, size, nu,
+                           H, base) + baseline
+
+    size = TIPS[tip][0]
+    if material == "sls":
+        if size == "R":
+            def thinlayer_sls(delta, E0, E_inf, tau, speed, R, nu, H, contact_point=0, baseline=0):
+                return force(delta, E0, E_inf, tau, speed, R, nu, H, contact_point, baseline)
+        elif size == "a":
+            def thinlayer_sls(delta, E0, E_inf, tau, speed, a, nu, H, contact_point=0, baseline=0):
+                return force(delta, E0, E_inf, tau, speed, a, nu, H, contact_point, baseline)
+        else:
+            def thinlayer_sls(delta, E0, E_inf, tau, speed, alpha, nu, H, contact_point=0, baseline=0):
+                return force(delta, E0, E_inf, tau, speed, alpha, nu, H, contact_point, baseline)
+        return thinlayer_sls
+    if size == "R":
+        def thinlayer_powerlaw(delta, E0, exponent, t0, speed, R, nu, H, contact_point=0, baseline=0):
+            return force(delta, E0, exponent, t0, speed, R, nu, H, contact_point, baseline)
+    elif size == "a":
+        def thinlayer_powerlaw(delta, E0, exponent, t0, speed, a, nu, H, contact_point=0, baseline=0):
+            return force(delta, E0, exponent, t0, speed, a, nu, H, contact_point, baseline)
+    else:
+        def thinlayer_powerlaw(delta, E0, exponent, t0, speed, alpha, nu, H, contact_point=0, baseline=0):
+            return force(delta, E0, exponent, t0, speed, alpha, nu, H, contact_point, baseline)
+    return thinlayer_powerlaw

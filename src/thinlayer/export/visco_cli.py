@@ -6,6 +6,8 @@ Three subcommands, each a door of :mod:`thinlayer.contact`:
   against time (``solve(material=..., history=...)``); the CSV holds ``time,depth`` (or ``time,force``);
 * ``thinlayer visco fit --material sls|power-law --curves A.csv [B.csv ...]`` (``time,depth,force`` each) or
   ``--oscillation FILE.csv --delta0 D`` (``omega,K_real,K_imag``): the material's parameters with errors;
+  ``--fit-H`` fits the thickness too (``--H`` is its start), ``--contact-point`` reads ``time,position,force`` (the
+  tip position, negative into the sample) and fits each curve's contact point and baseline;
 * ``thinlayer visco oscillation --material SPEC --delta0 D --amplitude EPS --omega W ...``: amplitude and phase of
   the force, and the layer's stiffness ``S(delta0)`` (the bottom-effect correction).
 
@@ -156,6 +158,8 @@ def add_visco_parser(subparsers: Any, formatter_class: type) -> argparse.Argumen
     f = sub.add_parser("fit", formatter_class=formatter_class, help="material parameters from curves or oscillation",
                        epilog="examples:\n  thinlayer visco fit --tip paraboloid:R=10 --nu 0.5 --H 1 --material sls "
                               "--curves slow.csv fast.csv\n  thinlayer visco fit --tip paraboloid:R=10 --nu 0.5 --H 1 "
+                              "--material sls --curves slow.csv fast.csv --fit-H --contact-point"
+                              "\n  thinlayer visco fit --tip paraboloid:R=10 --nu 0.5 --H 1 "
                               "--material sls --oscillation kstar.csv --delta0 0.13")
     _common(f)
     f.add_argument("--material", choices=("sls", "power-law"), default="sls", help="the material to fit")
@@ -163,6 +167,10 @@ def add_visco_parser(subparsers: Any, formatter_class: type) -> argparse.Argumen
     f.add_argument("--curves", nargs="+", metavar="FILE.csv", help="time,depth,force rows, one file per curve")
     f.add_argument("--oscillation", metavar="FILE.csv", help="omega,K_real,K_imag rows (the dynamic stiffness)")
     f.add_argument("--delta0", type=finite, help="with --oscillation: the depth it oscillates around")
+    f.add_argument("--fit-H", action="store_true", help="with --curves: fit the thickness too (--H is the start)")
+    f.add_argument("--contact-point", action="store_true",
+                   help="with --curves: the CSVs hold time,position,force (tip position, negative into the sample); "
+                        "fit each curve's contact point and baseline")
     f.set_defaults(func=cmd_visco)
     o = sub.add_parser("oscillation", formatter_class=formatter_class, help="small oscillation: |K*|, phase, S",
                        epilog="example:\n  thinlayer visco oscillation --tip paraboloid:R=10 --nu 0.5 --H 1 "
@@ -232,10 +240,14 @@ def cmd_visco(args: argparse.Namespace) -> int:
     if args.curves is not None:
         if args.delta0 is not None:
             raise BadInput("--delta0 goes with --oscillation")
-        data = [tuple(read_columns(p, ("time", "depth", "force"))) for p in args.curves]
+        axis = "position" if args.contact_point else "depth"
+        data = [tuple(read_columns(p, ("time", axis, "force"))) for p in args.curves]
         res = fit_viscoelastic(layer, punch, args.H, material=args.material, curves=data, t0=args.t0,
-                               tol=args.tol, model=args.model)
+                               tol=args.tol, model=args.model, fit_H=args.fit_H, contact_point=args.contact_point)
     else:
+        if args.fit_H or args.contact_point:
+            raise BadInput("--fit-H and --contact-point go with --curves: an oscillation around one depth cannot "
+                           "separate H from the modulus")
         if args.delta0 is None:
             raise BadInput("--oscillation needs --delta0, the depth it oscillates around")
         w, kr, ki = read_columns(args.oscillation, ("omega", "K_real", "K_imag"))
