@@ -117,3 +117,20 @@ def test_runaway_histories_are_refused_before_any_work():
         viscoelastic_force(BondedLayer(0.3), Punch.paraboloid(10.0), 1.0, SLS, range(n), range(n))
     with pytest.raises(WorkLimitError, match="subsample the history"):
         viscoelastic_force(BondedLayer(0.3), Punch.paraboloid(10.0), 1.0, SLS, np.zeros(n), np.zeros(n))
+
+
+def test_power_law_before_contact_is_exactly_zero_and_valid():
+    """A power-law ramp that starts at rest (depth 0 until t = 0.3): the hereditary integral is exactly 0 before the
+    first change of the elastic force, so no pre-contact point is flagged as a lift-off (before the fix the FFT's
+    round-off left forces of -1e-17 there, flagged 'the punch lifts off'); the first force in contact is positive."""
+    import numpy as np
+
+    from thinlayer import BondedLayer, Punch, viscoelastic_force
+    from thinlayer.contact.materials import PowerLaw
+
+    t = np.linspace(0.0, 1.0, 2001)
+    d = 0.05 * np.maximum(t - 0.3, 0.0)
+    out = viscoelastic_force(BondedLayer(0.5), Punch.paraboloid(10.0), 1.0, PowerLaw(E0=3.0, alpha=0.2, t0=1.0), t, d)
+    assert out.valid.all(), out.reason if hasattr(out, "reason") else out
+    assert (out.force[t <= 0.3] == 0.0).all()
+    assert (out.force[t > 0.3] > 0.0).all()

@@ -100,6 +100,10 @@ def _power_law(t: np.ndarray, F: np.ndarray, m: PowerLaw) -> np.ndarray:
 
         conv = fftconvolve(r, w)[: len(r)] if len(r) > 64 else np.convolve(r, w)[: len(r)]
         out[1:] += c * h**beta * conv
+        # before the first change of F the integral is exactly F[0] E(t - t0): the FFT's round-off (~1e-17 of the
+        # largest force, of either sign) is not left there, so pre-contact forces are 0, never -1e-17
+        first = int(np.argmax(r != 0)) if (r != 0).any() else len(r)
+        out[1:first + 1] = F[0] * m.relaxation(t[1:first + 1] - t[0]) if F[0] > 0 else 0.0
         return out
     if len(t) > MAX_NONUNIFORM_POWER:
         raise WorkLimitError(f"a power-law history on a non-uniform time grid costs O(N^2): at most "
