@@ -134,3 +134,52 @@ def test_bad_input():
             two_term_jkr(bad)
     with pytest.raises(InputError):
         two_term_jkr(0.49).evaluate(-1.0, H, 10.0, 0.1)
+
+
+# --------------------------------------------------------------------------- (J.26) the next order
+def _order2(nu, lams, wf=0.05):
+    """Depth errors of (J.11) order 1 and (J.26) order 2 against the direct solver; the estimates hold."""
+    lay, vt = BondedLayer(nu), 1 / (1 - nu)
+    wv = wf * vt * H
+    laws = thin_layer_jkr(nu, 1), thin_layer_jkr(nu, 2)
+    out = []
+    for lam in lams:
+        c, R = lam * H, lam * lam * H / 2
+        st = adhesive_state(lay, lambda r, R=R: r * r / (2 * R), c, H, work_of_adhesion=wv, energy_route=False)
+        row = []
+        for law in laws:
+            d, P = (float(v) for v in law.evaluate(c, H, R, wv))
+            ed, eP = (float(v) for v in law.error_estimate(c, H, R, wv))
+            assert abs(d - st.delta) <= ed and abs(P - st.force) <= eP
+            row.append(abs(d - st.delta))
+        out.append(row)
+    return out
+
+
+def test_second_order_depth():
+    """(J.26): nu = 0.3, c/H = 10, 20: the order-2 depth error falls like (H/c)^3 (measured 0.138 (H/c)^3 H),
+    order 1's like (H/c)^2; the force is order 1's (already O((H/c)^3)); order 2 is refused at nu = 1/2."""
+    (a1, a2), (b1, b2) = _order2(0.3, (10.0, 20.0))
+    assert 1.8 < math.log2(a1 / b1) < 2.2
+    assert 2.8 < math.log2(a2 / b2) < 3.2
+    assert b2 < 0.06 * b1
+    assert 0.12 < b2 * 20.0**3 / H < 0.16
+    law = thin_layer_jkr(0.3, 2)
+    assert law.equation == "J.26" and r"\tag{J.26}" in law.latex()
+    assert law.force == thin_layer_jkr(0.3, 1).force
+    with pytest.raises(InputError, match="order 2"):
+        thin_layer_jkr(0.5, 2)
+
+
+@pytest.mark.slow
+def test_second_order_depth_long():
+    """(J.26) from c/H = 5 to 80 at nu = 0.3 (THINLAYER_SLOW=1): slope 3.0 (order 1: 2.0); the estimate holds at
+    nu = -0.5, 0, 0.3, 0.45 and w/(vartheta H) = 0.05, 0.5."""
+    lams = [5.0, 10.0, 20.0, 40.0, 80.0]
+    rows = _order2(0.3, lams)
+    s1 = [math.log2(rows[i][0] / rows[i + 1][0]) for i in range(len(lams) - 1)]
+    s2 = [math.log2(rows[i][1] / rows[i + 1][1]) for i in range(len(lams) - 1)]
+    assert all(1.9 < s < 2.1 for s in s1[1:]) and all(2.9 < s < 3.1 for s in s2)
+    for nu in (-0.5, 0.0, 0.45):
+        for wf in (0.05, 0.5):
+            _order2(nu, [5.0, 10.0, 20.0, 40.0], wf)
