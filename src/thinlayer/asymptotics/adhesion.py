@@ -372,7 +372,8 @@ class ThinLayerJKR(RichDisplay):
         ``2 pi w R`` (J.12).
     depth_display, force_display : sympy.Expr
         sympy.Expr
-        The same in ``a_e`` (``= c + h* H`` at order 1, ``c`` at order 0), as printed by ``latex()``.
+        The same in ``a_e`` (``= c + h* H`` at orders 1 and 2, ``c`` at order 0; order 2 also
+        ``a_2 = a_e + m_1 H^2/c``), as printed by ``latex()``.
     m1 : float
         ``m_1`` (2.20) of the layer (enters the error estimate and, at order 2, the law (J.26)).
     r3 : float
@@ -464,6 +465,8 @@ class ThinLayerJKR(RichDisplay):
 
     def latex(self) -> str:
         ae = r"a_e = c" if self.order == 0 else r"a_e = c + h^* H"
+        if self.order == 2:
+            ae += r",\ a_2 = a_e + \frac{m_1 H^2}{c}"
         tag = self.equation
         return (rf"G = {sp.latex(self.release_rate)} = w:\quad "
                 rf"\delta = {sp.latex(self.depth_display)},\quad P = {sp.latex(self.force_display)},\quad {ae}"
@@ -473,7 +476,8 @@ class ThinLayerJKR(RichDisplay):
         tags = "(J.15)" if self.A == 0 else "(J.10)-(J.12)"
         return [f"ThinLayerJKR: paraboloid on a bonded layer, nu = {self.nu:g}, order {self.order}   {tags}",
                 f"  delta = {self.depth_display}", f"  P = {self.force_display}",
-                "  a_e = " + ("c" if self.order == 0 else "c + h* H"),
+                "  a_e = " + ("c" if self.order == 0 else "c + h* H") + (", a_2 = a_e + m_1 H^2/c" if self.order == 2
+                                                                       else ""),
                 f"  A = {self.A:.12g}, h* = {self.h:.12g}; pull-off (order 0) {self.pull_off_leading}"]
 
 
@@ -553,8 +557,8 @@ def _thin_symbolic(order: int) -> tuple[sp.Expr, sp.Expr, sp.Expr, sp.Expr]:
         if sp.expand(depth.subs(w, 0) - (c + h * H) ** 2 / (2 * R)) != 0:
             raise ArithmeticError("(J.11): delta_1 is not (c + h* H)^2/(2R)")
         a_c = _second_order_radius()
-        return (smooth + a_c**2 / (2 * R), force, G, pull,
-                depth_ae - a_e**2 / (2 * R) + (a_e + m_1 * H**2 / c) ** 2 / (2 * R), force_ae)
+        a_2 = sp.Symbol("a_2", positive=True)  # printed: a_2 = a_e + m_1 H^2/c
+        return (smooth + a_c**2 / (2 * R), force, G, pull, depth_ae - a_e**2 / (2 * R) + a_2**2 / (2 * R), force_ae)
     ip = inner_pressure(GenericLayer(), Punch.paraboloid(R)).pressure
     m1 = [s for s in ip.free_symbols if s.name == "m_1"]
     p_out = ip.subs({m: 0 for m in m1}).subs({S.x1: r, S.x2: 0})  # (2.29); the m_1 term is O((H/c)^2)

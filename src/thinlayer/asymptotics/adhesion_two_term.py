@@ -78,6 +78,7 @@ from .._checks import InputError, positive, positive_radii
 from .._checks import work_of_adhesion as check_work
 from ..display import RichDisplay
 from ..layers.kernels import BondedLayer, IncompressibleLayer
+from ..normal import normal_latex
 from .adhesion import A, R, c, thin_layer_jkr, w
 from .flat_punch import psi as flat_psi
 from .incompressible import two_term_edge_shift, two_term_sphere
@@ -163,11 +164,11 @@ class TwoTermJKRDerivation(RichDisplay):
         """``(tag, LaTeX)`` of every step."""
         X = sp.Symbol("x")
         f = {fn(x): sp.Function(fn.__name__)(X) for fn in (rho_f, sigma_f, psi_f, chi_f, psiF_f)}
-        return [("J.21", rf"p = {sp.latex(self.pressure)},\quad S = {sp.latex(self.stiffness.subs(f))}"
+        return [("J.21", rf"p = {normal_latex(self.pressure)},\quad S = {normal_latex(self.stiffness.subs(f))}"
                          r",\quad \rho = \frac{I_1}{I_0},\ x = k a_e,\ k^2 = \frac{1}{m_1 H^2} \tag{J.21}"),
-                ("J.22", rf"G = \frac{{d^2 S'(c)}}{{4\pi c}} = {sp.latex(self.release_rate.subs(f))},"
+                ("J.22", rf"G = \frac{{d^2 S'(c)}}{{4\pi c}} = {normal_latex(self.release_rate.subs(f))},"
                          r"\quad \sigma = \frac{x}{\rho} \tag{J.22}"),
-                ("J.24", rf"\delta = {sp.latex(self.depth.subs(f))},\quad P = {sp.latex(self.force.subs(f))},"
+                ("J.24", rf"\delta = {normal_latex(self.depth.subs(f))},\quad P = {normal_latex(self.force.subs(f))},"
                          r"\quad a_e = c + h H \tag{J.24}")]
 
     def latex(self) -> str:
