@@ -69,7 +69,7 @@ def test_flat_punch_stiffness_and_release_rate_mpmath():
     law = two_term_jkr(0.49)
     vt, m1, A = 1 / 0.51, law.m1, law.A
     k = 1 / math.sqrt(m1)
-    for c in (3.0, 12.0):
+    for c in (12.0,):
         ae = c + law.h
 
         def S_quad(ae):  # P/d by quadrature of (vartheta/(A H))(1 - I_0(k r)/I_0(k a_e)) over the disc
@@ -183,3 +183,23 @@ def test_second_order_depth_long():
     for nu in (-0.5, 0.0, 0.45):
         for wf in (0.05, 0.5):
             _order2(nu, [5.0, 10.0, 20.0, 40.0], wf)
+
+
+# --------------------------------------------------------------------------- the front door
+def test_door_uses_the_two_term_law_where_the_regime_says_so():
+    """solve(..., work_of_adhesion=w), model "thin-layer-jkr": at nu = 0.49 (lambda^2 = 12, (I.13) says not
+    compressible) the answer is the two-term law (J.24) at the contact radius it reports, within its estimate of
+    the direct solver's state at that radius; at nu = 0.3 (lambda^2 = 2600) it is (J.11) as before."""
+    from thinlayer import Punch, solve
+
+    ans = solve(BondedLayer(0.49), Punch.paraboloid(200.0), delta0=0.3, H=H, mu=1.0, work_of_adhesion=0.05,
+                model="thin-layer-jkr", tol=0.3)
+    assert ans.model == "thin-layer-jkr" and ans.equations == ("J.24", "J.24")
+    c = ans.contact_radius
+    d, P = (float(v) for v in two_term_jkr(0.49).evaluate(c, H, 200.0, 0.05))
+    assert d == pytest.approx(0.3, rel=1e-9) and abs(P) == pytest.approx(ans.force, rel=1e-9)
+    st = adhesive_state(BondedLayer(0.49), lambda r: r * r / 400.0, c, H, work_of_adhesion=0.05, energy_route=False)
+    assert abs(st.force / P - 1) < ans.error_estimate["force"] and abs(st.delta / 0.3 - 1) < ans.error_estimate["depth"]
+    ans = solve(BondedLayer(0.3), Punch.paraboloid(200.0), delta0=0.3, H=H, mu=1.0, work_of_adhesion=0.05,
+                model="thin-layer-jkr")
+    assert ans.equations == ("J.11", "J.11")
