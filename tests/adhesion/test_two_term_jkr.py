@@ -128,6 +128,33 @@ def test_table_against_direct():
     print("\n".join(lines))
 
 
+def test_pull_off_limits():
+    """(J.25): at nu = 1/2 the pull-off of (J.15) order 1; at nu = 0.49 it falls from above 2 pi w R in the crossover
+    (2.36 at R = 1000 H, lambda^2 = 9.6) to the compressible 2 pi w R of (J.12) (R = 1e8 H, lambda^2 = 6e5)."""
+    a, b = two_term_jkr(0.5), thin_layer_jkr(0.5, 1)
+    (ca, Pa), (cb, Pb) = a.pull_off(H, 1000.0, 0.1), b.pull_off(H, 1000.0, 0.1)
+    assert Pa == pytest.approx(Pb, rel=1e-9) and ca == pytest.approx(cb, rel=1e-6)
+    law, w = two_term_jkr(0.49), 0.05
+    ratios = [law.pull_off(H, R, w)[1] / (math.pi * w * R) for R in (1e3, 1e8)]
+    assert 2.2 < ratios[0] < 2.5 and abs(ratios[1] - 2) < 0.005
+
+
+@pytest.mark.slow
+def test_pull_off_against_direct():
+    """(J.25) against the direct JKR curve's load-controlled pull-off (J.6), nu = 0.49, R = 1000 H (c_p = 12 H,
+    lambda^2 = 9.6): measured 6.2e-3 relative (1000 H), 5.1e-4 (10^4 H, c_p = 33 H)."""
+    import numpy as np
+
+    from thinlayer.numerics.adhesion import jkr_curve
+
+    law, w, R = two_term_jkr(0.49), 0.05, 1000.0
+    cp, Pp = law.pull_off(H, R, w)
+    cur = jkr_curve(BondedLayer(0.49), lambda r: r * r / (2 * R), np.linspace(0.6 * cp, 1.6 * cp, 6), H,
+                    work_of_adhesion=w)
+    assert abs(Pp / -cur.pull_off_load.force - 1) < 0.01
+    assert abs(cp / cur.pull_off_load.radius - 1) < 0.01
+
+
 def test_bad_input():
     for bad in (0.25, 0.2, 0.6, "x", None):
         with pytest.raises(InputError, match="nu"):

@@ -35,7 +35,8 @@ that is ``kappa = S/(4 vartheta c)``, (F.15).
 finite at ``nu = 1/2`` (``c_1 = 2/3``, ``sigma(0) = 2``, ``S = 3 pi vartheta a_e^4/(16 H^3)``).
 
 (J.25) *Pull-off* under load control: ``-min_c P(c)`` (numerical minimum).  In the limits ``2 pi w R``
-(compressible, (J.12)) and ``3 pi w R`` (incompressible, (J.15)).
+(compressible, (J.12)) and ``3 pi w R`` (incompressible, (J.15)); at nu = 0.49 it is ``2.36 pi w R`` at
+``R = 1000 H`` (``c_p = 12 H``, ``lambda^2 = 9.6``), within 6.2e-3 of the direct solver's (5.1e-4 at ``R = 10^4 H``).
 
 The derivation is carried out in sympy by :func:`two_term_jkr_derivation` and checked on the ladder
 (``==``, expand/cancel, simplify) with mpmath values beside; the limits are series identities (``x -> 0``: the
