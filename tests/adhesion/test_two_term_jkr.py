@@ -21,6 +21,8 @@ from thinlayer.asymptotics.adhesion_two_term import two_term_jkr, two_term_jkr_d
 from thinlayer.errors import InputError
 from thinlayer.numerics.adhesion import adhesive_state
 
+pytestmark = pytest.mark.xdist_group("adhesion-laws")  # shares the laws' sympy builds with the adhesion tests
+
 H = 1.0
 
 

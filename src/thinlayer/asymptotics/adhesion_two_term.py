@@ -396,6 +396,17 @@ def two_term_jkr(nu: Any) -> TwoTermJKR:
     Returns
     -------
     TwoTermJKR
+
+    Examples
+    --------
+    The JKR state at the contact radius ``c = 10 H`` of a sphere ``R = 50 H`` on a layer with nu = 0.49
+    (``lambda^2 = 6.5``: neither (J.11) nor (J.15) holds); its flat part satisfies ``G = w`` (J.22):
+
+    >>> law = two_term_jkr(0.49)
+    >>> delta, P = law.evaluate(10.0, H=1.0, R=50.0, work_of_adhesion=0.05)
+    >>> d = float(delta) - float(law.evaluate(10.0, 1.0, 50.0, 0.0)[0])
+    >>> round(float(law.release_rate(10.0, d, H=1.0)), 12)
+    0.05
     """
     try:
         val = float(nu)
