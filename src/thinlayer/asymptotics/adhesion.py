@@ -62,6 +62,29 @@ has its outer contour at ``a_e = c + h H``: ``delta_1 = a_e^2/(2R)``, ``P_1 = pi
 direct solver (``tests/adhesion``, nu = 0.3, ``R = c^2/(2H)``, ``w = 0.05 vartheta H``, c/H = 5 ... 80): order 0
 falls with slope -1.0 in ``delta`` and ``P``; order 1 with slope -2.0 in ``delta`` and -3.0 in ``P``.
 
+(J.26) *Second order (the m_1 shift of the smooth edge).*  The energy route needs ``delta_1(c)``, ``P_1(c)``, ``S(c)``
+and ``S'(c)``; what the engine's orders give:
+
+* the smooth state: (SO.5) puts the edge of the sphere at ``c = a - h* H - m_1 H^2/a`` (``eps = H/a``,
+  ``beta = H/(2a)``), so ``a(c) = c + h* H + m_1 H^2/c + O(H^3/c^2)`` and ``delta_1 = a(c)^2/(2R)`` to relative
+  ``O((H/c)^3)``;  with (SO.8), (SO.9) ``P_1(c) = P_0(a)(1 - 4 m_1 (H/a)^2 + ...) = pi vartheta (c + h* H)^4/(4 A R H)
+  (1 + O((H/c)^3))``: the ``m_1`` terms cancel, order 1's force is already right to ``(H/c)^2`` (checked in sympy);
+* the flat punch: (F.11) is derived, ``kappa = (pi/(4A))(lambda + 2 h* + C_2/lambda + C_3/lambda^2 + ...)``;
+  ``S = 4 vartheta c kappa`` gives ``S'(c) = (pi vartheta/(A H))(2 (c + h* H) - C_3 H^3/c^2 + ...)``: ``C_2`` drops
+  out, so ``G`` of (J.10) is right to relative ``O((H/c)^2)`` inclusive;  ``S`` itself needs ``C_2``, which (F.12)
+  sets to ``h*^2`` (measured to hold, not derived: (F.16)).
+
+Hence the depth to the next order::
+
+    delta = (c + h* H + m_1 H^2/c)^2/(2R) - sqrt(2 A H w c/(vartheta (c + h* H))),                    (J.26)
+
+relative remainder ``O((H/c)^3)``, and ``P`` as at order 1 (its remainder is already ``O((H/c)^3)``).  The next
+order of either needs what the engine does not have: the contact radius to ``O(H^3/a^2)`` (the third-order
+area law; (SO.10) stops at ``(H/a)^2``) and, for ``P``, the flat punch's ``C_2`` derived and ``C_3``.  Measured
+(nu = 0.3, ``R = c^2/(2H)``, ``w = 0.05 vartheta H``, c/H = 5 ... 80): the order-2 depth error times
+``(c/H)^3`` is 0.140, 0.138, 0.138, 0.139, 0.139 (slope -3.0; order 1: slope -2.0); at nu = -0.5, 0, 0.45 it
+tends to 0.24, 0.057, ~1.8 (about ``2.6 r_3 H``, ``r_3`` of (SO.4)).
+
 (J.12) *Pull-off on the thin layer.*  From (J.11) at order 0, ``P = a X^2 - b X`` in ``X = c^2`` has its minimum
 ``-b^2/(4a)``: the load-controlled pull-off force is ``2 pi w R`` (the value of DMT and of a Winkler foundation),
 at ``c^2 = 2 R sqrt(2 A H w/vartheta)``.  ``delta(c)`` increases with ``c``: under displacement control the contact
@@ -117,6 +140,7 @@ from ..punch import Punch
 from .flat_punch import thin_flat_punch_derivation
 from .incompressible import thin_layer_operator, two_term_edge_shift
 from .inner import inner_pressure
+from .second_order import edge_constants, second_order_boundary_layer
 from .wiener_hopf import edge_shift_exact, wiener_hopf_solution
 
 __all__ = ["AdhesionDerivation", "AdhesiveEdgeLayer", "HalfSpaceJKR", "ThinFlatDetachment", "ThinLayerJKR",
@@ -128,6 +152,7 @@ d = sp.Symbol("d", real=True)
 A = GenericLayer.A_symbol
 h = sp.Symbol("h^*", real=True)
 p_e, p_s = sp.symbols("p_e p_s", real=True)
+m_1 = sp.Symbol("m_1", real=True)  # m_1 (2.20) in the second-order law (J.26), as (SO.5) names it
 vt, H, delta = S.vartheta, S.H, S.delta0
 _H, _R = H, R  # the symbols, for methods whose arguments are named H and R
 
@@ -347,9 +372,12 @@ class ThinLayerJKR(RichDisplay):
         ``2 pi w R`` (J.12).
     depth_display, force_display : sympy.Expr
         sympy.Expr
-        The same in ``a_e`` (``= c + h* H`` at order 1, ``c`` at order 0), as printed by ``latex()``.
+        The same in ``a_e`` (``= c + h* H`` at orders 1 and 2, ``c`` at order 0; order 2 also
+        ``a_2 = a_e + m_1 H^2/c``), as printed by ``latex()``.
     m1 : float
-        ``m_1`` (2.20) of the layer (enters the error estimate).
+        ``m_1`` (2.20) of the layer (enters the error estimate and, at order 2, the law (J.26)).
+    r3 : float
+        ``r_3`` (SO.4) of the layer (order 2's error estimate).
     """
 
     nu: float
@@ -363,16 +391,17 @@ class ThinLayerJKR(RichDisplay):
     depth_display: sp.Expr
     force_display: sp.Expr
     m1: float = 0.0
+    r3: float = 0.0
 
     @property
     def equation(self) -> str:
-        """``"J.11"`` (compressible) or ``"J.15"`` (``nu = 1/2``)."""
-        return "J.15" if self.A == 0 else "J.11"
+        """``"J.11"`` (compressible), ``"J.26"`` (compressible, order 2) or ``"J.15"`` (``nu = 1/2``)."""
+        return "J.15" if self.A == 0 else ("J.26" if self.order == 2 else "J.11")
 
     def evaluate(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[np.ndarray,
                                                                                                      np.ndarray]:
         """``(delta, P)`` of (J.11), vectorised in the contact radius; ``vartheta = mu/(1 - nu)``."""
-        fd, fP = _compiled(self.order, self.A, self.h)
+        fd, fP = _compiled(self.order, self.A, self.h, self.m1)
         cv = positive_radii(radius)
         vals = (cv, positive(H, "H"), positive(R, "R"), check_work(work_of_adhesion),
                 positive(mu, "mu") / (1 - self.nu))
@@ -392,6 +421,12 @@ class ThinLayerJKR(RichDisplay):
         """
         cv = positive_radii(radius)
         Hv, Rv = positive(H, "H"), positive(R, "R")
+        if self.order == 2:  # (J.26): measured error about 2.6 r_3 H^3/(c R) (see the module docstring)
+            first = thin_layer_jkr(self.nu, 1)
+            d_a = self.evaluate(cv, Hv, Rv, work_of_adhesion, mu)[0]
+            flat = np.abs(d_a - self.evaluate(cv, Hv, Rv, 0.0, mu)[0])
+            return (4 * abs(self.r3) * Hv**3 / (cv * Rv) + 2 * (Hv / cv) ** 3 * flat,
+                    first.error_estimate(cv, Hv, Rv, work_of_adhesion, mu)[1])
         other = thin_layer_jkr(self.nu, 1 - self.order)
         d_a, P_a = self.evaluate(cv, Hv, Rv, work_of_adhesion, mu)
         d_b, P_b = other.evaluate(cv, Hv, Rv, work_of_adhesion, mu)
@@ -417,6 +452,8 @@ class ThinLayerJKR(RichDisplay):
                                f"edge shift h*(nu={self.nu:g}), exact Wiener-Hopf solution (3.18), (3.25)"))}
         if self.A != 0:
             out[A] = (f(self.A), f"A(nu={self.nu:g}) = (1 - 2 nu)/(2 (1 - nu)^2), lim L(s)/s (2.4)")
+        if self.order == 2:
+            out[m_1] = (f(self.m1), f"m_1(nu={self.nu:g}), the Maclaurin coefficient of L(s)/(A s) (2.20)")
         return out
 
     def pull_off(self, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[float, float]:
@@ -427,8 +464,10 @@ class ThinLayerJKR(RichDisplay):
         return _minimise(lambda x: float(self.evaluate(x, Hv, Rv, wv, mu)[1]), c0)
 
     def latex(self) -> str:
-        ae = r"a_e = c + h^* H" if self.order == 1 else r"a_e = c"
-        tag = "J.15" if self.A == 0 else "J.11"
+        ae = r"a_e = c" if self.order == 0 else r"a_e = c + h^* H"
+        if self.order == 2:
+            ae += r",\ a_2 = a_e + \frac{m_1 H^2}{c}"
+        tag = self.equation
         return (rf"G = {sp.latex(self.release_rate)} = w:\quad "
                 rf"\delta = {sp.latex(self.depth_display)},\quad P = {sp.latex(self.force_display)},\quad {ae}"
                 rf"\quad (\text{{order {self.order}}}) \tag{{{tag}}}")
@@ -437,16 +476,17 @@ class ThinLayerJKR(RichDisplay):
         tags = "(J.15)" if self.A == 0 else "(J.10)-(J.12)"
         return [f"ThinLayerJKR: paraboloid on a bonded layer, nu = {self.nu:g}, order {self.order}   {tags}",
                 f"  delta = {self.depth_display}", f"  P = {self.force_display}",
-                "  a_e = " + ("c + h* H" if self.order == 1 else "c"),
+                "  a_e = " + ("c" if self.order == 0 else "c + h* H") + (", a_2 = a_e + m_1 H^2/c" if self.order == 2
+                                                                       else ""),
                 f"  A = {self.A:.12g}, h* = {self.h:.12g}; pull-off (order 0) {self.pull_off_leading}"]
 
 
 @lru_cache(maxsize=32)
-def _compiled(order: int, A_val: float, h_val: float) -> tuple:
-    """Numpy functions ``(c, H, R, w, vartheta) -> delta, P`` of (J.11) (``A = 0``: the incompressible (J.15))."""
+def _compiled(order: int, A_val: float, h_val: float, m1_val: float = 0.0) -> tuple:
+    """Numpy functions ``(c, H, R, w, vartheta) -> delta, P`` of (J.11), (J.26) (``A = 0``: incompressible (J.15))."""
     depth, force = (_thin_incompressible(order) if A_val == 0 else _thin_symbolic(order))[:2]
     args = (c, _H, _R, w, vt)
-    num = {A: A_val, h: h_val}
+    num = {A: A_val, h: h_val, m_1: m1_val}
     return sp.lambdify(args, depth.subs(num), "numpy"), sp.lambdify(args, force.subs(num), "numpy")
 
 
@@ -469,9 +509,57 @@ def _minimise(f, c0: float) -> tuple[float, float]:
     return x, -f(x)
 
 
-@lru_cache(maxsize=2)
+@lru_cache(maxsize=1)
+def _second_order_radius() -> sp.Expr:
+    """(J.26): ``a(c) = c + h* H + m_1 H^2/c`` from the edge shift (SO.5) of the sphere, and the check that the force
+    (SO.8)-(SO.9) at that ``a`` is ``pi vartheta (c + h* H)^4/(4 A R H)`` to relative ``O((H/c)^2)``.
+    """
+    bl = second_order_boundary_layer()
+    sym = {s.name: s for s in bl.edge_shift.free_symbols | bl.force_defect.free_symbols}
+    t, aa, a1, a2 = sp.symbols("t a a_1 a_2", positive=True)
+    sphere = {sym["epsilon"]: t * H / aa, sym["beta"]: t * H / (2 * aa)}  # kappa = 1/a, Phi_nn/|grad Phi| = 1/a
+    hs = bl.edge_shift.subs(sphere).subs(sym["m_1"], m_1)
+    ansatz = c + a1 * t * H + a2 * (t * H) ** 2 / c
+    resid = (aa - t * H * hs).subs(aa, ansatz) - c
+
+    def taylor(expr: sp.Expr, j: int) -> sp.Expr:  # j! times the t^j coefficient at t = 0
+        return sp.cancel(sp.diff(expr, t, j).subs(t, 0))
+
+    sol = sp.solve([taylor(resid, 1), taylor(resid, 2)], [a1, a2], dict=True)
+    if len(sol) != 1 or sol[0] != {a1: h, a2: m_1}:
+        raise ArithmeticError(f"(J.26): the inverse of (SO.5) is not a = c + h* H + m_1 H^2/c: {sol}")
+    a_c = ansatz.subs(sol[0]).subs(t, 1)
+    # the force (SO.8): the inner pressure p_0 + p_1 (2.26), (4.1) over the disc of radius a plus the edge defect
+    ip = inner_pressure(GenericLayer(), Punch.paraboloid(R)).pressure
+    ip = ip.subs({s: m_1 for s in ip.free_symbols if s.name == "m_1"}).subs({S.x1: r, S.x2: 0})
+    delta_a = aa**2 / (2 * R)  # Gamma_0: p_0 = 0 at r = a
+    P_in = 2 * sp.pi * sp.integrate(ip.subs(delta, delta_a) * r, (r, 0, aa))
+    D = bl.force_defect.subs(sphere).subs(t, 1).subs(sym["m_1"], m_1) / A  # (SO.8), |grad Phi| = a/R
+    P = P_in + 2 * sp.pi * aa * vt * (aa / R) * H * D
+    P = P.subs(H, t * H).subs(aa, ansatz.subs(sol[0]))
+    ref = sp.pi * vt * (c + h * t * H) ** 4 / (4 * A * R * t * H)
+    # vartheta, A, R are overall factors and H comes with t: set them to 1 (the identity is homogeneous in each)
+    F = sp.cancel(sp.expand((t * (P - ref)).subs({vt: 1, A: 1, R: 1, H: 1})))
+    left = [taylor(F, j) for j in range(3)]  # t ref = O(1): P/ref = 1 + O(t^3) iff these vanish
+    if any(v != 0 for v in left):
+        raise ArithmeticError(f"(J.26): P_1(c) - pi vartheta (c + h* H)^4/(4 A R H) has the terms {left}")
+    return a_c
+
+
+@lru_cache(maxsize=3)
 def _thin_symbolic(order: int) -> tuple[sp.Expr, sp.Expr, sp.Expr, sp.Expr]:
-    """(J.10)-(J.12) in sympy with the engine's stages: (2.29) via ``inner_pressure``, (F.12) via the flat punch."""
+    """(J.10)-(J.12) in sympy with the engine's stages: (2.29) via ``inner_pressure``, (F.12) via the flat punch;
+    order 2: (J.26) with the radius of (SO.5).
+    """
+    if order == 2:
+        depth, force, G, pull, depth_ae, force_ae = _thin_symbolic(1)
+        a_e = sp.Symbol("a_e", positive=True)
+        smooth = sp.expand(depth - depth.subs(w, 0))
+        if sp.expand(depth.subs(w, 0) - (c + h * H) ** 2 / (2 * R)) != 0:
+            raise ArithmeticError("(J.11): delta_1 is not (c + h* H)^2/(2R)")
+        a_c = _second_order_radius()
+        a_2 = sp.Symbol("a_2", positive=True)  # printed: a_2 = a_e + m_1 H^2/c
+        return (smooth + a_c**2 / (2 * R), force, G, pull, depth_ae - a_e**2 / (2 * R) + a_2**2 / (2 * R), force_ae)
     ip = inner_pressure(GenericLayer(), Punch.paraboloid(R)).pressure
     m1 = [s for s in ip.free_symbols if s.name == "m_1"]
     p_out = ip.subs({m: 0 for m in m1}).subs({S.x1: r, S.x2: 0})  # (2.29); the m_1 term is O((H/c)^2)
@@ -556,17 +644,19 @@ def thin_layer_jkr(nu: Any, order: int = 1) -> ThinLayerJKR:
         Poisson ratio, ``-1 < nu < 1/2`` (compressible), or exactly ``1/2`` (incompressible, (J.15)).  Nearly
         incompressible layers need ``(c/H)^2 >> m_1``: see :meth:`ThinLayerJKR.error_estimate`.
     order : int
-        0 or 1 (see the module docstring); the law is valid for ``c >> H``.
+        0, 1 or (compressible only) 2 (see the module docstring); the law is valid for ``c >> H``.
 
     Returns
     -------
     ThinLayerJKR
     """
-    check_choice(order, (0, 1), "order")
+    check_choice(order, (0, 1, 2), "order")
     try:
         val = float(nu)
     except (TypeError, ValueError):
         raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}") from None
+    if val == 0.5 and order == 2:
+        raise InputError("order 2 (J.26) is derived for the compressible layer (nu < 1/2); at nu = 1/2 use order 1")
     if val == 0.5:  # (J.15)
         depth, force, G, pull, depth_ae, force_ae = _thin_incompressible(order)
         return ThinLayerJKR(val, 0.0, float(two_term_edge_shift(dps=16)), order, depth, force, G, pull, depth_ae,
@@ -575,8 +665,9 @@ def thin_layer_jkr(nu: Any, order: int = 1) -> ThinLayerJKR:
         raise InputError(f"nu must lie in (-1, 1/2) (the compressible layer, A > 0) or be 1/2, got {nu!r}")
     lay = BondedLayer(val)
     depth, force, G, pull, depth_ae, force_ae = _thin_symbolic(order)
+    r3 = float(edge_constants(lay, dps=16).r3) if order == 2 else 0.0
     return ThinLayerJKR(val, float(lay.A), float(edge_shift_exact(val, dps=16)), order, depth, force, G, pull,
-                        depth_ae, force_ae, float(lay.m(1)))
+                        depth_ae, force_ae, float(lay.m(1)), r3)
 
 
 # --------------------------------------------------------------------------- (J.13) the flat punch

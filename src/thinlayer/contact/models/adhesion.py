@@ -2,7 +2,10 @@ r"""The adhesive (JKR) rows of the model registry (issue 26 item 5): ``solve(...
 
 * ``"thin-layer-jkr"`` (preference 12, asymptotic): the paraboloid on a bonded layer by the thin-layer JKR law
   (J.11) (``-1 < nu < 1/2``) or (J.15) (``nu = 1/2``) at order 1, with its measured estimate
-  :meth:`~thinlayer.asymptotics.adhesion.ThinLayerJKR.error_estimate`; refused below ``c = 5 H``.
+  :meth:`~thinlayer.asymptotics.adhesion.ThinLayerJKR.error_estimate`; refused below ``c = 5 H``.  For
+  ``1/4 < nu < 1/2`` the regime variable (I.13) at the contact radius decides, as in the non-adhesive walk: where it
+  says ``"compressible"`` (J.11), else (nearly incompressible, ``lambda^2 = (c/H)^2/m_1`` not large) the two-term
+  law (J.24) of :mod:`thinlayer.asymptotics.adhesion_two_term` with its estimate.
 * ``"any-thickness"`` (preference 60): the sphere at any thickness, bonded or frictionless base, by the law
   (J.16)-(J.18) of :mod:`thinlayer.contact.adhesion_sphere` (the any-thickness sphere law (T.7) plus the flat punch's
   compliance), where its estimate is within ``tol`` (else the walk goes on to the direct solver).
@@ -19,6 +22,7 @@ from typing import Any
 
 from ..._lazy import lazy_function
 from ...asymptotics.solution import ValidityError
+from ...layers.kernels import BondedLayer
 from ..adhesion import AdhesiveIndentation, NoContactError, PullOff, jkr_radius, relative_estimates, slope
 from ..problem import Problem
 from .base import Model, register_model
@@ -26,6 +30,8 @@ from .base import Model, register_model
 # sympy (the law) and scipy (the direct solver) load when an adhesive problem is solved, not at import: a numeric
 # solve() of a paraboloid imports neither (issue 28 item 6, tests/contact/test_cold_start.py)
 thin_layer_jkr = lazy_function("thinlayer.asymptotics.adhesion", "thin_layer_jkr")
+two_term_jkr = lazy_function("thinlayer.asymptotics.adhesion_two_term", "two_term_jkr")
+regime = lazy_function("thinlayer.asymptotics.incompressible", "regime")
 adhesive_state = lazy_function("thinlayer.numerics.adhesion", "adhesive_state")
 flat_punch_detachment = lazy_function("thinlayer.numerics.adhesion", "flat_punch_detachment")
 jkr_curve = lazy_function("thinlayer.numerics.adhesion", "jkr_curve")
@@ -98,8 +104,25 @@ class _AdhesiveModel(Model):
                                                                       if self.asymptotic else "")])
 
 
+def _solve_law(problem: Problem, law: Any) -> tuple[Any, float]:
+    """``(law, c)``: the contact radius at which the thin-layer law meets the prescribed depth or force."""
+    R, H, mu = problem.tip.sphere_radius, problem.H, problem.mu
+    w = problem.interaction.work_of_adhesion
+    kind, target = _target(problem)
+    idx = 0 if kind == "delta" else 1
+    guess = max(MIN_C_OVER_H * H, math.sqrt(2 * R * abs(target)) if kind == "delta" else 10 * H)
+    try:
+        c = jkr_radius(lambda x: float(law.evaluate(x, H, R, w, mu)[idx]), target, guess, problem.interaction.branch,
+                       "depth" if kind == "delta" else "force")
+    except NoContactError as exc:  # near the law's pull-off: the direct solver decides
+        raise ValidityError(f"solve(): thin-layer-jkr: {exc}", "force", math.inf, problem.tol, "direct") from None
+    return law, c
+
+
 class ThinLayerJKRModel(_AdhesiveModel):
-    """The thin-layer JKR law (J.11), (J.15) at order 1 for the paraboloid on a bonded layer."""
+    """The thin-layer JKR law (J.11), (J.15) at order 1 for the paraboloid on a bonded layer; near nu = 1/2 the
+    two-term law (J.24) where the regime variable (I.13) says the layer is not compressible.
+    """
 
     name = "thin-layer-jkr"
     preference = 12
@@ -115,24 +138,24 @@ class ThinLayerJKRModel(_AdhesiveModel):
         return None
 
     def run(self, problem: Problem) -> AdhesiveIndentation:
-        law = thin_layer_jkr(problem.nu, 1)
+        nu = problem.nu
+        if 0.25 < nu < 0.5:  # the two-term law first; (I.13) at its radius picks (J.11) where compressible
+            law, c = _solve_law(problem, two_term_jkr(nu))
+            if regime(BondedLayer(nu), problem.H / c).model == "compressible":
+                law, c = _solve_law(problem, thin_layer_jkr(nu, 1))
+        else:
+            law, c = _solve_law(problem, thin_layer_jkr(nu, 1))
         R, H, mu = problem.tip.sphere_radius, problem.H, problem.mu
         w = problem.interaction.work_of_adhesion
-        branch = problem.interaction.branch
 
         def dP(c: float) -> tuple[float, float]:
             d, P = law.evaluate(c, H, R, w, mu)
             return float(d), float(P)
 
-        kind, target = _target(problem)
-        idx = 0 if kind == "delta" else 1
-        guess = max(MIN_C_OVER_H * H, math.sqrt(2 * R * abs(target)) if kind == "delta" else 10 * H)
-        try:
-            c = jkr_radius(lambda x: dP(x)[idx], target, guess, branch, "depth" if kind == "delta" else "force")
-        except NoContactError as exc:  # near the law's pull-off: the direct solver decides
-            raise ValidityError(f"solve(): thin-layer-jkr: {exc}", "force", math.inf, problem.tol, "direct") from None
+        kind, _ = _target(problem)
+        branch = problem.interaction.branch
         d, P = dP(c)
-        tag = "J.15" if law.A == 0 else "J.11"
+        tag = law.equation
         if c < MIN_C_OVER_H * H:
             raise ValidityError(f"solve(): thin-layer-jkr: c/H = {c / H:.3g} < {MIN_C_OVER_H:g} (the law's estimate "
                                 "is measured for c >= 5 H)", "force", math.inf, problem.tol, "direct")
