@@ -1,5 +1,5 @@
-"""JKR near nu = 1/2 through the two-term model (issue 26 item 1): (J.21)-(J.25) of
-:mod:`thinlayer.asymptotics.adhesion_two_term`, and the second-order compressible law (J.26).
+"""JKR near nu = 1/2 through the two-term model (issue 26 item 1): (J.19)-(J.23) of
+:mod:`thinlayer.asymptotics.adhesion_two_term`, and the second-order compressible law (J.24).
 
 Independent sources: the direct JKR solver (J.1)-(J.6) with the exact kernel (``numerics/adhesion.py``); mpmath
 quadrature and differentiation of the two-term flat punch's pressure; the limits (J.10)/(J.11) and (J.15) of
@@ -53,21 +53,21 @@ def _point(nu, lam):
 
 # --------------------------------------------------------------------------- the derivation
 def test_derivation_checks_and_limits():
-    """(J.21)-(J.24) derived in sympy; x -> 0 gives (J.15) exactly, x -> oo gives (J.10) to O(H) and the depth
+    """(J.19)-(J.22) derived in sympy; x -> 0 gives (J.15) exactly, x -> oo gives (J.10) to O(H) and the depth
     of (J.11) plus the m_1 H^2/R term of (SO.10) to O(H^2) (Hankel's expansion)."""
     der = two_term_jkr_derivation()
     what = [w for w, _ in der.checks]
-    assert what == ["(I.10) solved", "(J.21) S", "(J.22) G", "(J.22) in sigma", "(J.24) G = w",
+    assert what == ["(I.10) solved", "(J.19) S", "(J.20) G", "(J.20) in sigma", "(J.22) G = w",
                     "x -> 0: (J.15) delta", "x -> 0: (J.15) P", "x -> oo: (J.10) G",
                     "x -> oo: (J.11) delta_1 to O(H^2)"]
     assert all(rung in ("==", "expand/cancel", "simplify") for _, rung in der.checks)
     tags = [t for t, _ in der.steps()]
-    assert tags == ["J.21", "J.22", "J.24"]
+    assert tags == ["J.19", "J.20", "J.22"]
     assert all(r"\tag{" + t + "}" in tex for t, tex in der.steps())
 
 
 def test_flat_punch_stiffness_and_release_rate_mpmath():
-    """(J.21) against mpmath quadrature of p(r) r, (J.22) against mpmath's derivative of S (J.4), nu = 0.49."""
+    """(J.19) against mpmath quadrature of p(r) r, (J.20) against mpmath's derivative of S (J.4), nu = 0.49."""
     law = two_term_jkr(0.49)
     vt, m1, A = 1 / 0.51, law.m1, law.A
     k = 1 / math.sqrt(m1)
@@ -86,8 +86,8 @@ def test_flat_punch_stiffness_and_release_rate_mpmath():
 
 def test_limits_in_numbers():
     """nu = 1/2: the two-term law is (J.15) to rounding; nu = 0.49, c/H = 2000 (lambda^2 = 2.6e5): it differs from
-    (J.11) order 1 by the m_1 term of the depth, 2 m_1 (H/c)^2 relative (x -> oo in (J.24)), by O((H/c)^3) in the
-    force, and G = w holds at its d (J.22)."""
+    (J.11) order 1 by the m_1 term of the depth, 2 m_1 (H/c)^2 relative (x -> oo in (J.22)), by O((H/c)^3) in the
+    force, and G = w holds at its d (J.20)."""
     a, b = two_term_jkr(0.5), thin_layer_jkr(0.5, 1)
     for c, R, w in ((10.0, 12.5, 0.3), (40.0, 200.0, 2.0)):
         for x, y in zip(a.evaluate(c, H, R, w), b.evaluate(c, H, R, w)):
@@ -131,7 +131,7 @@ def test_table_against_direct():
 
 
 def test_pull_off_limits():
-    """(J.25): at nu = 1/2 the pull-off of (J.15) order 1; at nu = 0.49 it falls from above 2 pi w R in the crossover
+    """(J.23): at nu = 1/2 the pull-off of (J.15) order 1; at nu = 0.49 it falls from above 2 pi w R in the crossover
     (2.36 at R = 1000 H, lambda^2 = 9.6) to the compressible 2 pi w R of (J.12) (R = 1e8 H, lambda^2 = 6e5)."""
     a, b = two_term_jkr(0.5), thin_layer_jkr(0.5, 1)
     (ca, Pa), (cb, Pb) = a.pull_off(H, 1000.0, 0.1), b.pull_off(H, 1000.0, 0.1)
@@ -143,7 +143,7 @@ def test_pull_off_limits():
 
 @pytest.mark.slow
 def test_pull_off_against_direct():
-    """(J.25) against the direct JKR curve's load-controlled pull-off (J.6), nu = 0.49, R = 1000 H (c_p = 12 H,
+    """(J.23) against the direct JKR curve's load-controlled pull-off (J.6), nu = 0.49, R = 1000 H (c_p = 12 H,
     lambda^2 = 9.6): measured 6.2e-3 relative (1000 H), 5.1e-4 (10^4 H, c_p = 33 H)."""
     import numpy as np
 
@@ -165,9 +165,9 @@ def test_bad_input():
         two_term_jkr(0.49).evaluate(-1.0, H, 10.0, 0.1)
 
 
-# --------------------------------------------------------------------------- (J.26) the next order
+# --------------------------------------------------------------------------- (J.24) the next order
 def _order2(nu, lams, wf=0.05):
-    """Depth errors of (J.11) order 1 and (J.26) order 2 against the direct solver; the estimates hold."""
+    """Depth errors of (J.11) order 1 and (J.24) order 2 against the direct solver; the estimates hold."""
     lay, vt = BondedLayer(nu), 1 / (1 - nu)
     wv = wf * vt * H
     laws = thin_layer_jkr(nu, 1), thin_layer_jkr(nu, 2)
@@ -186,7 +186,7 @@ def _order2(nu, lams, wf=0.05):
 
 
 def test_second_order_depth():
-    """(J.26): nu = 0.3, c/H = 10, 20: the order-2 depth error falls like (H/c)^3 (measured 0.138 (H/c)^3 H),
+    """(J.24): nu = 0.3, c/H = 10, 20: the order-2 depth error falls like (H/c)^3 (measured 0.138 (H/c)^3 H),
     order 1's like (H/c)^2; the force is order 1's (already O((H/c)^3)); order 2 is refused at nu = 1/2."""
     (a1, a2), (b1, b2) = _order2(0.3, (10.0, 20.0))
     assert 1.8 < math.log2(a1 / b1) < 2.2
@@ -194,7 +194,7 @@ def test_second_order_depth():
     assert b2 < 0.06 * b1
     assert 0.12 < b2 * 20.0**3 / H < 0.16
     law = thin_layer_jkr(0.3, 2)
-    assert law.equation == "J.26" and r"\tag{J.26}" in law.latex()
+    assert law.equation == "J.24" and r"\tag{J.24}" in law.latex()
     assert law.force == thin_layer_jkr(0.3, 1).force
     with pytest.raises(InputError, match="order 2"):
         thin_layer_jkr(0.5, 2)
@@ -202,7 +202,7 @@ def test_second_order_depth():
 
 @pytest.mark.slow
 def test_second_order_depth_long():
-    """(J.26) from c/H = 5 to 80 at nu = 0.3 (THINLAYER_SLOW=1): slope 3.0 (order 1: 2.0); the estimate holds at
+    """(J.24) from c/H = 5 to 80 at nu = 0.3 (THINLAYER_SLOW=1): slope 3.0 (order 1: 2.0); the estimate holds at
     nu = -0.5, 0, 0.3, 0.45 and w/(vartheta H) = 0.05, 0.5."""
     lams = [5.0, 10.0, 20.0, 40.0, 80.0]
     rows = _order2(0.3, lams)
@@ -217,13 +217,13 @@ def test_second_order_depth_long():
 # --------------------------------------------------------------------------- the front door
 def test_door_uses_the_two_term_law_where_the_regime_says_so():
     """solve(..., work_of_adhesion=w), model "thin-layer-jkr": at nu = 0.49 (lambda^2 = 12, (I.13) says not
-    compressible) the answer is the two-term law (J.24) at the contact radius it reports, within its estimate of
+    compressible) the answer is the two-term law (J.22) at the contact radius it reports, within its estimate of
     the direct solver's state at that radius; at nu = 0.3 (lambda^2 = 2600) it is (J.11) as before."""
     from thinlayer import Punch, solve
 
     ans = solve(BondedLayer(0.49), Punch.paraboloid(200.0), delta0=0.3, H=H, mu=1.0, work_of_adhesion=0.05,
                 model="thin-layer-jkr", tol=0.3)
-    assert ans.model == "thin-layer-jkr" and ans.equations == ("J.24", "J.24")
+    assert ans.model == "thin-layer-jkr" and ans.equations == ("J.22", "J.22")
     c = ans.contact_radius
     d, P = (float(v) for v in two_term_jkr(0.49).evaluate(c, H, 200.0, 0.05))
     assert d == pytest.approx(0.3, rel=1e-9) and abs(P) == pytest.approx(ans.force, rel=1e-9)

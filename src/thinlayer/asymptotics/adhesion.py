@@ -62,7 +62,7 @@ has its outer contour at ``a_e = c + h H``: ``delta_1 = a_e^2/(2R)``, ``P_1 = pi
 direct solver (``tests/adhesion``, nu = 0.3, ``R = c^2/(2H)``, ``w = 0.05 vartheta H``, c/H = 5 ... 80): order 0
 falls with slope -1.0 in ``delta`` and ``P``; order 1 with slope -2.0 in ``delta`` and -3.0 in ``P``.
 
-(J.26) *Second order (the m_1 shift of the smooth edge).*  The energy route needs ``delta_1(c)``, ``P_1(c)``, ``S(c)``
+(J.24) *Second order (the m_1 shift of the smooth edge).*  The energy route needs ``delta_1(c)``, ``P_1(c)``, ``S(c)``
 and ``S'(c)``; what the engine's orders give:
 
 * the smooth state: (SO.5) puts the edge of the sphere at ``c = a - h* H - m_1 H^2/a`` (``eps = H/a``,
@@ -76,7 +76,7 @@ and ``S'(c)``; what the engine's orders give:
 
 Hence the depth to the next order::
 
-    delta = (c + h* H + m_1 H^2/c)^2/(2R) - sqrt(2 A H w c/(vartheta (c + h* H))),                    (J.26)
+    delta = (c + h* H + m_1 H^2/c)^2/(2R) - sqrt(2 A H w c/(vartheta (c + h* H))),                    (J.24)
 
 relative remainder ``O((H/c)^3)``, and ``P`` as at order 1 (its remainder is already ``O((H/c)^3)``).  The next
 order of either needs what the engine does not have: the contact radius to ``O(H^3/a^2)`` (the third-order
@@ -152,7 +152,7 @@ d = sp.Symbol("d", real=True)
 A = GenericLayer.A_symbol
 h = sp.Symbol("h^*", real=True)
 p_e, p_s = sp.symbols("p_e p_s", real=True)
-m_1 = sp.Symbol("m_1", real=True)  # m_1 (2.20) in the second-order law (J.26), as (SO.5) names it
+m_1 = sp.Symbol("m_1", real=True)  # m_1 (2.20) in the second-order law (J.24), as (SO.5) names it
 vt, H, delta = S.vartheta, S.H, S.delta0
 _H, _R = H, R  # the symbols, for methods whose arguments are named H and R
 
@@ -375,7 +375,7 @@ class ThinLayerJKR(RichDisplay):
         The same in ``a_e`` (``= c + h* H`` at orders 1 and 2, ``c`` at order 0; order 2 also
         ``a_2 = a_e + m_1 H^2/c``), as printed by ``latex()``.
     m1 : float
-        ``m_1`` (2.20) of the layer (enters the error estimate and, at order 2, the law (J.26)).
+        ``m_1`` (2.20) of the layer (enters the error estimate and, at order 2, the law (J.24)).
     r3 : float
         ``r_3`` (SO.4) of the layer (order 2's error estimate).
     """
@@ -395,8 +395,8 @@ class ThinLayerJKR(RichDisplay):
 
     @property
     def equation(self) -> str:
-        """``"J.11"`` (compressible), ``"J.26"`` (compressible, order 2) or ``"J.15"`` (``nu = 1/2``)."""
-        return "J.15" if self.A == 0 else ("J.26" if self.order == 2 else "J.11")
+        """``"J.11"`` (compressible), ``"J.24"`` (compressible, order 2) or ``"J.15"`` (``nu = 1/2``)."""
+        return "J.15" if self.A == 0 else ("J.24" if self.order == 2 else "J.11")
 
     def evaluate(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[np.ndarray,
                                                                                                      np.ndarray]:
@@ -421,7 +421,7 @@ class ThinLayerJKR(RichDisplay):
         """
         cv = positive_radii(radius)
         Hv, Rv = positive(H, "H"), positive(R, "R")
-        if self.order == 2:  # (J.26): measured error about 2.6 r_3 H^3/(c R) (see the module docstring)
+        if self.order == 2:  # (J.24): measured error about 2.6 r_3 H^3/(c R) (see the module docstring)
             first = thin_layer_jkr(self.nu, 1)
             d_a = self.evaluate(cv, Hv, Rv, work_of_adhesion, mu)[0]
             flat = np.abs(d_a - self.evaluate(cv, Hv, Rv, 0.0, mu)[0])
@@ -483,7 +483,7 @@ class ThinLayerJKR(RichDisplay):
 
 @lru_cache(maxsize=32)
 def _compiled(order: int, A_val: float, h_val: float, m1_val: float = 0.0) -> tuple:
-    """Numpy functions ``(c, H, R, w, vartheta) -> delta, P`` of (J.11), (J.26) (``A = 0``: incompressible (J.15))."""
+    """Numpy functions ``(c, H, R, w, vartheta) -> delta, P`` of (J.11), (J.24) (``A = 0``: incompressible (J.15))."""
     depth, force = (_thin_incompressible(order) if A_val == 0 else _thin_symbolic(order))[:2]
     args = (c, _H, _R, w, vt)
     num = {A: A_val, h: h_val, m_1: m1_val}
@@ -511,7 +511,7 @@ def _minimise(f, c0: float) -> tuple[float, float]:
 
 @lru_cache(maxsize=1)
 def _second_order_radius() -> sp.Expr:
-    """(J.26): ``a(c) = c + h* H + m_1 H^2/c`` from the edge shift (SO.5) of the sphere, and the check that the force
+    """(J.24): ``a(c) = c + h* H + m_1 H^2/c`` from the edge shift (SO.5) of the sphere, and the check that the force
     (SO.8)-(SO.9) at that ``a`` is ``pi vartheta (c + h* H)^4/(4 A R H)`` to relative ``O((H/c)^2)``.
     """
     bl = second_order_boundary_layer()
@@ -527,7 +527,7 @@ def _second_order_radius() -> sp.Expr:
 
     sol = sp.solve([taylor(resid, 1), taylor(resid, 2)], [a1, a2], dict=True)
     if len(sol) != 1 or sol[0] != {a1: h, a2: m_1}:
-        raise ArithmeticError(f"(J.26): the inverse of (SO.5) is not a = c + h* H + m_1 H^2/c: {sol}")
+        raise ArithmeticError(f"(J.24): the inverse of (SO.5) is not a = c + h* H + m_1 H^2/c: {sol}")
     a_c = ansatz.subs(sol[0]).subs(t, 1)
     # the force (SO.8): the inner pressure p_0 + p_1 (2.26), (4.1) over the disc of radius a plus the edge defect
     ip = inner_pressure(GenericLayer(), Punch.paraboloid(R)).pressure
@@ -542,14 +542,14 @@ def _second_order_radius() -> sp.Expr:
     F = sp.cancel(sp.expand((t * (P - ref)).subs({vt: 1, A: 1, R: 1, H: 1})))
     left = [taylor(F, j) for j in range(3)]  # t ref = O(1): P/ref = 1 + O(t^3) iff these vanish
     if any(v != 0 for v in left):
-        raise ArithmeticError(f"(J.26): P_1(c) - pi vartheta (c + h* H)^4/(4 A R H) has the terms {left}")
+        raise ArithmeticError(f"(J.24): P_1(c) - pi vartheta (c + h* H)^4/(4 A R H) has the terms {left}")
     return a_c
 
 
 @lru_cache(maxsize=3)
 def _thin_symbolic(order: int) -> tuple[sp.Expr, sp.Expr, sp.Expr, sp.Expr]:
     """(J.10)-(J.12) in sympy with the engine's stages: (2.29) via ``inner_pressure``, (F.12) via the flat punch;
-    order 2: (J.26) with the radius of (SO.5).
+    order 2: (J.24) with the radius of (SO.5).
     """
     if order == 2:
         depth, force, G, pull, depth_ae, force_ae = _thin_symbolic(1)
@@ -656,7 +656,7 @@ def thin_layer_jkr(nu: Any, order: int = 1) -> ThinLayerJKR:
     except (TypeError, ValueError):
         raise InputError(f"nu must be a number in (-1, 1/2], got {nu!r}") from None
     if val == 0.5 and order == 2:
-        raise InputError("order 2 (J.26) is derived for the compressible layer (nu < 1/2); at nu = 1/2 use order 1")
+        raise InputError("order 2 (J.24) is derived for the compressible layer (nu < 1/2); at nu = 1/2 use order 1")
     if val == 0.5:  # (J.15)
         depth, force, G, pull, depth_ae, force_ae = _thin_incompressible(order)
         return ThinLayerJKR(val, 0.0, float(two_term_edge_shift(dps=16)), order, depth, force, G, pull, depth_ae,

@@ -1,4 +1,4 @@
-r"""JKR on a nearly incompressible thin layer through the two-term model (J.21)-(J.25).
+r"""JKR on a nearly incompressible thin layer through the two-term model (J.19)-(J.23).
 
 Equation tags continue the J series of :mod:`thinlayer.asymptotics.adhesion` ((J.7)-(J.15)) after the any-thickness
 sphere law (J.16)-(J.18) of :mod:`thinlayer.contact.adhesion_sphere`.  Assumptions:
@@ -7,34 +7,34 @@ frictionless contact, the layer bonded to a rigid base (no slip), ``1/4 < nu < 1
 ``lambda^2 = (c/H)^2/m_1 ~ 3 (1 - 2 nu)(c/H)^2`` (I.13) is free: the law is uniform from the compressible
 (``lambda >> 1``, (J.11)) to the incompressible (``lambda << 1``, (J.15)) layer.
 
-(J.21) *The two-term flat punch.*  The outer problem is the two-term operator (I.10),
+(J.19) *The two-term flat punch.*  The outer problem is the two-term operator (I.10),
 ``(H/vartheta)(A p - A m_1 H^2 Delta p) = d`` on the disc, with the Dirichlet condition ``p = 0`` at the model
 edge ``a_e = c + h H`` (``h = h(nu)`` of (I.12); the edge of a flat punch is fixed, (F.15)).  With
 ``k^2 = 1/(m_1 H^2)`` the regular solution is ``p = (vartheta d/(A H))(1 - I_0(k r)/I_0(k a_e))`` and, since
 ``int_0^{a_e} I_0(k r) r dr = a_e I_1(k a_e)/k``::
 
-    S = dP/dd = (pi vartheta a_e^2/(A H)) (1 - 2 rho(x)/x),   rho = I_1/I_0,   x = k a_e,              (J.21)
+    S = dP/dd = (pi vartheta a_e^2/(A H)) (1 - 2 rho(x)/x),   rho = I_1/I_0,   x = k a_e,              (J.19)
 
 that is ``kappa = S/(4 vartheta c)``, (F.15).
 
-(J.22) *Energy release rate.*  By (J.4) ``G = d^2 S'(c)/(4 pi c)``; ``rho' = 1 - rho/x - rho^2`` makes the terms in
+(J.20) *Energy release rate.*  By (J.4) ``G = d^2 S'(c)/(4 pi c)``; ``rho' = 1 - rho/x - rho^2`` makes the terms in
 ``rho/x`` cancel, ``dS/da_e = 2 pi vartheta a_e rho^2/(A H)``::
 
-    G = vartheta d^2 a_e rho(x)^2/(2 A H c) = vartheta d^2 a_e^3/(2 c_1 H^3 c sigma(x)^2),   sigma = x/rho,   (J.22)
+    G = vartheta d^2 a_e rho(x)^2/(2 A H c) = vartheta d^2 a_e^3/(2 c_1 H^3 c sigma(x)^2),   sigma = x/rho,   (J.20)
 
 ``c_1 = A m_1``.  ``x -> oo`` (``rho -> 1 - 1/(2x)``): ``a_e rho^2 = c + h^* H + O(H^2/c)`` with
 ``h = h^* + sqrt(m_1)`` (I.12), the compressible (J.10); ``x -> 0`` (``sigma -> 2``): the incompressible (J.15).
 
-(J.23) *The smooth part* is the two-term sphere (I.11) at the model edge ``a_e``:
+(J.21) *The smooth part* is the two-term sphere (I.11) at the model edge ``a_e``:
 ``delta_1 = a_e^2 (1 - 2 psi(x))/(2R)``, ``P_1 = pi vartheta a_e^6 chi(x)/(R c_1 H^3)``.
 
-(J.24) *JKR,* ``G = w`` with the tensile root (J.5)::
+(J.22) *JKR,* ``G = w`` with the tensile root (J.5)::
 
-    d = -sigma(x) sqrt(2 c_1 H^3 w c/(vartheta a_e^3)),   delta = delta_1 + d,   P = P_1 + S d,          (J.24)
+    d = -sigma(x) sqrt(2 c_1 H^3 w c/(vartheta a_e^3)),   delta = delta_1 + d,   P = P_1 + S d,          (J.22)
 
 finite at ``nu = 1/2`` (``c_1 = 2/3``, ``sigma(0) = 2``, ``S = 3 pi vartheta a_e^4/(16 H^3)``).
 
-(J.25) *Pull-off* under load control: ``-min_c P(c)`` (numerical minimum).  In the limits ``2 pi w R``
+(J.23) *Pull-off* under load control: ``-min_c P(c)`` (numerical minimum).  In the limits ``2 pi w R``
 (compressible, (J.12)) and ``3 pi w R`` (incompressible, (J.15)); at nu = 0.49 it is ``2.36 pi w R`` at
 ``R = 1000 H`` (``c_p = 12 H``, ``lambda^2 = 9.6``), within 6.2e-3 of the direct solver's (5.1e-4 at ``R = 10^4 H``).
 
@@ -45,7 +45,7 @@ solver (``tests/adhesion/test_two_term_jkr.py``; ``R = c^2/(2H)``, ``w`` such th
 errors of ``delta`` and ``P``:
 
     ======  ====  =======  =================  =================  =================
-    nu      c/H   lambda^2 two-term (J.24)    compressible (J.11) incompressible (J.15)
+    nu      c/H   lambda^2 two-term (J.22)    compressible (J.11) incompressible (J.15)
     ======  ====  =======  =================  =================  =================
     0.45     5     11.5    2.4e-2   5.9e-2    0.19    0.20       3.9e-2  1.4
     0.45    40     733     3.5e-5   1.6e-4    3.6e-3  4.1e-4     0.30    41
@@ -135,19 +135,19 @@ def _trunc_inv(q: sp.Expr, var: sp.Symbol, n: int) -> sp.Expr:
 
 @dataclass(frozen=True)
 class TwoTermJKRDerivation(RichDisplay):
-    """The steps (J.21)-(J.24) in sympy, with the rungs of the checks that held.
+    """The steps (J.19)-(J.22) in sympy, with the rungs of the checks that held.
 
     Attributes
     ----------
     pressure : sympy.Expr
-        ``p(r)`` of the two-term flat punch (J.21) in ``r, k, a_e, d, A, H, vartheta``.
+        ``p(r)`` of the two-term flat punch (J.19) in ``r, k, a_e, d, A, H, vartheta``.
     stiffness : sympy.Expr
-        ``S`` (J.21) in ``rho(x)``, ``x = k a_e``.
+        ``S`` (J.19) in ``rho(x)``, ``x = k a_e``.
     release_rate : sympy.Expr
-        ``G`` (J.22) in ``d, a_e, c, sigma(x)``.
+        ``G`` (J.20) in ``d, a_e, c, sigma(x)``.
     depth, force : sympy.Expr
         sympy.Expr
-        ``delta(c)`` and ``P(c)`` of (J.24) in ``a_e, x`` and the functions ``psi, chi, sigma`` of ``x``.
+        ``delta(c)`` and ``P(c)`` of (J.22) in ``a_e, x`` and the functions ``psi, chi, sigma`` of ``x``.
     checks : tuple of (str, str)
         ``(what, rung)`` of every symbolic check.
     """
@@ -159,62 +159,62 @@ class TwoTermJKRDerivation(RichDisplay):
     force: sp.Expr
     checks: tuple
 
-    equation = "J.21-J.24"
+    equation = "J.19-J.22"
 
     def steps(self) -> list[tuple[str, str]]:
         """``(tag, LaTeX)`` of every step."""
         X = sp.Symbol("x")
         f = {fn(x): sp.Function(fn.__name__)(X) for fn in (rho_f, sigma_f, psi_f, chi_f, psiF_f)}
-        return [("J.21", rf"p = {normal_latex(self.pressure)},\quad S = {normal_latex(self.stiffness.subs(f))}"
-                         r",\quad \rho = \frac{I_1}{I_0},\ x = k a_e,\ k^2 = \frac{1}{m_1 H^2} \tag{J.21}"),
-                ("J.22", rf"G = \frac{{d^2 S'(c)}}{{4\pi c}} = {normal_latex(self.release_rate.subs(f))},"
-                         r"\quad \sigma = \frac{x}{\rho} \tag{J.22}"),
-                ("J.24", rf"\delta = {normal_latex(self.depth.subs(f))},\quad P = {normal_latex(self.force.subs(f))},"
-                         r"\quad a_e = c + h H \tag{J.24}")]
+        return [("J.19", rf"p = {normal_latex(self.pressure)},\quad S = {normal_latex(self.stiffness.subs(f))}"
+                         r",\quad \rho = \frac{I_1}{I_0},\ x = k a_e,\ k^2 = \frac{1}{m_1 H^2} \tag{J.19}"),
+                ("J.20", rf"G = \frac{{d^2 S'(c)}}{{4\pi c}} = {normal_latex(self.release_rate.subs(f))},"
+                         r"\quad \sigma = \frac{x}{\rho} \tag{J.20}"),
+                ("J.22", rf"\delta = {normal_latex(self.depth.subs(f))},\quad P = {normal_latex(self.force.subs(f))},"
+                         r"\quad a_e = c + h H \tag{J.22}")]
 
     def latex(self) -> str:
         return "\n".join(rf"\[ {tex} \]" for _, tex in self.steps())
 
     def text_lines(self) -> list[str]:
-        return ["TwoTermJKRDerivation: JKR through the two-term model (I.10)   (J.21)-(J.24)",
+        return ["TwoTermJKRDerivation: JKR through the two-term model (I.10)   (J.19)-(J.22)",
                 f"  S = {self.stiffness}", f"  G = {self.release_rate}", f"  delta = {self.depth}",
                 f"  P = {self.force}", *(f"  check {what}: {rung}" for what, rung in self.checks)]
 
 
 @lru_cache(maxsize=1)
 def two_term_jkr_derivation() -> TwoTermJKRDerivation:
-    """Carry out (J.21)-(J.24) in sympy and check the limits (J.10)/(J.11) and (J.15) (a few seconds, cached)."""
+    """Carry out (J.19)-(J.22) in sympy and check the limits (J.10)/(J.11) and (J.15) (a few seconds, cached)."""
     checks = []
-    # (J.21) the flat punch in the two-term model: (H/vartheta)(A p - A m_1 H^2 Delta p) = d, p(a_e) = 0
+    # (J.19) the flat punch in the two-term model: (H/vartheta)(A p - A m_1 H^2 Delta p) = d, p(a_e) = 0
     B = sp.Symbol("B")
     p = vt * d / (A * H) + B * sp.besseli(0, k * r)
     op = H / vt * (A * p - A * m1 * H**2 * (sp.diff(p, r, 2) + sp.diff(p, r) / r))
-    checks.append(("(I.10) solved", _ladder(sp.simplify(op.subs(m1, 1 / (k * H) ** 2)), d, "(J.21) the ODE")))
+    checks.append(("(I.10) solved", _ladder(sp.simplify(op.subs(m1, 1 / (k * H) ** 2)), d, "(J.19) the ODE")))
     p = p.subs(B, sp.solve(p.subs(r, a_e), B)[0])
     P = 2 * sp.pi * sp.integrate(sp.expand(p * r), (r, 0, a_e))
     S_c = sp.diff(P, d)
     S_rho = sp.pi * vt * a_e**2 / (A * H) * (1 - 2 * rho_f(x) / x)
     back = {rho_f(x): sp.besseli(1, k * a_e) / sp.besseli(0, k * a_e), x: k * a_e}
-    checks.append(("(J.21) S", _ladder(S_c, S_rho.subs(back), "(J.21) the stiffness")))
-    # (J.22) G = d^2 S'(c)/(4 pi c), a_e = c + h H (dS/dc = dS/da_e)
+    checks.append(("(J.19) S", _ladder(S_c, S_rho.subs(back), "(J.19) the stiffness")))
+    # (J.20) G = d^2 S'(c)/(4 pi c), a_e = c + h H (dS/dc = dS/da_e)
     dS = sp.diff(S_c, a_e)
     G_rho = vt * d**2 * a_e * rho_f(x) ** 2 / (2 * A * H * c)
-    checks.append(("(J.22) G", _ladder(sp.simplify(sp.expand_func(d**2 * dS / (4 * sp.pi * c))),
-                                       sp.expand_func(G_rho.subs(back)), "(J.22) the release rate")))
+    checks.append(("(J.20) G", _ladder(sp.simplify(sp.expand_func(d**2 * dS / (4 * sp.pi * c))),
+                                       sp.expand_func(G_rho.subs(back)), "(J.20) the release rate")))
     G = vt * d**2 * a_e**3 / (2 * c1 * H**3 * c * sigma_f(x) ** 2)  # rho = x/sigma, x^2 = a_e^2/(m_1 H^2)
-    checks.append(("(J.22) in sigma", _ladder(G.subs({sigma_f(x): x / rho_f(x)}).subs(x, a_e / (sp.sqrt(m1) * H))
-                                              .subs(c1, A * m1), G_rho.subs(x, a_e / (sp.sqrt(m1) * H)), "(J.22)")))
+    checks.append(("(J.20) in sigma", _ladder(G.subs({sigma_f(x): x / rho_f(x)}).subs(x, a_e / (sp.sqrt(m1) * H))
+                                              .subs(c1, A * m1), G_rho.subs(x, a_e / (sp.sqrt(m1) * H)), "(J.20)")))
     # mpmath: dS/da_e against a numerical derivative, one point
     num = {vt: 1.3, A: 0.2, H: 1.0, k: 0.7, d: -0.1, c: 3.0}
     f = sp.lambdify(a_e, S_c.subs(num), "mpmath")
     exact = sp.lambdify(a_e, (2 * sp.pi * vt * a_e * (sp.besseli(1, k * a_e) / sp.besseli(0, k * a_e)) ** 2
                               / (A * H)).subs(num), "mpmath")
     if abs(mpmath.diff(f, 4.0) / exact(4.0) - 1) > 1e-12:
-        raise ArithmeticError("(J.22): dS/da_e differs from 2 pi vartheta a_e rho^2/(A H) numerically")
-    # (J.24) G = w, the tensile root; the smooth part (J.23)
+        raise ArithmeticError("(J.20): dS/da_e differs from 2 pi vartheta a_e rho^2/(A H) numerically")
+    # (J.22) G = w, the tensile root; the smooth part (J.21)
     d_jkr = -sigma_f(x) * sp.sqrt(2 * c1 * H**3 * w * c / (vt * a_e**3))
-    checks.append(("(J.24) G = w", _ladder(G.subs(d, d_jkr), w, "(J.24)")))
-    S_psi = sp.pi * vt * a_e**4 * psiF_f(x) / (8 * c1 * H**3)  # (J.21) with 1 - 2 rho/x = x^2 psi_F/8 (F.15)
+    checks.append(("(J.22) G = w", _ladder(G.subs(d, d_jkr), w, "(J.22)")))
+    S_psi = sp.pi * vt * a_e**4 * psiF_f(x) / (8 * c1 * H**3)  # (J.19) with 1 - 2 rho/x = x^2 psi_F/8 (F.15)
     depth = a_e**2 * (1 - 2 * psi_f(x)) / (2 * R) + d_jkr
     force = sp.pi * vt * a_e**6 * chi_f(x) / (R * c1 * H**3) + S_psi * d_jkr
     # limit x -> 0 (k -> 0 at fixed c_1): (J.15).  Maclaurin series of rho, psi, chi, psi_F
@@ -282,7 +282,7 @@ def _rho(xv: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class TwoTermJKR(RichDisplay):
-    """Thin-layer JKR for the paraboloid ``r^2/(2R)`` on a nearly incompressible bonded layer (J.21)-(J.25).
+    """Thin-layer JKR for the paraboloid ``r^2/(2R)`` on a nearly incompressible bonded layer (J.19)-(J.23).
 
     Attributes
     ----------
@@ -301,11 +301,11 @@ class TwoTermJKR(RichDisplay):
     c1: float
     h: float
 
-    equation = "J.24"
+    equation = "J.22"
 
     @property
     def derivation(self) -> TwoTermJKRDerivation:
-        """The symbolic steps (J.21)-(J.24) (:func:`two_term_jkr_derivation`, cached; seconds of sympy)."""
+        """The symbolic steps (J.19)-(J.22) (:func:`two_term_jkr_derivation`, cached; seconds of sympy)."""
         return two_term_jkr_derivation()
 
     def _parts(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any):
@@ -316,22 +316,22 @@ class TwoTermJKR(RichDisplay):
         xv = self._x(ae, Hv)
         sigma = self._sigma(xv)
         layer = BondedLayer(self.nu) if self.A > 0 else IncompressibleLayer()
-        d1, P1 = two_term_sphere(layer).lambdify()(ae, Rv, Hv, positive(mu, "mu"))  # (I.11) at a_e (J.23)
-        Sv = np.pi * vtv * ae**4 * flat_psi(xv) / (8 * self.c1 * Hv**3)  # (J.21)
-        dj = -sigma * np.sqrt(2 * self.c1 * Hv**3 * wv * cv / (vtv * ae**3))  # (J.24)
+        d1, P1 = two_term_sphere(layer).lambdify()(ae, Rv, Hv, positive(mu, "mu"))  # (I.11) at a_e (J.21)
+        Sv = np.pi * vtv * ae**4 * flat_psi(xv) / (8 * self.c1 * Hv**3)  # (J.19)
+        dj = -sigma * np.sqrt(2 * self.c1 * Hv**3 * wv * cv / (vtv * ae**3))  # (J.22)
         return np.asarray(d1, float), np.asarray(P1, float), Sv, dj
 
     def _x(self, a_e: np.ndarray, H: float) -> np.ndarray:
         return a_e / (math.sqrt(self.m1) * H) if self.A > 0 else np.zeros_like(a_e)
 
     def stiffness(self, radius: Any, H: Any, mu: Any = 1.0) -> np.ndarray:
-        """``S = dP/dd`` of the two-term flat punch of contact radius ``c`` (J.21), vectorised in ``c``."""
+        """``S = dP/dd`` of the two-term flat punch of contact radius ``c`` (J.19), vectorised in ``c``."""
         cv, Hv = positive_radii(radius), positive(H, "H")
         ae = cv + self.h * Hv
         return np.pi * positive(mu, "mu") / (1 - self.nu) * ae**4 * flat_psi(self._x(ae, Hv)) / (8 * self.c1 * Hv**3)
 
     def release_rate(self, radius: Any, flat_depth: Any, H: Any, mu: Any = 1.0) -> np.ndarray:
-        """``G = vartheta d^2 a_e^3/(2 c_1 H^3 c sigma(x)^2)`` (J.22), vectorised in ``c``."""
+        """``G = vartheta d^2 a_e^3/(2 c_1 H^3 c sigma(x)^2)`` (J.20), vectorised in ``c``."""
         cv, Hv = positive_radii(radius), positive(H, "H")
         ae = cv + self.h * Hv
         sig = self._sigma(self._x(ae, Hv))
@@ -345,14 +345,14 @@ class TwoTermJKR(RichDisplay):
 
     def evaluate(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0
                  ) -> tuple[np.ndarray, np.ndarray]:
-        """``(delta, P)`` of (J.24), vectorised in the contact radius ``c``; ``vartheta = mu/(1 - nu)``."""
+        """``(delta, P)`` of (J.22), vectorised in the contact radius ``c``; ``vartheta = mu/(1 - nu)``."""
         d1, P1, Sv, dj = self._parts(radius, H, R, work_of_adhesion, mu)
         return d1 + dj, P1 + Sv * dj
 
     def error_estimate(self, radius: Any, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0
                        ) -> tuple[np.ndarray, np.ndarray]:
         """Absolute error estimates ``(delta, P)``: ``2 (h H/c)^2`` times the flat part ``|d|`` and the smooth depth,
-        ``2 (h H/c)^2 |P|`` plus ``2 (h H/c)^2 S |d|`` (the first neglected order of (I.11), (J.21) is
+        ``2 (h H/c)^2 |P|`` plus ``2 (h H/c)^2 S |d|`` (the first neglected order of (I.11), (J.19) is
         ``(H/c)^2`` relative).  An envelope of the remainders measured against the direct solver
         (``tests/adhesion/test_two_term_jkr.py``), not a derived bound.
         """
@@ -362,7 +362,7 @@ class TwoTermJKR(RichDisplay):
         return e * (np.abs(d1) + np.abs(dj)), e * (np.abs(P1) + np.abs(Sv * dj))
 
     def pull_off(self, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[float, float]:
-        """``(c, -min P)`` under load control (J.25): a grid, then golden-section refinement."""
+        """``(c, -min P)`` under load control (J.23): a grid, then golden-section refinement."""
         from scipy import optimize
 
         Hv, Rv, wv = positive(H, "H"), positive(R, "R"), positive(work_of_adhesion, "work_of_adhesion")
@@ -378,14 +378,14 @@ class TwoTermJKR(RichDisplay):
         return self.derivation.latex()
 
     def text_lines(self) -> list[str]:
-        return [f"TwoTermJKR: paraboloid on a bonded layer, nu = {self.nu:g}, two-term model   (J.21)-(J.25)",
+        return [f"TwoTermJKR: paraboloid on a bonded layer, nu = {self.nu:g}, two-term model   (J.19)-(J.23)",
                 f"  delta = {self.derivation.depth}", f"  P = {self.derivation.force}",
                 f"  a_e = c + h H, x = a_e/(sqrt(m_1) H); A = {self.A:.12g}, m_1 = {self.m1:.12g}, "
                 f"c_1 = {self.c1:.12g}, h = {self.h:.12g}"]
 
 
 def two_term_jkr(nu: Any) -> TwoTermJKR:
-    """JKR of the paraboloid on a nearly incompressible bonded layer through the two-term model (J.21)-(J.25).
+    """JKR of the paraboloid on a nearly incompressible bonded layer through the two-term model (J.19)-(J.23).
 
     Parameters
     ----------
@@ -400,7 +400,7 @@ def two_term_jkr(nu: Any) -> TwoTermJKR:
     Examples
     --------
     The JKR state at the contact radius ``c = 10 H`` of a sphere ``R = 50 H`` on a layer with nu = 0.49
-    (``lambda^2 = 6.5``: neither (J.11) nor (J.15) holds); its flat part satisfies ``G = w`` (J.22):
+    (``lambda^2 = 6.5``: neither (J.11) nor (J.15) holds); its flat part satisfies ``G = w`` (J.20):
 
     >>> law = two_term_jkr(0.49)
     >>> delta, P = law.evaluate(10.0, H=1.0, R=50.0, work_of_adhesion=0.05)

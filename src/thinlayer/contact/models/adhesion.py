@@ -5,7 +5,7 @@ r"""The adhesive (JKR) rows of the model registry (issue 26 item 5): ``solve(...
   :meth:`~thinlayer.asymptotics.adhesion.ThinLayerJKR.error_estimate`; refused below ``c = 5 H``.  For
   ``1/4 < nu < 1/2`` the regime variable (I.13) at the contact radius decides, as in the non-adhesive walk: where it
   says ``"compressible"`` (J.11), else (nearly incompressible, ``lambda^2 = (c/H)^2/m_1`` not large) the two-term
-  law (J.24) of :mod:`thinlayer.asymptotics.adhesion_two_term` with its estimate.
+  law (J.22) of :mod:`thinlayer.asymptotics.adhesion_two_term` with its estimate.
 * ``"any-thickness"`` (preference 60): the sphere at any thickness, bonded or frictionless base, by the law
   (J.16)-(J.18) of :mod:`thinlayer.contact.adhesion_sphere` (the any-thickness sphere law (T.7) plus the flat punch's
   compliance), where its estimate is within ``tol`` (else the walk goes on to the direct solver).
@@ -121,7 +121,7 @@ def _solve_law(problem: Problem, law: Any) -> tuple[Any, float]:
 
 class ThinLayerJKRModel(_AdhesiveModel):
     """The thin-layer JKR law (J.11), (J.15) at order 1 for the paraboloid on a bonded layer; near nu = 1/2 the
-    two-term law (J.24) where the regime variable (I.13) says the layer is not compressible.
+    two-term law (J.22) where the regime variable (I.13) says the layer is not compressible.
     """
 
     name = "thin-layer-jkr"

@@ -1,9 +1,9 @@
-r"""The report's section on adhesion (JKR) of the sphere on the layer (J.1)-(J.26), from an ``[adhesion]`` table.
+r"""The report's section on adhesion (JKR) of the sphere on the layer (J.1)-(J.24), from an ``[adhesion]`` table.
 
 The laws are the engine's own derivations: the superposition and the energy release rate (J.1)-(J.5)
-(:mod:`thinlayer.numerics.adhesion`), the thin-layer JKR law (J.7)-(J.15) and its second-order depth (J.26)
+(:mod:`thinlayer.numerics.adhesion`), the thin-layer JKR law (J.7)-(J.15) and its second-order depth (J.24)
 (:func:`thinlayer.asymptotics.adhesion.adhesion_derivation`, :func:`~thinlayer.asymptotics.adhesion.thin_layer_jkr`),
-the two-term law near nu = 1/2 (J.21)-(J.25) (:mod:`thinlayer.asymptotics.adhesion_two_term`, for a bonded layer
+the two-term law near nu = 1/2 (J.19)-(J.23) (:mod:`thinlayer.asymptotics.adhesion_two_term`, for a bonded layer
 with ``1/4 < nu <= 1/2``) and the any-thickness law (J.16)-(J.18) (:mod:`thinlayer.contact.adhesion_sphere`),
 whose pull-off forces over ``H/R`` are tabulated and whose JKR curves on the layer are drawn against the
 half-space's (JKR 1971).
@@ -140,7 +140,7 @@ def _draw(rows: list, half: tuple, scale: float, R: float, path: Path, force: bo
 
 
 def _two_term(doc: Any, nu: float) -> None:
-    """The two-term JKR law (J.21)-(J.24) of the nearly incompressible bonded layer, with its assumptions."""
+    """The two-term JKR law (J.19)-(J.22) of the nearly incompressible bonded layer, with its assumptions."""
     from ...asymptotics.adhesion_two_term import two_term_jkr
 
     law = two_term_jkr(nu)
@@ -158,7 +158,7 @@ def _two_term(doc: Any, nu: float) -> None:
     doc.text(r"with $\psi = (x I_0/I_1 - 2)/x^2$, $\chi = (1/4 - \psi)/x^2$ of (I.11) and $\psi_F = "
              r"8(1 - 2 I_1/(x I_0))/x^2$ of (F.15). As $x \to 0$ this is (J.15) exactly; as $x \to \infty$ "
              r"(Hankel's expansion) $G$ is (J.10) to $O(H/c)$ and $\delta_1$ is (J.11) plus the $m_1 H^2/R$ of the "
-             r"second order (J.26), both checked in \texttt{sympy}. Against the direct solver at "
+             r"second order (J.24), both checked in \texttt{sympy}. Against the direct solver at "
              r"$\nu = 0.45$, $0.49$, $0.499$ and $c/H = 5$ to $40$ the two-term law's error falls like $(H/c)^3$ "
              r"(at $c/H = 20$: $3\times 10^{-4}$ to $10^{-2}$ in $\delta$) where (J.11) and (J.15) err by tens of "
              rf"percent. Here $\nu = {num(nu, 6)}$: $m_1 = {m1}$, $h = {num(law.h, 8)}$, $c_1 = {num(law.c1, 8)}$.")
@@ -225,7 +225,7 @@ def render(doc: Any, der: Any, context: Any) -> None:
                  r"depth to the next order (the force unchanged; its next order needs the contact radius to "
                  rf"$O(H^3/a^2)$, not derived), with $m_1 = {num(law2.m1, 8)}$:")
         doc.group([rf"\delta = {nl(law2.depth_display)},\quad a_e = c + h^* H,\quad a_2 = a_e + \frac{{m_1 H^2}}{{c}}"],
-                  "J.26")
+                  "J.24")
     if not layer.shear_free_base and 0.25 < nu <= 0.5:
         _two_term(doc, nu)
     doc.text(r"\emph{Any thickness.} $\delta_1$, $P_1$ from the sphere's any-thickness law (T.7) at the contact "
