@@ -294,3 +294,20 @@ def test_incompressible_sphere_against_direct():
         rem.append((abs(float(d) - st.delta), abs(float(P) - st.force) / st.force))
     assert 1.8 < math.log2(rem[1][0] / rem[2][0]) < 2.2
     assert math.log2(rem[1][1] / rem[2][1]) > 2.3
+
+
+def test_thin_layer_pull_off_is_finite_where_the_edge_shift_is_negative():
+    """Near nu = 1/2 the edge shift h* of (3.18) is negative (nu = 0.49: h* = -2.69), so (J.11) at order 1 has no
+    value for c < -h* H; the pull-off search used to start at c = 0.01 H and returned nan.  Order 0 is checked against
+    the closed form 2 pi w R of (J.12); order 1 must be finite, positive and at a contact radius with a_e > 0."""
+    import math
+
+    from thinlayer.asymptotics.adhesion import thin_layer_jkr
+
+    H, R, w = 1.0, 1000.0, 0.01
+    for nu in (0.45, 0.49):
+        c0, P0 = thin_layer_jkr(nu, order=0).pull_off(H, R, w)
+        assert abs(P0 / (2 * math.pi * w * R) - 1) < 1e-9
+        law = thin_layer_jkr(nu, order=1)
+        c1, P1 = law.pull_off(H, R, w)
+        assert math.isfinite(P1) and P1 > 0 and c1 + law.h * H > 0

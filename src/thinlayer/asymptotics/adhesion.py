@@ -459,8 +459,16 @@ class ThinLayerJKR(RichDisplay):
     def pull_off(self, H: Any, R: Any, work_of_adhesion: Any, mu: Any = 1.0) -> tuple[float, float]:
         """``(c, -min P)`` under load control from (J.11) (numerical minimum; order 0: ``2 pi w R``)."""
         Hv, Rv, wv = positive(H, "H"), positive(R, "R"), positive(work_of_adhesion, "work_of_adhesion")
-        grid = Hv * np.geomspace(1e-2, 1e6, 801)  # the minimum of P(c), located on a grid, refined
-        c0 = float(grid[int(np.argmin(self.evaluate(grid, Hv, Rv, wv, mu)[1]))])
+        # the minimum of P(c), located on a grid, refined; the law needs a_e = c + h* H > 0 (h* < 0 near nu = 1/2),
+        # so the grid starts beyond -h* H: a point with no value (nan) is never taken for the minimum
+        c_min = max(1e-2, -2.0 * self.h) if self.order else 1e-2
+        grid = Hv * np.geomspace(c_min, 1e6, 801)
+        with np.errstate(invalid="ignore"):
+            P = np.asarray(self.evaluate(grid, Hv, Rv, wv, mu)[1], dtype=float)
+        if not np.isfinite(P).any():
+            raise InputError(f"ThinLayerJKR.pull_off: the law (nu = {self.nu:g}, order {self.order}) has no finite "
+                             f"force for c/H in [{c_min:g}, 1e6]")
+        c0 = float(grid[int(np.nanargmin(np.where(np.isfinite(P), P, np.nan)))])
         return _minimise(lambda x: float(self.evaluate(x, Hv, Rv, wv, mu)[1]), c0)
 
     def latex(self) -> str:
