@@ -109,13 +109,17 @@ def test_fit_tip_options(tmp_path, capsys):
          for x in d]
     path = tmp_path / "curve.csv"
     path.write_text("".join(f"{float(a)!r},{float(b)!r}\n" for a, b in zip(d, P)))
-    assert main(["fit", str(path), "--cone", "70", "--H", "0.2", "--nu", "0.3", "--json"]) == 0
+    assert main(["fit", str(path), "--cone", "70", "--H", "0.2", "--nu", "0.3", "--json", "--model", "tip-law"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["model"] == "tip-law" and out["R"] is None and out["tip"] == "cone half_angle = 70"
     assert abs(out["E"] / 3 - 1) <= out["model_error"] < 0.05
+    # the default: the cone's any-thickness law (T.9), within its own estimate
+    assert main(["fit", str(path), "--cone", "70", "--H", "0.2", "--nu", "0.3", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["model"] == "any-thickness" and abs(out["E"] / 3 - 1) <= out["model_error"] < 1e-3
     assert main(["fit", str(path), "--cone", "70", "--R", "3", "--H", "0.2", "--nu", "0.3"]) == 2
     assert "got --R and --cone" in capsys.readouterr().err
     assert main(["fit", str(path), "--H", "0.2", "--nu", "0.3"]) == 2
     assert main(["fit", str(path), "--cone", "70", "--H", "0.2", "--nu", "0.3", "--model", "hertz"]) == 2
     err = capsys.readouterr().err
-    assert "models that fit it: tip-law, direct" in err and len(err.strip().splitlines()) == 2  # two commands
+    assert "models that fit it: tip-law, any-thickness, direct" in err and len(err.strip().splitlines()) == 2  # two commands

@@ -43,12 +43,29 @@ at unit shear modulus, ``P = int_0^{t1} G(t - s) dF(delta(s))``.
 (T6) *Conditions.*  (T3)-(T5) satisfy the contact equations exactly on a layer; they are the solution of the
 unilateral problem (unique) when
 (C1) nu is constant (else A depends on time and (T1) fails: no exact result then);
-(C2) ``p_e(r; a)`` does not decrease with a at any r (then ``p >= 0``); checked for the sphere on bonded and
-frictionless layers (tests/viscoelastic/test_ting.py, direct solver's pressure at growing radii);
+(C2) ``p_e(r; a)`` does not decrease with a at any r (then ``p >= 0``); checked for the sphere and the cone (70 deg)
+on bonded nu = 0.3, 1/2 and frictionless layers, ``c/H`` from 0.5 to 8 (tests/viscoelastic/test_ting.py,
+test_ting_tips.py: the elastic direct solver's pressure at growing radii);
 (C3) the gap stays open outside ``a(t)``: not proved here; measured by the direct solver at every step ((V.8)
 ``min_gap``), which also solves the problem without (T3).
-The flat punch (fixed contact) is outside: its contact does not shrink, it lifts off.  Ting (1968) is needed for a
-radius with several maxima; those times are flagged here.
+Ting (1968) is needed for a radius with several maxima; those times are flagged here.
+
+(T7) *The flat punch* (fixed contact, ``Punch.flat(a)``).  Its contact is the face ``r <= a`` as long as the force is
+compressive, so Ting reduces to Lee-Radok with ``t1 = t`` at every time, for a falling depth too: with the contact
+fixed the problem is linear, ``p(r, t) = p_e(r) Y(t)/delta_e`` with ``Y(t) = int_0^t E(t - s) dU(s)`` and ``U`` the
+depth of the surface under the face, and ``P = S Y/(2 (1 + nu))``, ``S`` the elastic stiffness at unit shear modulus
+(``P_e = S delta``, :func:`thinlayer.contact.flat_punch.flat_punch_stiffness`).  There is no adhesion, so the
+force cannot turn tensile: when ``Y`` would fall below 0 the punch lifts off, the force is 0, and the surface under
+the face (uniform, since the pressure has kept the shape ``p_e``: ``u = U`` on ``r <= a``) recovers freely, ``Y = 0``:
+``U`` follows the creep recovery of the history before the lift-off and no longer the punch -- the depth history
+decouples.  The punch touches again when its depth reaches ``U``.  Both phases are one complementarity per time,
+``U = max(delta, U_free)`` with ``Y(U_free) = 0``, solved exactly for ``U`` linear in time between the nodes
+(``surface_depth`` of the result).  (C2) holds (``p_e > 0`` on the face), (C3) has no content (nothing of the punch
+lies outside the face).  Checked against the direct solver with a fixed contact face (numerics/viscoelastic (V.10)).
+
+The cone: Ting's construction above, with the cone's elastic law at any thickness (T.9) (its table,
+:func:`thinlayer.contact.any_thickness_tips.cone_law`); (C2) checked on three layers like the sphere's
+(tests/viscoelastic/test_ting_tips.py).
 
 Measured against the direct solver (sphere ``R = 1``, SLS ``E0/E_inf = 3``, ``tau = 0.2``, ``delta = 0.02 min(t,
 1 - t)``; the solver at 201 steps x 200 nodes, Ting on 20,001 steps; largest relative force difference while
@@ -60,6 +77,12 @@ unloading at ``P > 0.1 P_max``, in brackets at 101 steps x 100 nodes)::
     frictionless 0.3  3.3e-5 (1.3e-4)  3.3e-5 (1.3e-4)  4.0e-5 (1.5e-4)  4.8e-5
 
 Cone (70 degrees) on the half-space: 7.9e-5 (101 x 100), 2.0e-5 (201 x 200) against Ting on 2,001 steps.
+The acceptance grid (tests/viscoelastic/test_visco_acceptance.py: sphere, cone 70, flat punch x bonded nu = 1/2, 0.3,
+frictionless x ``a_max/H`` ~ 0.1 to 10 x ramp-hold, approach-retract, oscillation; the solver at 60 and 120 steps per
+unit time, nodes doubled too): every Ting cell within 1.7e-4 of the solver (a third of the solver's own refinement
+change: its second-order error), and the Richardson value within 5.1e-5 (cone) and 3.6e-5 (sphere) of Ting; the
+flat punch (T7), lift-off included, within 1.4e-7 by Richardson over the exact or thick-layer stiffness, and within
+the thin-layer stiffness's own error (2.8e-4, estimate 8.5e-4) at a/H = 5.
 The difference falls 4x when the solver's steps and nodes are doubled (its own second-order error): no error of
 Ting's construction shows on the layer, thick to thin, at the solver's accuracy; the solver's ``min_pressure`` and
 ``min_gap`` stay >= 0 (C2, C3) wherever it resolves the layer.
@@ -107,6 +130,10 @@ class TingForce:
     material: Material
     nu: float
     H: float
+
+    #: the flat punch (T7): the depth of the surface under the punch (the punch's depth while in contact, the free
+    #: recovery after lift-off); None for a tip whose contact grows and shrinks
+    surface_depth: np.ndarray | None = None
 
     equation = "T5"
 
@@ -198,6 +225,8 @@ def ting_force(layer: LayerKernel, punch: Any, H: Any, material: Material, times
     if layer.numeric_nu is None or layer.incompressible_at(nu_v):
         layer = layer.with_nu(nu_v)
     curve = force_curve_for(layer, tip, HH, nu_v, float(tol), d, model)
+    if tip.fixed_contact:
+        return _flat_punch(t, d, curve, material, nu_v, HH, float(tol))
     u, inv = np.unique(d, return_inverse=True)
     F = curve.force(u)[inv]
     bad_law = ~np.isfinite(F)
@@ -277,3 +306,53 @@ def ting_force(layer: LayerKernel, punch: Any, H: Any, material: Material, times
         arr.setflags(write=False)
     return TingForce(t, d, force, radius, t1, valid, "; ".join(reasons) or "Ting (1966): one maximum of the contact "
                      "radius", curve.model, material, nu_v, HH)
+
+
+def _flat_punch(t: np.ndarray, d: np.ndarray, curve: Any, material: Prony, nu: float, H: float,
+                tol: float) -> TingForce:
+    """The flat punch's history (T7): Lee-Radok on the fixed face while compressive, lift-off, free recovery,
+    re-contact; ``U_n = max(delta_n, U_free)`` per step, exact for U linear in time between the nodes.
+    """
+    top = float(np.max(d))
+    S = float(curve.force(np.array([top]))[0]) / top if top > 0 else 0.0  # P_e = S delta at unit shear modulus
+    a = float(curve.contact_radius(np.array([top]))[0]) if top > 0 else math.nan
+    if top > 0 and not (math.isfinite(S) and S > 0):
+        raise InputError(f"the {curve.model} law gives no flat-punch stiffness within tol = {tol:.3g} (a/H = "
+                         f"{a / H:.4g})")
+    E = np.array([e for e, _ in material.terms], dtype=float)
+    taus = np.array([tau for _, tau in material.terms], dtype=float)
+    einf = material.E_inf
+    n = t.size
+    U = np.empty(n)
+    Y = np.empty(n)
+    q = np.zeros(E.size)
+    u_prev = 0.0
+    h = np.diff(t)
+    for k in range(n):
+        if k == 0:  # a step from rest: q_i = U_0
+            e, gf = np.zeros(E.size), np.ones(E.size)
+        else:
+            e = np.exp(-h[k - 1] / taus)
+            gf = -np.expm1(-h[k - 1] / taus) * taus / h[k - 1]
+        qa = e * q - gf * u_prev
+        # Y(U) = E_inf U + sum_i E_i (qa_i + gf_i U), increasing in U; the free surface has Y = 0 (T7)
+        slope = einf + float(E @ gf)
+        u_free = -float(E @ qa) / slope
+        U[k] = max(float(d[k]), u_free)
+        q = qa + gf * U[k]
+        Y[k] = max(einf * U[k] + float(E @ q), 0.0)
+        u_prev = U[k]
+    contact = d >= U  # in contact where the punch reaches the surface (U = delta)
+    contact &= d > 0
+    force = S * Y / (2.0 * (1.0 + nu))
+    force = np.where(contact, force, 0.0)
+    radius = np.where(contact, a, 0.0)
+    t1 = np.where(contact, t, np.nan)
+    valid = np.ones(n, dtype=bool)
+    lost = (~contact) & (np.maximum.accumulate(np.where(contact, 1, 0)) > 0)
+    why = ("flat punch (T7): the contact is the punch's face while the force is compressive (Lee-Radok, exact); "
+           + (f"lift-off at t = {t[np.argmax(lost)]:.6g} (the force would turn tensile; no adhesion): the force is 0 "
+              "and the surface recovers freely (surface_depth)" if lost.any() else "no lift-off"))
+    for arr in (t, d, force, radius, t1, valid, U):
+        arr.setflags(write=False)
+    return TingForce(t, d, force, radius, t1, valid, why, curve.model, material, nu, H, surface_depth=U)

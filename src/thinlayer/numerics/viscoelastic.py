@@ -69,6 +69,14 @@ are the trapezoidal rule on these points (Nystrom's method), the kernel ``k`` is
 quadrature (:func:`thinlayer.numerics.flat_punch.kernel_quadrature`, at ``lambda = R/H``).  R is 1.15 times the
 elastic contact radius at the largest depth (found by the same discretisation), unless given.
 
+(V.10) *The flat punch* (``Punch.flat(a)``: a fixed contact, the face ``r <= a``).  The disc is the face, ``R = a``;
+(V.5) is solved on all of it without the edge condition (the pressure has the edge singularity of (F.8)):
+``phi^n = delta_n phi_1 + phi_0`` and ``P = delta_n P_1 + P_0`` are linear in ``delta_n``.  Under depth control the
+face is in contact while ``P >= 0``; where ``P`` would be negative the punch lifts off (no adhesion): ``phi^n = 0``,
+``P = 0``, and the surface under the face, at depth ``-P_0/P_1`` (the zero-force depth, ``surface_depth``), recovers
+by itself until the punch reaches it again.  Under force control ``delta_n = (P_n - P_0)/P_1``.  Nothing but the
+kernel is used (no stiffness law): the independent reference of Ting's (T7) for the flat punch.
+
 Measured (half-space, sphere, SLS ``E0/E_inf = 3``, ``tau = 0.2``, triangle to ``t_m = 0.5``, against the mpmath
 closed forms of Lee-Radok and Ting): second order in time (1600 nodes, 51/101/201 steps: force error at t = 0.6
 1.08e-4, 2.74e-5, 7.07e-6, order 1.97) and in space (801 steps, 100/200/400 nodes: 5.6e-5, 1.4e-5, 3.9e-6, order
@@ -160,6 +168,9 @@ class ViscoelasticContactHistory(RichDisplay):
     control: str
     nodes: int
     domain_radius: float
+    #: the flat punch (V.10): the depth of the surface under the face (the punch's depth in contact, the free recovery
+    #: after lift-off); None for a smooth tip
+    surface_depth: np.ndarray | None = field(default=None, repr=False)
 
     equation = "V.5"
 
@@ -201,9 +212,6 @@ def _tip_functions(tip: Any) -> tuple[Any, Any, tuple]:
                              f".power_law, ...), got {tip!r}")
     if getattr(tip, "parameters", ()):
         raise InputError(f"the {tip.name} has free parameters: substitute numbers first (tip.subs({{...}}))")
-    if getattr(tip, "fixed_contact", False):
-        raise InputError(f"the {tip.name} has a fixed contact radius (a sharp edge): the solver needs a smooth "
-                         "edge (a tip whose contact radius follows from p = 0 at the edge)")
     try:
         tip.radial_slope(np.array([0.5 * min(1.0, float(tip.support_radius))]))
     except ValueError as exc:
@@ -346,7 +354,7 @@ def _pressure_min(grid: _Grid, phi: np.ndarray, m: int, xc: float) -> float:
     lo = np.maximum(a, rr)
     with np.errstate(invalid="ignore", divide="ignore"):
         ac = np.where(b > rr, np.arccosh(np.maximum(b / rr, 1.0)) - np.arccosh(np.maximum(lo / rr, 1.0)), 0.0)
-    p = -(ac @ slope)
+    p = -(ac @ slope) + phi[-1] / np.sqrt(xc * xc - r * r)  # the edge term: phi(c) = 0 but for the flat punch
     top = float(np.max(p))
     return float(np.min(p) / top) if top > 0 else 0.0
 
@@ -451,8 +459,13 @@ def _solve_history(layer: Any, tip: Any, H: Any, material: Any, times: Any, dept
     nu_v = numeric_layer_nu(layer, nu)
     HH = positive(H, "H") if layer.has_thickness else (1.0 if H is None else positive(H, "H"))
     vinf, vi, taui = prony_moduli(material, nu_v)
-    Phi, slope, joins = _tip_functions(tip)
-    Phi, slope = _as_vector(Phi), _as_vector(slope)
+    face = float(tip.radius) if getattr(tip, "fixed_contact", False) else None  # the flat punch's face (V.10)
+    if face is None:
+        Phi, slope, joins = _tip_functions(tip)
+        Phi, slope = _as_vector(Phi), _as_vector(slope)
+    else:
+        Phi = slope = _as_vector(lambda r: 0.0 * r)
+        joins = ()
     M = check_int(nodes, "nodes", 8)
     check_bounded(M, "nodes", MAX_NODES, "second order in space: 400 nodes give ~1e-5 on the half-space")
     tol = positive(tolerance, "tolerance")
@@ -466,7 +479,11 @@ def _solve_history(layer: Any, tip: Any, H: Any, material: Any, times: Any, dept
         check_bounded(float(t.size) * M * M, f"the work estimate (steps x nodes^2 = {t.size} x {M}^2)", MAX_WORK,
                       "1,000 steps x 200 nodes take ~10 s; use fewer steps or nodes")
     # the disc [0, R]
-    if radius_max is not None:
+    if face is not None:
+        if radius_max is not None and not positive(radius_max, "radius_max") == face:
+            raise InputError(f"radius_max of the flat punch is its radius a = {face:.6g} (the face is the contact)")
+        R = face
+    elif radius_max is not None:
         R = positive(radius_max, "radius_max")
     else:
         R = _domain(layer, HH, Phi, slope, joins, float(np.max(y)), control, vinf + 0.0 if vinf > 0 else None, M)
@@ -485,6 +502,7 @@ def _solve_history(layer: Any, tip: Any, H: Any, material: Any, times: Any, dept
     pmin = np.zeros(n_t)
     gmin = np.zeros(n_t)
     c_prev = c_prev2 = 0.0
+    surface = np.zeros(n_t)
     prof_nodes = Phi(R * grid.x)
     for n in range(n_t):
         if n == 0:
@@ -504,7 +522,11 @@ def _solve_history(layer: Any, tip: Any, H: Any, material: Any, times: Any, dept
             return _solve_at(grid, st, c)[which] - target
 
         c_lo = 1e-9 * R
-        if target <= 0 or f(c_lo) >= 0:  # the punch is above the surface: no contact
+        if face is not None:  # (V.10): the face is the contact while the force is compressive
+            d_n, P_n, c, phi_nodes, surface[n] = _face_step(grid, st, control, target)
+            if c > 0:
+                pmin[n] = _pressure_min(grid, np.append(phi_nodes[:M], phi_nodes[M]), M, 1.0)
+        elif target <= 0 or f(c_lo) >= 0:  # the punch is above the surface: no contact
             c = 0.0
             phi_nodes = np.zeros(M + 1)
             d_n = target if control == "depth" else float(_solve_at(grid, st, c_lo)[0])
@@ -522,7 +544,7 @@ def _solve_history(layer: Any, tip: Any, H: Any, material: Any, times: Any, dept
         Q = e_i[:, None] * Q + g_i[:, None] * (Psi_new - Psi)[None, :]
         Psi = Psi_new
         force[n], radius[n], depth[n] = P_n, c, d_n
-        if d_n > 0:
+        if d_n > 0 and face is None:
             D = Psi - (grid.K @ (grid.w * Psi) if grid.thick else 0.0)  # (2/pi) G = (I - K) Psi (V.3)
             u = B @ D  # u = (2/pi) int G/sqrt(r^2 - s^2) ds = int D/sqrt (F.4), scaled by s = R x
             out = grid.x[rows] * R > c + 1.5 * R / M
@@ -539,14 +561,43 @@ def _solve_history(layer: Any, tip: Any, H: Any, material: Any, times: Any, dept
     if (gmin < -tol).any():
         reasons.append(f"the surface penetrates the tip outside the contact (gap/depth = {gmin.min():.3g}) from "
                        f"t = {t[np.argmax(gmin < -tol)]:.6g}")
-    if (radius >= R * (1 - 1e-9)).any():
+    if face is None and (radius >= R * (1 - 1e-9)).any():
         raise InputError(f"the contact radius reached the disc radius R = {R:.6g}: give a larger radius_max")
-    arrays = [t, depth, force, radius, pmin, gmin, ~bad]
+    arrays = [t, depth, force, radius, pmin, gmin, ~bad, surface]
     for a in arrays:
         a.setflags(write=False)
+    if face is not None:
+        lost = np.flatnonzero((radius == 0) & (np.maximum.accumulate(radius) > 0))
+        reasons.append("flat punch (V.10): the face is the contact while the force is compressive"
+                       + (f"; lift-off at t = {t[lost[0]]:.6g}, the surface recovers freely (surface_depth)"
+                          if lost.size else ""))
     return ViscoelasticContactHistory(layer, HH, nu_v, material, t, depth, force, radius, pmin, gmin, ~bad,
                                       "; ".join(reasons) or "p >= 0 on the contact and gap >= 0 outside at every step",
-                                      control, M, R)
+                                      control, M, R, surface if face is not None else None)
+
+
+def _face_step(grid: _Grid, st: _Step, control: str, target: float) -> tuple[float, float, float, np.ndarray, float]:
+    """One step of the flat punch (V.10): ``(depth, force, contact radius, phi at the nodes, surface depth)``.
+
+    (V.5) on the whole face ``[0, a]`` without the edge condition: ``phi = delta phi_1 + phi_0``,
+    ``P = delta P_1 + P_0`` (linear).  Depth control: contact while ``P >= 0``, else lift-off (``phi = 0``; the
+    surface depth is the depth of zero force, ``-P_0/P_1``).  Force control: ``delta = (P - P_0)/P_1``.
+    """
+    _, _, phi1, phi0, m, w = _solve_at(grid, st, grid.R)
+    P1 = 2.0 * math.pi * grid.R * float(w @ phi1)
+    P0 = 2.0 * math.pi * grid.R * float(w @ phi0)
+    free = -P0 / P1
+    phi_nodes = np.zeros(grid.M + 1)
+    if control == "depth":
+        delta = target
+        if target <= free or target <= 0:
+            return delta, 0.0, 0.0, phi_nodes, free
+    else:
+        delta = (target - P0) / P1
+    phi = delta * phi1 + phi0
+    phi_nodes[:m] = phi[:m]
+    phi_nodes[grid.M] = phi[m]
+    return delta, max(delta * P1 + P0, 0.0), grid.R, phi_nodes, delta
 
 
 def _bracket_root(f: Any, lo: float, guess: float, step: float, R: float) -> float:

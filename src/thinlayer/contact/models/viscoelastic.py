@@ -9,7 +9,9 @@ the answer is flagged ``valid = False`` with NaN.
 
 ``"ting"`` (preference 65, viscoelastic): Ting's method (T3)-(T5) (:func:`thinlayer.contact.ting.ting_force`) for a
 depth history that rises to one maximum and then falls, under a Prony-series material: exact on the layer under
-(C1)-(C3) (the Ting module's statement, measured against the direct solver).  Other histories go to Lee-Radok.
+(C1)-(C3) (the Ting module's statement, measured against the direct solver); the cone through its any-thickness
+law (T.9); the flat punch (T7): Lee-Radok on its face while the force is compressive, then lift-off (force 0).
+Other histories go to Lee-Radok.
 
 A ``viscoelastic`` entry: the walk offers it only problems with a viscoelastic material, and offers those problems
 no other entry (:mod:`thinlayer.contact.models.walk`).
@@ -94,8 +96,9 @@ class TingModel(LeeRadokModel):
         m, ld = problem.material, problem.loading
         out = ting_force(problem.layer, problem.tip, problem.H, m.relaxation, ld.times, ld.values, nu=m.nu,
                          tol=problem.tol, model=m.law)
-        return ViscoelasticForce(out.times, out.depths, out.force, out.contact_radius, out.valid,
-                                 "Ting (T3)-(T5), exact on the layer under (C1)-(C3): " + out.reason, out.model,
+        why = out.reason if out.surface_depth is not None else \
+            "Ting (T3)-(T5), exact on the layer under (C1)-(C3): " + out.reason  # the flat punch says (T7) itself
+        return ViscoelasticForce(out.times, out.depths, out.force, out.contact_radius, out.valid, why, out.model,
                                  out.material, out.nu, out.H, control="depth", tol=problem.tol)
 
 
