@@ -454,6 +454,7 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, 
         raise InputError(f"fit(H=inf): the half-space is fitted for the paraboloid (Hertz) in this version, not the "
                          f"{tip.name}; give a finite H")
     H0 = math.inf if halfspace else positive(H, "H")
+    check_separable(tip, fit_H)
     check_choice(base, BASES, "base")
     if model is not None:
         check_choice(model, fit_names(), "model")
@@ -626,6 +627,13 @@ class FitLaw:
             chi_max = float(math.sqrt(self.R * dmax) / H)
             valid, err, why = _validity(self.model, self.R, self.nu, self.base, H, chi_max)
         return chi_max, valid, err, why, regime_flags(dmax, H, None if math.isnan(self.R) else self.R)
+
+
+def check_separable(tip: Any, fit_H: bool) -> None:
+    """A flat punch's force is ``E kappa(a/H)`` times the depth: one stiffness, so E and H cannot both be fitted."""
+    if fit_H and tip.fixed_contact:
+        raise InputError("fit(fit_H=True): a flat punch's force is linear in the depth, P = 4 mu a kappa(a/H) "
+                         "delta/(1 - nu) (F.1): its curve gives one stiffness, not E and H apart; give H")
 
 
 def fit_law(punch: Any, H: Any, nu: Any = 0.5, base: str = "bonded", model: str | None = None) -> FitLaw:

@@ -18,6 +18,7 @@ from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
 from .common import polynomial_reason
+from .tip_tables import tip_table_curve
 
 __all__ = ["AnyThicknessModel", "sphere_curve"]
 
@@ -103,10 +104,15 @@ class AnyThicknessModel(Model):
         return Indentation(**fields)
 
     def force_curve(self, problem: Problem) -> ForceCurve | None:
-        """The law (T.7) for the sphere; None for other punches (the thick series is evaluated per depth)."""
+        """The law (T.7) for the sphere, the cone's table law (T.9) where it covers the layer
+        (:func:`.tip_tables.tip_table_curve`); None for other punches (the equation (F.6) is solved per depth).
+        """
         R = sphere_radius(problem.tip)
         if R is None:
-            return None
+            if self.refuses(problem):
+                return None
+            return tip_table_curve(problem.tip, problem.H, problem.nu, problem.layer.base_label, problem.tol,
+                                   self.name)
         return sphere_curve(self.name, R, problem.H, problem.nu, problem.layer.base_label, problem.tol)
 
 
