@@ -342,7 +342,7 @@ INVENTORY: dict[str, list] = {
         lambda s: tl.force_any_thickness([0.1, s], 10.0, 2.0, 1.0)],
     "thinlayer.any_thickness_law": [lambda s: tl.any_thickness_law(s), lambda s: tl.any_thickness_law(0.5, s)],
     "thinlayer.load_curve": [lambda s: tl.load_curve(s), lambda s: tl.load_curve(AFM_FILE, segment=s), lambda s: tl.load_curve(AFM_FILE, index=s)],  # noqa: E501
-    "thinlayer.fit_curve": [lambda s: tl.fit_curve(s, punch=1.0)] + [lambda s, k=k: tl.fit_curve(_curve(), **{"punch": 1.0, k: s}) for k in ("punch", "H", "nu", "base", "model", "fit_H", "baseline", "contact_point", "weighting", "weight_cp", "fit_range", "range_kind", "bootstrap", "seed")],  # noqa: E501
+    "thinlayer.fit_curve": [lambda s: tl.fit_curve(s, punch=1.0)] + [lambda s, k=k: tl.fit_curve(_curve(), **{"punch": 1.0, k: s}) for k in ("punch", "H", "nu", "base", "model", "fit_H", "baseline", "contact_point", "weighting", "weight_cp", "fit_range", "range_kind", "bootstrap", "seed", "bootstrap_method")],  # noqa: E501
     "thinlayer.afm.curve_fit.CurveFit.predict": [lambda s: tl.fit_curve(_curve(), punch=1.0).predict(s), lambda s: tl.fit_curve(_curve(), punch=1.0).predict([0.1, s])],  # noqa: E501
     "thinlayer.fit": [
         lambda s: tl.fit(s, [1, 2, 3], punch=1.0, H=1.0), lambda s: tl.fit([0.1, 0.2, 0.3], s, punch=1.0, H=1.0),

@@ -1,4 +1,5 @@
-"""The block bootstrap of fit_curve (issue 25 item 3): standard errors that hold for correlated residuals.
+"""The moving-block bootstrap of fit_curve (issue 25 item 3, ``bootstrap_method="block"``; the default AR-sieve errors
+are tested in test_bootstrap_coverage.py).
 
 Synthetic approach curves (Hertz written out here) with AR(1) noise of known ``phi``: the
 naive standard error is too small by about ``sqrt((1 + phi)/(1 - phi))`` (the variance inflation of a smooth
@@ -71,10 +72,12 @@ def test_bootstrap_widens_the_error_for_correlated_noise_only(seed):
     """AR(1) noise, phi = 0.7: the bootstrap error is 1.5 to 3.5 times the naive one (theory: 2.38); white noise:
     0.7 to 1.4 times."""
     z, F, _ = _synthetic(1000 + seed, n=600, ar=0.7, slope=0.0)
-    r = fit_curve(curve_from_arrays(z, F, axis="tip position"), punch=R, bootstrap=50, seed=seed)
+    r = fit_curve(curve_from_arrays(z, F, axis="tip position"), punch=R, bootstrap=50, seed=seed,
+                  bootstrap_method="block")
     assert 1.5 < r.E_se_boot / r.E_se < 3.5 and r.phi > 0.5 and r.block_length > 5
     z, F, _ = _synthetic(2000 + seed, n=600, ar=0.0, slope=0.0)
-    w = fit_curve(curve_from_arrays(z, F, axis="tip position"), punch=R, bootstrap=50, seed=seed)
+    w = fit_curve(curve_from_arrays(z, F, axis="tip position"), punch=R, bootstrap=50, seed=seed,
+                  bootstrap_method="block")
     assert 0.7 < w.E_se_boot / w.E_se < 1.4 and w.block_length <= 2
     assert "block bootstrap" in str(r) and r.as_dict()["E_se_boot"] == r.E_se_boot
 
@@ -86,7 +89,8 @@ def test_coverage_over_seeds():
     errs, naive, boot = [], [], []
     for seed in range(60):
         z, F, truth = _synthetic(1000 + seed, n=800, ar=0.7, slope=0.0)
-        r = fit_curve(curve_from_arrays(z, F, axis="tip position"), punch=R, bootstrap=100, seed=seed)
+        r = fit_curve(curve_from_arrays(z, F, axis="tip position"), punch=R, bootstrap=100, seed=seed,
+                      bootstrap_method="block")
         errs.append(r.E - truth["E"])
         naive.append(r.E_se)
         boot.append(r.E_se_boot)

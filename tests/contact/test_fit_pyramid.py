@@ -60,10 +60,14 @@ def test_fit_recovers_E_from_the_direct_solver():
         ext = 1.05 * float(np.abs(tip.polygon(d)).max()) + 2.5 * H
         n = int(2 * ext / (H / 8)) + 1
         forces.append(solve_2d(layer, tip, delta0=float(d), H=H, n=n, extent=ext, tol=1e-10).force)
-    res = fit(depths, np.array(forces), punch=tip, H=H, nu=nu)
+    res = fit(depths, np.array(forces), punch=tip, H=H, nu=nu, model="tip-law")
     assert res.model == "tip-law"
     est = _curve(tip, layer, H, nu).estimate(depths)
     assert np.all(est < 0.1)
     err = abs(res.E / (2 * (1 + nu)) - 1)
     print(f"E error {err:.3g}, estimates {est}")
     assert err <= est.max(), (res.E, est)
+    # by default fit() takes the pyramid's any-thickness table (issue 25 item 1), inside the same bound
+    auto = fit(depths, np.array(forces), punch=tip, H=H, nu=nu)
+    assert auto.model == "any-thickness"
+    assert abs(auto.E / (2 * (1 + nu)) - 1) <= est.max(), (auto.E, est)

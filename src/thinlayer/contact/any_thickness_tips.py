@@ -40,7 +40,7 @@ import numpy as np
 
 from .._checks import InputError, positive
 
-__all__ = ["CHI_SERIES", "TIPS_TABLE_PATH", "ConeLaw", "NotTabulatedError", "cone_law", "cone_law_from",
+__all__ = ["CHI_SERIES", "TIPS_TABLE_PATH", "ConeLaw", "NotTabulatedError", "cone_law", "cone_law_from", "cone_tangent",
            "numeric_tip", "revolution_fields", "tip_fields"]
 
 TIPS_TABLE_PATH = Path(__file__).resolve().parent / "data" / "any_thickness_tips.npz"
@@ -321,6 +321,21 @@ def _cone_angle(tip: Any) -> float | None:
     if slope.free_symbols or not slope.is_positive:
         return None
     return 1.0 / float(slope)
+
+
+def cone_tangent(tip: Any) -> float | None:
+    """``tan(alpha)`` when the tip is a cone ``r cot(alpha)`` with a number for alpha (read from its profile), else
+    None; cached per tip (the profile is simplified once).
+    """
+    try:
+        return _cone_tangent_cached(tip)
+    except TypeError:  # an unhashable tip
+        return _cone_angle(tip)
+
+
+@lru_cache(maxsize=64)
+def _cone_tangent_cached(tip: Any) -> float | None:
+    return _cone_angle(tip)
 
 
 def numeric_tip(punch: Any, parameters: dict | None) -> Any:

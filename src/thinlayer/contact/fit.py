@@ -423,12 +423,32 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
                                  extras=extras)
     with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):  # checked below
         res = _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, depth_sign)
+        if model is None and res.valid is False and not math.isfinite(res.model_error):
+            res = _beyond_the_table(res, delta, force, punch, H, nu, base, fit_H, fit_offset, E0, sigma, depth_sign)
     if not all(math.isfinite(v) for v in (res.E, res.E_se, res.H_se, res.offset, res.residual_rms)) \
             or math.isnan(res.H):
         raise ComputationError(f"fit(): the fitted numbers are not finite (E = {res.E!r}, E_se = {res.E_se!r}): the "
                                "data's numbers leave the double range; express depths and forces in other units")
     if res.valid is False:
         warnings.warn(f"fit(): E = {res.E:.4g} is NOT VALID: {res.validity}", ValidityWarning, stacklevel=3)
+    return res
+
+
+def _beyond_the_table(res: FitResult, *args: Any) -> FitResult:
+    """The default model's data reach beyond its table (no estimate there: ``model_error`` infinite): the next
+    model with a law (not the direct solver, whose fit takes minutes) that holds over the data answers instead;
+    none: the first answer, NOT VALID.
+    """
+    delta, force, punch, H, nu, base, fit_H, fit_offset, E0, sigma, depth_sign = args
+    for alt in curve_entries(_tip(punch)[0], _nu(nu), base):
+        if alt in (res.model, "direct"):
+            continue
+        try:
+            other = _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, alt, E0, sigma, depth_sign)
+        except (ValueError, ArithmeticError):
+            continue
+        if other.valid:
+            return other
     return res
 
 
@@ -454,6 +474,7 @@ def _fit(delta, force, punch, H, nu, base, fit_H, fit_offset, model, E0, sigma, 
         raise InputError(f"fit(H=inf): the half-space is fitted for the paraboloid (Hertz) in this version, not the "
                          f"{tip.name}; give a finite H")
     H0 = math.inf if halfspace else positive(H, "H")
+    check_separable(tip, fit_H)
     check_choice(base, BASES, "base")
     if model is not None:
         check_choice(model, fit_names(), "model")
@@ -626,6 +647,13 @@ class FitLaw:
             chi_max = float(math.sqrt(self.R * dmax) / H)
             valid, err, why = _validity(self.model, self.R, self.nu, self.base, H, chi_max)
         return chi_max, valid, err, why, regime_flags(dmax, H, None if math.isnan(self.R) else self.R)
+
+
+def check_separable(tip: Any, fit_H: bool) -> None:
+    """A flat punch's force is ``E kappa(a/H)`` times the depth: one stiffness, so E and H cannot both be fitted."""
+    if fit_H and tip.fixed_contact:
+        raise InputError("fit(fit_H=True): a flat punch's force is linear in the depth, P = 4 mu a kappa(a/H) "
+                         "delta/(1 - nu) (F.1): its curve gives one stiffness, not E and H apart; give H")
 
 
 def fit_law(punch: Any, H: Any, nu: Any = 0.5, base: str = "bonded", model: str | None = None) -> FitLaw:

@@ -180,7 +180,7 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
     c.add_argument("--range-kind", choices=("position", "indentation"), default=None,
                    help="what --fit-range bounds (default position)")
     c.add_argument("--bootstrap", type=int, default=None, metavar="N",
-                   help="N moving-block bootstrap refits: standard errors that hold for correlated residuals")
+                   help="N AR-sieve bootstrap draws: errors whose 95 %% interval covers under correlated residuals")
     c.add_argument("--seed", type=int, default=None, help="seed of the bootstrap (default 0)")
     from .cli_args import add_tip_shortcuts
 

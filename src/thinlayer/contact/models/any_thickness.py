@@ -18,8 +18,9 @@ from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
 from .common import polynomial_reason
+from .tip_tables import tip_table_curve
 
-__all__ = ["AnyThicknessModel", "cone_curve", "sphere_curve"]
+__all__ = ["AnyThicknessModel", "sphere_curve"]
 
 
 def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float) -> ForceCurve:
@@ -63,54 +64,8 @@ def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float
     return ForceCurve(name, tol, f, radius_law=radius, inverse_radius=inverse, slopes=slopes)
 
 
-def _cone_tan(tip) -> float | None:
-    """``tan(alpha)`` when the tip's radial profile is ``r cot(alpha)`` (read from the profile, not the class)."""
-    import sympy as sp
-
-    from ...parse import RADIUS
-
-    expr = getattr(tip, "radial_expr", None)
-    if expr is None or getattr(tip, "parameters", ()) or tip.polynomial is not None:
-        return None
-    slope = sp.simplify(expr / RADIUS)
-    return 1.0 / float(slope) if not slope.free_symbols and slope.is_positive else None
 
 
-def cone_curve(name: str, tan_a: float, H: float, nu: float, base: str, tol: float) -> ForceCurve | None:
-    r"""The cone's law (T.9) at ``mu = 1``: ``P = (4/pi) tan(alpha) delta^2 Pi(chi)/(1 - nu)``, ``c = c_0 Gamma(chi)``,
-    ``c_0 = (2/pi) delta tan(alpha)``, ``chi = c_0/H`` (:func:`~thinlayer.contact.any_thickness_tips.cone_law`, its
-    measured estimate; not valid beyond the table's ``chi_max``, the thin layer).  None where the table does not
-    answer (bonded ``nu < 0.3``).
-    """
-    from ..any_thickness_tips import NU_MIN, cone_law
-
-    if base == "bonded" and not NU_MIN <= nu <= 0.5:
-        return None
-    law = cone_law(nu, base)
-    k0, K = 2.0 / math.pi * tan_a, 4.0 / math.pi * tan_a / (1.0 - nu)
-
-    def parts(d):
-        chi = k0 * d / H
-        inside = (chi > 0) & (chi <= law.chi_max)
-        x = np.where(inside, chi, law.chi_max)
-        Pr, cr = law.ratios(x)
-        eP, ec = law.error_estimate(x)
-        return chi, inside, Pr, cr, np.where(inside, np.maximum(eP, 2 * ec), np.inf)
-
-    def f(d):
-        _, _, Pr, cr, est = parts(d)
-        c = k0 * d * cr
-        return K * d * d * Pr, math.pi * c * c, est
-
-    def radius(d):
-        return k0 * d * parts(d)[3]
-
-    def slopes(d):  # d log Pi/d log chi by a central difference in log chi (h = 1e-4: ~1e-9)
-        chi = np.clip(k0 * np.asarray(d, dtype=float) / H, 1e-300, law.chi_max * math.exp(-2e-4))
-        lp = np.log(law.ratios(chi * math.exp(1e-4))[0] / law.ratios(chi * math.exp(-1e-4))[0]) / 2e-4
-        return 2.0 + lp, -lp
-
-    return ForceCurve(name, tol, f, radius_law=radius, slopes=slopes)
 
 
 class AnyThicknessModel(Model):
@@ -153,12 +108,15 @@ class AnyThicknessModel(Model):
         return Indentation(**fields)
 
     def force_curve(self, problem: Problem) -> ForceCurve | None:
-        """The law (T.7) for the sphere, (T.9) for the cone; None for other punches (evaluated per depth)."""
+        """The law (T.7) for the sphere, the cone's table law (T.9) where it covers the layer
+        (:func:`.tip_tables.tip_table_curve`); None for other punches (the equation (F.6) is solved per depth).
+        """
         R = sphere_radius(problem.tip)
         if R is None:
-            tan_a = _cone_tan(problem.tip)  # the cone's law (T.9); None for other tips
-            return None if tan_a is None else cone_curve(self.name, tan_a, problem.H, problem.nu,
-                                                         problem.layer.base_label, problem.tol)
+            if self.refuses(problem):
+                return None
+            return tip_table_curve(problem.tip, problem.H, problem.nu, problem.layer.base_label, problem.tol,
+                                   self.name)
         return sphere_curve(self.name, R, problem.H, problem.nu, problem.layer.base_label, problem.tol)
 
 

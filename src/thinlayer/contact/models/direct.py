@@ -112,6 +112,7 @@ class FlatExact(FlatPunchModel):
     aliases = ("any-thickness",)
     takes_options = None
     law = "direct"
+    fits = True  # fit(): the exact kappa(a/H) (F.6)-(F.7), one solve per thickness
     equations = EQUATIONS["direct"]
 
     def refined(self, answer: Indentation, problem: Problem, **options: Any) -> Indentation:

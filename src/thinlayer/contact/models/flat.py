@@ -20,6 +20,9 @@ from .base import ForceCurve, Model, register_model
 
 __all__ = ["FlatPunchModel", "flat_answer", "flat_curve"]
 
+#: the step in log(a/H) of the exact curve's slope in H (a central difference)
+SLOPE_STEP = 1e-4
+
 
 def flat_answer(problem: Problem, choice: str) -> Indentation:
     """The flat punch's answer by one law (``"thick"``, ``"thin"``) or the exact solution (``"direct"``)."""
@@ -53,7 +56,20 @@ def flat_curve(name: str, problem: Problem, law: str) -> ForceCurve:
     def f(d: Any):
         return 4.0 * a * d * k / (1.0 - nu), np.full_like(d, math.pi * a * a), np.full_like(d, e)
 
-    return ForceCurve(name, problem.tol, f, radius_law=lambda d: np.full_like(d, a))
+    slope_H: list[float] = []
+
+    def slopes(d: Any):
+        # d log P/d log delta = 1; d log P/d log H = -d log kappa/d log(a/H), a central difference of the exact
+        # kappa (step 1e-4 in log(a/H): error ~1e-8, the solver's 1e-10 over the step ~1e-6), computed once
+        if not slope_H:
+            x = a / problem.H * np.exp([-SLOPE_STEP, SLOPE_STEP])
+            kk = stiffness_table(problem.layer, x, "exact", max_error=1.0)[0]
+            slope_H.append(-float(np.log(kk[1] / kk[0])) / (2 * SLOPE_STEP))
+        d = np.asarray(d, dtype=float)
+        return np.ones_like(d), np.full_like(d, slope_H[0])
+
+    return ForceCurve(name, problem.tol, f, radius_law=lambda d: np.full_like(d, a),
+                      slopes=slopes if law == "exact" else None)
 
 
 class FlatPunchModel(Model):

@@ -20,7 +20,8 @@ from ...asymptotics.solution import ValidityError
 from ...errors import InputError
 from ..indentation import Indentation
 from ..problem import Problem
-from .base import Model, register_model
+from .base import ForceCurve, Model, register_model
+from .tip_tables import tip_table_curve
 
 __all__ = ["PyramidThickModel"]
 
@@ -32,6 +33,7 @@ class PyramidThickModel(Model):
     preference = 61
     equations = ("T.12", "T.12")
     declines = (ValidityError,)
+    fits = True
 
     def refuses(self, problem: Problem) -> str | None:
         if getattr(problem.tip, "kind", None) != "pyramid":
@@ -45,6 +47,14 @@ class PyramidThickModel(Model):
         if not problem.tip.is_numeric:
             return "the pyramid's face angle needs a value"
         return None
+
+    def force_curve(self, problem: Problem) -> ForceCurve | None:
+        """The pyramid's any-thickness table law (T.11)-(T.13) (:func:`.tip_tables.tip_table_curve`, ``chi <= 10``)
+        where it covers the layer, for fit(); None elsewhere.
+        """
+        if self.refuses(problem) or self.applies(problem):
+            return None
+        return tip_table_curve(problem.tip, problem.H, problem.nu, problem.layer.base_label, problem.tol, self.name)
 
     def run(self, problem: Problem) -> Indentation:
         from ...asymptotics.pyramid_thick import pyramid_thick_law
