@@ -48,6 +48,16 @@ def test_cli_refuses_existing_outputs_before_the_study(tmp_path):
 
 def test_cli_plots_written_atomically_and_kept_without_force(tmp_path, capsys):
     pytest.importorskip("matplotlib")
+    from planting import quick_validation
+
+    # the files are what is checked here (written through atomic_write, refused, replaced with --force): figures are
+    # saved as a few bytes of their format (tests/planting.py), not drawn; drawing them (3 s of CPU per figure set,
+    # 12 s for this test) is checked by tests/validation/test_study_plots.py and the README's validate --plots
+    with quick_validation():
+        _plots_written_atomically_and_kept_without_force(tmp_path)
+
+
+def _plots_written_atomically_and_kept_without_force(tmp_path):
     from thinlayer.validation.output import OutputExistsError
 
     argv = ["validate", "--shapes", "sphere", "--nu", "0.3", "--ratios", "0.05", "--out", str(tmp_path),
