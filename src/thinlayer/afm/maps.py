@@ -191,6 +191,7 @@ def fit_curve_full(curve: MapCurve, *, punch: Any, H: Any = None, nu: float = 0.
     from .curves import curve_from_arrays
 
     c = curve_from_arrays(curve.tip_position, curve.force, axis="tip position", units=("m", "N"), source=curve.name)
+    options.setdefault("solver", "varpro")
     return fit_curve(c, punch=punch, H=H, nu=nu, base=base, **options)
 
 
