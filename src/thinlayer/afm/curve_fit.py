@@ -413,8 +413,6 @@ def _weights(x: np.ndarray, xc: float, weighting: str | None, wcp: float) -> np.
 
 def _trials(x, f, slope, xc_fixed):
     """``(x sorted, f in that order, the trial contact points)`` (module docstring, steps 1-2)."""
-    from scipy import stats
-
     order = np.argsort(x, kind="stable")
     xs, fs = x[order], f[order]
     n = xs.size
@@ -422,6 +420,8 @@ def _trials(x, f, slope, xc_fixed):
     for _ in range(2):
         sub = np.linspace(0, n0 - 1, min(n0, 400)).astype(int)
         if slope:
+            from scipy import stats  # seconds to import: only for the sloped baseline
+
             sl, ic = stats.theilslopes(fs[sub], xs[sub])[:2]
         else:
             sl, ic = 0.0, float(np.median(fs[:n0]))

@@ -8,7 +8,7 @@ validation study.  The same call runs
 * on dask's in-process threads (``scheduler="threads"``: a ``LocalCluster(processes=False)``; numpy and scipy
   release the GIL in their loops, Python code does not);
 * on a local cluster of worker processes (``scheduler="local"``: ``LocalCluster(processes=True)``, one worker per
-  core, one thread each), the embedded default for a large batch;
+  core, one thread each, started by fork on Linux: :func:`start_method`), the embedded default for a large batch;
 * on an existing cluster (``scheduler="tcp://host:8786"``, or a ``distributed.Client`` already connected).
 
 No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about 4 per worker: a
@@ -30,7 +30,7 @@ from typing import Any
 
 from ..errors import InputError, InputTypeError
 
-__all__ = ["SCHEDULERS", "chunked", "map_batch", "solve_sweep"]
+__all__ = ["SCHEDULERS", "chunked", "map_batch", "solve_sweep", "start_method"]
 
 #: the named schedulers (besides a ``tcp://``/``tls://``/``inproc://`` address or a ``distributed.Client``)
 SCHEDULERS = (None, "serial", "threads", "local")
@@ -93,9 +93,12 @@ def _client(scheduler: Any, workers: int | None):
     if isinstance(scheduler, Client):
         return scheduler, False
     if scheduler in ("threads", "local"):
+        import dask
+
         n = workers or (2 if scheduler == "threads" else _cores())
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": a free port
-                               dashboard_address=":0", silence_logs=logging.CRITICAL)
+        with dask.config.set({"distributed.worker.multiprocessing-method": start_method()}):
+            cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": any port
+                                   dashboard_address=":0", silence_logs=logging.CRITICAL)
         return Client(cluster, timeout=CONNECT_TIMEOUT), True
     try:
         return Client(scheduler, timeout=CONNECT_TIMEOUT), True
@@ -103,6 +106,25 @@ def _client(scheduler: Any, workers: int | None):
         raise InputError(f"scheduler {scheduler!r}: no dask scheduler answered within {CONNECT_TIMEOUT:g} s "
                          f"({str(exc).splitlines()[0][:120]}); give a running scheduler's address, 'local' or None")\
             from None
+
+
+def start_method() -> str:
+    """How a local cluster started here starts its worker processes: ``"fork"`` on Linux (the workers are copies of
+    this process, with its imports and the laws it built: 0.3 s to start 2 workers where dask's default ``"spawn"``
+    took 3.3 s, each worker importing dask, numpy, scipy and thinlayer again, benchmarks/bench_maps.py), else dask's
+    configured method.  ``THINLAYER_DASK_START=spawn`` (or ``forkserver``) chooses another.
+    """
+    import multiprocessing
+    import os
+
+    asked = os.environ.get("THINLAYER_DASK_START", "")
+    if asked in ("fork", "spawn", "forkserver"):
+        return asked
+    if sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods():
+        return "fork"
+    import dask
+
+    return str(dask.config.get("distributed.worker.multiprocessing-method", "spawn"))
 
 
 def _cores() -> int:

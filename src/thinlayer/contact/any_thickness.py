@@ -467,6 +467,20 @@ def _law_cached(nu: float, base: str) -> AnyThicknessLaw:
     return build_law(_packaged_table(), nu if base == "bonded" else 0.3, base)
 
 
+#: laws built in another process and sent here (:func:`adopt_law`), by (nu, base)
+_ADOPTED: dict[tuple[float, str], AnyThicknessLaw] = {}
+
+
+def adopt_law(law: AnyThicknessLaw) -> None:
+    """Use ``law`` for its (nu, base) from now on instead of building it: a worker process of a force map receives
+    the law its parent built (:func:`thinlayer.afm.maps.fit_map`), the same numbers, and skips the build (seconds of
+    symbolic series per process).
+    """
+    if not isinstance(law, AnyThicknessLaw):
+        raise InputTypeError(f"adopt_law() takes an AnyThicknessLaw, got {type(law).__name__}")
+    _ADOPTED.setdefault((law.nu, law.base), law)
+
+
 @boundary
 def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
     """The sphere's any-thickness law for one Poisson ratio and base (cached; about 20 ms the first time).
@@ -479,7 +493,9 @@ def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
     ([1.0602], True)
     """
     nu, base = _check_nu_base(nu, base)
-    return _law_cached(nu if base == "bonded" else 0.3, base)
+    key = (nu if base == "bonded" else 0.3, base)
+    got = _ADOPTED.get(key)
+    return got if got is not None else _law_cached(*key)
 
 
 # =============================================================================================
