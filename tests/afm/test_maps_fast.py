@@ -23,6 +23,7 @@ from thinlayer.afm.curves import curve_from_arrays
 from thinlayer.afm.map_data import MapCurve, synthetic_curve
 from thinlayer.afm.maps import fit_curve_full, fit_map
 from thinlayer.contact import any_thickness as at
+from thinlayer.contact.models import any_thickness as models_at
 from thinlayer.contact.models.any_thickness import SphereCurve, sphere_curve
 from thinlayer.errors import InputTypeError, ValidityWarning
 
@@ -172,11 +173,12 @@ def test_a_worker_adopts_the_law_its_parent_sent(monkeypatch):
     sent = pickle.loads(pickle.dumps(law))
     for k in ("log_force", "log_radius", "dlog_force", "est_force", "est_radius", "series", "series_radius"):
         assert np.array_equal(getattr(sent, k), getattr(law, k))
-    monkeypatch.setattr(at, "_ADOPTED", {})
-    at.adopt_law(sent)
+    monkeypatch.setattr(at, "ADOPTED_LAWS", {})
+    monkeypatch.setattr(models_at, "ADOPTED_LAWS", at.ADOPTED_LAWS)
+    models_at.adopt_law(sent)
     assert at.any_thickness_law(0.5, "bonded") is sent
     with pytest.raises(InputTypeError, match="AnyThicknessLaw"):
-        at.adopt_law("not a law")
+        models_at.adopt_law("not a law")
 
 
 def test_local_clusters_start_by_fork_on_linux(monkeypatch):

@@ -239,7 +239,7 @@ def _fit_pixel(item: tuple[MapCurve, Any], *, fit_one: Callable[..., Any], punch
     law the parent built, adopted by this (worker) process instead of building its own.
     """
     if law is not None:
-        from ..contact.any_thickness import adopt_law
+        from ..contact.models.any_thickness import adopt_law
 
         adopt_law(law)
     curve, H = item

@@ -467,18 +467,8 @@ def _law_cached(nu: float, base: str) -> AnyThicknessLaw:
     return build_law(_packaged_table(), nu if base == "bonded" else 0.3, base)
 
 
-#: laws built in another process and sent here (:func:`adopt_law`), by (nu, base)
-_ADOPTED: dict[tuple[float, str], AnyThicknessLaw] = {}
-
-
-def adopt_law(law: AnyThicknessLaw) -> None:
-    """Use ``law`` for its (nu, base) from now on instead of building it: a worker process of a force map receives
-    the law its parent built (:func:`thinlayer.afm.maps.fit_map`), the same numbers, and skips the build (seconds of
-    symbolic series per process).
-    """
-    if not isinstance(law, AnyThicknessLaw):
-        raise InputTypeError(f"adopt_law() takes an AnyThicknessLaw, got {type(law).__name__}")
-    _ADOPTED.setdefault((law.nu, law.base), law)
+#: laws built in another process and sent here, by (nu, base) (thinlayer.contact.models.any_thickness.adopt_law)
+ADOPTED_LAWS: dict[tuple[float, str], AnyThicknessLaw] = {}
 
 
 @boundary
@@ -494,8 +484,7 @@ def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
     """
     nu, base = _check_nu_base(nu, base)
     key = (nu if base == "bonded" else 0.3, base)
-    got = _ADOPTED.get(key)
-    return got if got is not None else _law_cached(*key)
+    return ADOPTED_LAWS.get(key) or _law_cached(*key)
 
 
 # =============================================================================================

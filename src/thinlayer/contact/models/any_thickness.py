@@ -16,13 +16,21 @@ from typing import Any
 import numpy as np
 
 from ...asymptotics.solution import ValidityError
-from ..any_thickness import NotTabulatedError, any_thickness_fields, any_thickness_law, sphere_radius
+from ...errors import InputTypeError
+from ..any_thickness import (
+    ADOPTED_LAWS,
+    AnyThicknessLaw,
+    NotTabulatedError,
+    any_thickness_fields,
+    any_thickness_law,
+    sphere_radius,
+)
 from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
 from .common import polynomial_reason
 
-__all__ = ["AnyThicknessModel", "SphereCurve", "sphere_curve"]
+__all__ = ["AnyThicknessModel", "SphereCurve", "adopt_law", "sphere_curve"]
 
 #: ``R delta`` within these bounds: the contact area of (T.7) is a positive double wherever the force is (the
 #: force-only path needs no area to mask the force; outside them :meth:`SphereCurve.force_slopes` computes it)
@@ -62,6 +70,16 @@ class SphereCurve(ForceCurve):
         if not slopes:
             return P, None, None
         return P, 1.5 + 0.5 * dlp, -dlp
+
+
+def adopt_law(law: AnyThicknessLaw) -> None:
+    """Use ``law`` for its (nu, base) from now on instead of building it: a worker process of a force map receives
+    the law its parent built (:func:`thinlayer.afm.maps.fit_map`), the same numbers, and skips the build (seconds of
+    symbolic series per process).
+    """
+    if not isinstance(law, AnyThicknessLaw):
+        raise InputTypeError(f"adopt_law() takes an AnyThicknessLaw, got {type(law).__name__}")
+    ADOPTED_LAWS.setdefault((law.nu, law.base), law)
 
 
 def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float) -> ForceCurve:
