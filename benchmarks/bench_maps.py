@@ -2,19 +2,19 @@
 
 The curves are synthetic (thinlayer.afm.map_data.synthetic_curve, built in memory, not timed): E from 3 to 12 kPa
 over the map, contact heights over +-0.3 um, a sphere R = 5 um pressed 0.15 um (half of each curve off contact),
-noise 2 pN.  Timed: ``fit_map`` with its DEFAULT fitter (``fit_curve_full``: thinlayer.afm.curve_fit.fit_curve with
-``solver="varpro"``, E, the contact point and the baseline offset fitted) from the curves to the MapResult on a dask
-LocalCluster of 2 worker processes (``scheduler="local"``; the cluster's start-up, sending the curves and the law,
-and each worker's imports included), for the half-space (Hertz, closed form) and a layer H = 2 um (the
-any-thickness law (T.7); the law of this process is built before the timed runs, as a session that fits several
-maps has it, and sent to the workers).  Each map is fitted ``THINLAYER_BENCH_REPEAT`` times (default 2): the rows
-give the best and the worst wall time and the load average during the runs.  Load-independent rows: the CPU seconds
-per curve (serial, 64 curves) of the default fitter, of the reference ``solver="lm"`` (the same least squares by
-trial contact points and Levenberg-Marquardt) and of the simpler ``fit_curve_basic``, and the time 2 idle cores would
-take for the map from the default's CPU (an extrapolation without start-up or transfer); the largest difference
-between the default and the reference fitter's E, in the reference's standard errors, is printed.  Reading a map
-file is a separate row: a 16 x 16 map written in afmformats' HDF5 format and read back by ``read_map``.
-``THINLAYER_BENCH_MAP=N`` sets the side (default 64).
+noise 2 pN. Timed: ``fit_map`` with its DEFAULT fitter (``fit_curve_full``: thinlayer.afm.curve_fit.fit_curve with
+``solver="varpro"``, E, the contact point and the baseline offset fitted) from the curves to the MapResult with its
+default scheduler (``"auto"``: for 4,096 curves a dask LocalCluster of one worker process per core, forked; the
+cluster's start-up and shutdown, sending the curves and the law included), for the half-space (Hertz, closed form)
+and a layer H = 2 um (the any-thickness law (T.7); the law of this process is built before the timed runs, as a
+session that fits several maps has it, and sent to the workers). Each map is fitted ``THINLAYER_BENCH_REPEAT`` times
+(default 2): the rows give the best and the worst wall time and the load average during the runs. Load-independent
+rows: the CPU seconds per curve (serial, 64 curves) of the default fitter, of the reference ``solver="lm"`` (the
+same least squares by trial contact points and Levenberg-Marquardt) and of the simpler ``fit_curve_basic``, and the
+time 2 idle cores would take for the map from the default's CPU (an extrapolation without start-up or transfer); the
+largest difference between the default and the reference fitter's E, in the reference's standard errors, is printed.
+Reading a map file is a separate row: a 16 x 16 map written in afmformats' HDF5 format and read back by
+``read_map``. ``THINLAYER_BENCH_MAP=N`` sets the side (default 64).
 """
 from __future__ import annotations
 
@@ -86,8 +86,7 @@ def run() -> list[Row]:
         walls, loads = [], []
         for _ in range(repeat):
             t0 = time.perf_counter()
-            r = fit_map(curves, punch=R, H=None if math.isinf(H) else H, nu=0.5, progress=False, scheduler="local",
-                        workers=2, timeout=3600)
+            r = fit_map(curves, punch=R, H=None if math.isinf(H) else H, nu=0.5, progress=False, timeout=3600)
             walls.append(time.perf_counter() - t0)
             loads.append(os.getloadavg()[0])
             ok = np.isfinite(r.E)
@@ -95,7 +94,8 @@ def run() -> list[Row]:
             print(f"#   {r.fitter}, {where}: {walls[-1]:.2f} s wall, {int(ok.sum())}/{n * n} pixels fitted, "
                   f"{r.counts()['flagged']} flagged, largest |E/E_true - 1| = {err:.2g}; {_load()}", file=sys.stderr)
         tail = f"(load {min(loads):.1f}-{max(loads):.1f})"
-        rows.append(Row(f"fit_map {n}x{n} x {POINTS} pts, default fitter {r.fitter}, {where}, local cluster 2 procs, "
+        rows.append(Row(f"fit_map {n}x{n} x {POINTS} pts, default fitter {r.fitter}, {where}, default "
+                        f"scheduler (local cluster, {os.cpu_count()} cores), "
                         f"best of {repeat} {tail}", min(walls), "<= 15 s"))
         rows.append(Row(f"  the same, worst of {repeat}", max(walls), ""))
     for H in (math.inf, 2e-6):

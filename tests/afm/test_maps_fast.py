@@ -191,3 +191,13 @@ def test_local_clusters_start_by_fork_on_linux(monkeypatch):
         assert start_method() == "fork"
     monkeypatch.setenv("THINLAYER_DASK_START", "spawn")
     assert start_method() == "spawn"
+
+
+def test_auto_scheduler_is_a_local_cluster_for_a_large_map_only():
+    from thinlayer.afm.distributed import AUTO_BATCH, auto_scheduler, check_scheduler
+
+    assert check_scheduler("auto") == "auto" and auto_scheduler(AUTO_BATCH - 1) is None
+    pytest.importorskip("distributed")
+    import os
+
+    assert auto_scheduler(AUTO_BATCH) == ("local" if len(os.sched_getaffinity(0)) > 1 else None)

@@ -576,7 +576,7 @@ def _law_to_send(scheduler: Any, punch: Any, nu: float, base: str, Hs: list) -> 
 
 
 def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: str = "bonded",
-            fit_one: Callable[..., Any] | None = None, progress: bool = True, scheduler: Any = None,
+            fit_one: Callable[..., Any] | None = None, progress: bool = True, scheduler: Any = "auto",
             height_image: Any = None, substrate: float | None = None, workers: int | None = None,
             timeout: float | None = None) -> MapResult:
     """Fit every curve of a force map: E, H, contact point and quality per pixel (issue 25 item 5).
@@ -600,8 +600,9 @@ def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: st
     progress : bool
         A progress bar on stderr.
     scheduler : None, str or distributed.Client
-        Where the curves are fitted (:func:`thinlayer.afm.distributed.map_batch`): None serially, ``"local"`` on a
-        local dask cluster, ``"tcp://host:8786"`` on a cluster.
+        Where the curves are fitted (:func:`thinlayer.afm.distributed.map_batch`): ``"auto"`` (default) a local dask
+        cluster of one process per core for 256 curves or more (when dask.distributed is installed), else serially;
+        None serially, ``"local"`` on a local dask cluster, ``"tcp://host:8786"`` on a cluster.
     height_image : array or path, optional
         The topography (m) for ``H="height"``.
     substrate : float, optional
@@ -633,6 +634,10 @@ def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: st
     Hmap, H1, level = _thickness_map(H, height_image, substrate, curves, grid)
     fitter = default_fitter() if fit_one is None else fit_one
     items = [(c, float(Hmap[c.index]) if Hmap is not None else H1) for c in curves]
+    if scheduler == "auto":
+        from .distributed import auto_scheduler
+
+        scheduler = auto_scheduler(len(items))
     work = functools.partial(_fit_pixel, fit_one=fitter, punch=punch, nu=float(nu), base=base,
                              law=_law_to_send(scheduler, punch, nu, base, [H for _, H in items]))
     pixels = map_batch(work, items, scheduler=scheduler, progress=progress, label="curves", workers=workers,
