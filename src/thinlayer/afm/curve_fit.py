@@ -609,8 +609,9 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
     linear least-squares solve, and only ``xc`` is searched.  The trial contact points of :func:`_initial` are scored
     on at most :data:`TRIAL_POINTS` block means of the sorted curve (all trials at once); from the best, Gauss-Newton
     steps on the projected functional (Kaufman's variable projection: the step in ``xc`` from its Jacobian column with
-    the linear columns projected out), halved while the residual grows, until the step is below 1e-10 of the curve's
-    span.  Returns what :func:`_solve` returns (its Jacobian and residuals at the solution) or None where the answer
+    the linear columns projected out), halved while the residual grows, until the step's predicted gain in the sum of
+    squares is below 1e-8 of its mean square (the step below 1e-4 of z0's standard error).  Returns what
+    :func:`_solve` returns (its Jacobian and residuals at the solution) or None where the answer
     is not a positive modulus (the caller then runs :func:`_solve`, which says why).
     """
     xs, fs, grid = _trials(x, f, slope, xc_fixed)
@@ -679,16 +680,16 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
             if not jj > 0:
                 break
             step = -float(Jx[i:] @ r[i:]) / jj  # r is orthogonal to Q and to Pp: Jp . r = Jx . r
-            for _ in range(40):
+            new = None
+            while step * step * jj > 1e-8 * rss / n:  # the step's gain: the step above 1e-4 of z0's standard error
                 new = linear(xc + step)
                 if new is not None and new[0] <= rss:
                     break
+                new = None
                 step *= 0.5
-            else:
+            if new is None:  # converged: no step worth taking lowers the residual
                 break
             xc, cur = xc + step, new
-            if abs(step) <= 1e-10 * span:  # 1e-10 of the span: below 1e-4 of any standard error of z0
-                break
     _, E_, r, Pp, spp, i, d, Pc, gd = cur
     Pf = np.zeros(n)
     Pf[i:] = Pc
