@@ -21,7 +21,7 @@ Solvers.  ``solver="lm"`` (the default, the reference) scores the 100 trial cont
 Levenberg-Marquardt on all parameters from the best.  ``solver="varpro"`` (the default of force maps,
 :func:`thinlayer.afm.maps.fit_curve_full`) solves the same least squares by variable projection: the force is linear
 in ``E``, ``b0``, ``b1``, so for a contact point they are one linear solve (the baseline's columns span the same space
-whatever ``z0``: projected out once), the trials are scored all at once on at most 256 block means of the curve, and
+whatever ``z0``: projected out once), the trials are scored all at once on at most 128 block means of the curve, and
 Gauss-Newton steps on the projected residual (Kaufman's approximation) in ``z0`` alone converge in 3-5 evaluations of
 the law on the points in contact; the standard errors are then computed as ``"lm"``'s, from the full Jacobian at the
 solution.  Measured against ``"lm"``: E, z0, b0 within 2.2e-5 of a standard error on the 2,000-point curves of
@@ -75,7 +75,7 @@ WEIGHTINGS = (None, "nanite")
 #: ``"varpro"``: the trial points on block means, then variable projection over the contact point (module docstring)
 SOLVERS = ("lm", "varpro")
 #: the most block means the trial contact points of ``solver="varpro"`` are scored on
-TRIAL_POINTS = 256
+TRIAL_POINTS = 128
 #: the most bootstrap refits asked for in one call (about 2 ms each on a 2,000-point curve)
 MAX_BOOTSTRAP = 5000
 #: a condition number of the column-scaled Jacobian above this means the data cannot separate the parameters
