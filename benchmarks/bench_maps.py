@@ -4,7 +4,8 @@ The curves are synthetic (thinlayer.afm.map_data.synthetic_curve, built in memor
 over the map, contact heights over +-0.3 um, a sphere R = 5 um pressed 0.15 um (half of each curve off contact),
 noise 2 pN. Timed: ``fit_map`` with its DEFAULT fitter (``fit_curve_full``: thinlayer.afm.curve_fit.fit_curve with
 ``solver="varpro"``, E, the contact point and the baseline offset fitted) from the curves to the MapResult with its
-default scheduler (``"auto"``: for 4,096 curves a dask LocalCluster of one worker process per core, forked; the
+default scheduler (``"auto"``: for 4,096 curves a dask LocalCluster of one worker process per core, started as
+``THINLAYER_DASK_START`` says (dask's spawn by default); the
 cluster's start-up and shutdown, sending the curves and the law included), for the half-space (Hertz, closed form)
 and a layer H = 2 um (the any-thickness law (T.7); the law of this process is built before the timed runs, as a
 session that fits several maps has it, and sent to the workers). Each map is fitted ``THINLAYER_BENCH_REPEAT`` times

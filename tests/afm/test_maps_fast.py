@@ -181,16 +181,14 @@ def test_a_worker_adopts_the_law_its_parent_sent(monkeypatch):
         models_at.adopt_law("not a law")
 
 
-def test_local_clusters_start_by_fork_on_linux(monkeypatch):
-    import sys
-
+def test_local_clusters_start_as_dask_says_unless_asked(monkeypatch):
     from thinlayer.afm.distributed import start_method
 
     monkeypatch.delenv("THINLAYER_DASK_START", raising=False)
-    if sys.platform.startswith("linux"):
-        assert start_method() == "fork"
-    monkeypatch.setenv("THINLAYER_DASK_START", "spawn")
-    assert start_method() == "spawn"
+    dask = pytest.importorskip("dask")
+    assert start_method() == dask.config.get("distributed.worker.multiprocessing-method", "spawn")
+    monkeypatch.setenv("THINLAYER_DASK_START", "fork")
+    assert start_method() == "fork"
 
 
 def test_auto_scheduler_is_a_local_cluster_for_a_large_map_only():

@@ -8,7 +8,7 @@ validation study.  The same call runs
 * on dask's in-process threads (``scheduler="threads"``: a ``LocalCluster(processes=False)``; numpy and scipy
   release the GIL in their loops, Python code does not);
 * on a local cluster of worker processes (``scheduler="local"``: ``LocalCluster(processes=True)``, one worker per
-  core, one thread each, started by fork on Linux: :func:`start_method`), the embedded default for a large batch;
+  core, one thread each, started as :func:`start_method` says), the embedded default for a large batch;
 * on an existing cluster (``scheduler="tcp://host:8786"``, or a ``distributed.Client`` already connected);
 * ``scheduler="auto"`` (the default of :func:`thinlayer.afm.maps.fit_map` and ``thinlayer fit-map``): ``"local"`` for
   a batch of :data:`AUTO_BATCH` items or more when dask.distributed is installed and there are 2 cores or more, else
@@ -38,7 +38,7 @@ __all__ = ["AUTO_BATCH", "SCHEDULERS", "auto_scheduler", "chunked", "map_batch",
 #: the named schedulers (besides a ``tcp://``/``tls://``/``inproc://`` address or a ``distributed.Client``)
 SCHEDULERS = (None, "serial", "threads", "local", "auto")
 #: ``scheduler="auto"``: a local cluster of processes from this many items on (with dask.distributed and 2+ cores),
-#: else serially.  Starting 2 forked workers and closing them costs about 0.5 s; a map's curve about 3-7 ms of CPU
+#: else serially.  Starting 2 workers and closing them: about 0.5 s forked, 4 s spawned; a map curve 3-7 ms of CPU
 AUTO_BATCH = 256
 #: seconds to wait for a cluster to start or a scheduler to answer before giving up (one line, never a hang)
 CONNECT_TIMEOUT = 60.0
@@ -124,19 +124,17 @@ def auto_scheduler(n_items: int) -> str | None:
 
 
 def start_method() -> str:
-    """How a local cluster started here starts its worker processes: ``"fork"`` on Linux (the workers are copies of
-    this process, with its imports and the laws it built: 0.3 s to start 2 workers where dask's default ``"spawn"``
-    took 3.3 s, each worker importing dask, numpy, scipy and thinlayer again, benchmarks/bench_maps.py), else dask's
-    configured method.  ``THINLAYER_DASK_START=spawn`` (or ``forkserver``) chooses another.
+    """How a local cluster started here starts its worker processes: dask's configured method (``"spawn"`` by
+    default), or ``THINLAYER_DASK_START`` (``fork``, ``spawn``, ``forkserver``).  ``fork`` starts 2 workers in 0.3 s
+    where ``spawn`` took 3.3 s (each spawned worker imports dask, numpy, scipy and thinlayer again; load 14), but a
+    second forked cluster in the same process was seen to hang in ``Client.scatter`` (benchmarks/bench_maps.py, the
+    second map): opt-in until that is understood.
     """
-    import multiprocessing
     import os
 
     asked = os.environ.get("THINLAYER_DASK_START", "")
     if asked in ("fork", "spawn", "forkserver"):
         return asked
-    if sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods():
-        return "fork"
     import dask
 
     return str(dask.config.get("distributed.worker.multiprocessing-method", "spawn"))
