@@ -2,16 +2,20 @@
 
 The curves are synthetic (thinlayer.afm.map_data.synthetic_curve, built in memory, not timed): E from 3 to 12 kPa
 over the map, contact heights over +-0.3 um, a sphere R = 5 um pressed 0.15 um (half of each curve off contact),
-noise 2 pN.  Timed: ``fit_map`` from the curves to the MapResult on a dask LocalCluster of 2 worker processes
-(``scheduler="local"``; start-up, sending the curves and each worker's first build of the law included), for the
-half-space (Hertz, closed form) and a layer H = 2 um (the any-thickness law (T.7)), by the fast fitter
-``fit_curve_basic``; the default ``fit_curve_full`` (thinlayer.afm.curve_fit.fit_curve: contact point and baseline
-fitted) on the whole map only with ``THINLAYER_BENCH_FULL=1`` (minutes).  Reading a map file is a separate row: a
-16 x 16 map written in afmformats' HDF5 format and read back by ``read_map`` (afmformats opens the file for every
-column of every curve: the per-curve cost is afmformats').  Load-independent rows: the CPU seconds per curve of each
-fitter (serial, 64 curves) and the time 2 idle cores would take for the map from it (an extrapolation without
-start-up or transfer).  ``THINLAYER_BENCH_MAP=N`` sets the side (default 64); the load average is printed beside
-the rows: the 2 cores are shared.
+noise 2 pN. Timed: ``fit_map`` with its DEFAULT fitter (``fit_curve_full``: thinlayer.afm.curve_fit.fit_curve with
+``solver="varpro"``, E, the contact point and the baseline offset fitted) from the curves to the MapResult with its
+default scheduler (``"auto"``: for 4,096 curves a dask LocalCluster of one worker process per core, started as
+``THINLAYER_DASK_START`` says (dask's spawn by default); the
+cluster's start-up and shutdown, sending the curves and the law included), for the half-space (Hertz, closed form)
+and a layer H = 2 um (the any-thickness law (T.7); the law of this process is built before the timed runs, as a
+session that fits several maps has it, and sent to the workers). Each map is fitted ``THINLAYER_BENCH_REPEAT`` times
+(default 2): the rows give the best and the worst wall time and the load average during the runs. Load-independent
+rows: the CPU seconds per curve (serial, 64 curves) of the default fitter, of the reference ``solver="lm"`` (the
+same least squares by trial contact points and Levenberg-Marquardt) and of the simpler ``fit_curve_basic``, and the
+time 2 idle cores would take for the map from the default's CPU (an extrapolation without start-up or transfer); the
+largest difference between the default and the reference fitter's E, in the reference's standard errors, is printed.
+Reading a map file is a separate row: a 16 x 16 map written in afmformats' HDF5 format and read back by
+``read_map``. ``THINLAYER_BENCH_MAP=N`` sets the side (default 64).
 """
 from __future__ import annotations
 
@@ -52,49 +56,63 @@ def _curves(n: int, H: float, seed: int = 0):
     return curves, E
 
 
+def _cpu_per_curve(fitter, curves, Hs, **options) -> float:
+    fitter(curves[0], punch=R, H=Hs, nu=0.5, **options)
+    t0 = time.process_time()
+    for c in curves:
+        fitter(c, punch=R, H=Hs, nu=0.5, **options)
+    return (time.process_time() - t0) / len(curves)
+
+
 def run() -> list[Row]:
     if importlib.util.find_spec("afmformats") is None or importlib.util.find_spec("distributed") is None:
         return []
     import numpy as np
 
     from thinlayer.afm.map_data import read_map, write_synthetic_map
-    from thinlayer.afm.maps import fit_curve_basic, fit_curve_full, fit_map
+    from thinlayer.afm.maps import default_fitter, fit_curve_basic, fit_curve_full, fit_map
     from thinlayer.contact.any_thickness import any_thickness_law
 
     n = SIDE
-    any_thickness_law(0.5, "bonded")  # this process's law (the workers build theirs inside the timed runs)
+    repeat = int(os.environ.get("THINLAYER_BENCH_REPEAT", "2"))
+    any_thickness_law(0.5, "bonded")  # this process's law (sent to the workers inside the timed runs)
     data = {H: _curves(n, H) for H in (math.inf, 2e-6)}
-    print(f"# bench_maps: {n} x {n} curves of {POINTS} points; {_load()} before the runs", file=sys.stderr)
+    name = default_fitter().__name__
+    print(f"# bench_maps: {n} x {n} curves of {POINTS} points; default fitter {name} (solver='varpro'); {_load()} "
+          "before the runs", file=sys.stderr)
     rows = []
-    runs = [(math.inf, fit_curve_basic, "<= 15 s"), (2e-6, fit_curve_basic, "<= 15 s")]
-    if os.environ.get("THINLAYER_BENCH_FULL") == "1":
-        runs += [(math.inf, fit_curve_full, ""), (2e-6, fit_curve_full, "")]
-    for H, fitter, target in runs:
+    for H in (math.inf, 2e-6):
         where = "half-space (Hertz)" if math.isinf(H) else "layer H = 2 um (T.7)"
         curves, E = data[H]
-
-        def go(fitter=fitter, H=H, curves=curves, E=E, where=where):
-            r = fit_map(curves, punch=R, H=None if math.isinf(H) else H, nu=0.5, fit_one=fitter, progress=False,
-                        scheduler="local", workers=2, timeout=3600)
+        walls, loads = [], []
+        for _ in range(repeat):
+            t0 = time.perf_counter()
+            r = fit_map(curves, punch=R, H=None if math.isinf(H) else H, nu=0.5, progress=False, timeout=3600)
+            walls.append(time.perf_counter() - t0)
+            loads.append(os.getloadavg()[0])
             ok = np.isfinite(r.E)
             err = float(np.max(np.abs(r.E[ok] / E[ok] - 1))) if ok.any() else math.nan
-            print(f"#   {fitter.__name__}, {where}: {int(ok.sum())}/{n * n} pixels fitted, largest |E/E_true - 1| = "
-                  f"{err:.2g}; {_load()}", file=sys.stderr)
-
-        rows.append(Row(f"fit_map {n}x{n} x {POINTS} pts, {fitter.__name__}, {where}, local cluster 2 procs", once(go),
-                        target))
+            print(f"#   {r.fitter}, {where}: {walls[-1]:.2f} s wall, {int(ok.sum())}/{n * n} pixels fitted, "
+                  f"{r.counts()['flagged']} flagged, largest |E/E_true - 1| = {err:.2g}; {_load()}", file=sys.stderr)
+        tail = f"(load {min(loads):.1f}-{max(loads):.1f})"
+        rows.append(Row(f"fit_map {n}x{n} x {POINTS} pts, default fitter {r.fitter}, {where}, default "
+                        f"scheduler (local cluster, {os.cpu_count()} cores), "
+                        f"best of {repeat} {tail}", min(walls), "<= 15 s"))
+        rows.append(Row(f"  the same, worst of {repeat}", max(walls), ""))
     for H in (math.inf, 2e-6):
         curves = data[H][0][:64]
         Hs = None if math.isinf(H) else H
         where = "half-space" if math.isinf(H) else "H = 2 um"
-        for fitter in (fit_curve_basic, fit_curve_full):
-            fitter(curves[0], punch=R, H=Hs, nu=0.5)
-            t0 = time.process_time()
-            for c in curves:
-                fitter(c, punch=R, H=Hs, nu=0.5)
-            cpu = (time.process_time() - t0) / len(curves)
-            rows.append(Row(f"CPU per curve, {fitter.__name__}, {where} (64 curves, serial)", cpu, ""))
-            rows.append(Row(f"  -> {n}x{n} curves on 2 idle cores, from that CPU (extrapolated)", cpu * n * n / 2, ""))
+        cpu = _cpu_per_curve(fit_curve_full, curves, Hs)
+        rows.append(Row(f"CPU per curve, default {name} (varpro), {where} (64 curves, serial)", cpu, ""))
+        rows.append(Row(f"  -> {n}x{n} curves on 2 idle cores, from that CPU (extrapolated)", cpu * n * n / 2, ""))
+        rows.append(Row(f"CPU per curve, reference fit_curve solver='lm', {where}", _cpu_per_curve(
+            fit_curve_full, curves, Hs, solver="lm"), ""))
+        rows.append(Row(f"CPU per curve, fit_curve_basic, {where}", _cpu_per_curve(fit_curve_basic, curves, Hs), ""))
+        worst = max(abs(fit_curve_full(c, punch=R, H=Hs).E - ref.E) / ref.E_se
+                    for c in curves[:16] for ref in [fit_curve_full(c, punch=R, H=Hs, solver="lm")])
+        print(f"#   {where}: the default fitter's E against the reference's, largest |dE|/E_se over 16 curves = "
+              f"{worst:.2g}", file=sys.stderr)
     with tempfile.TemporaryDirectory() as tmp:
         p = write_synthetic_map(Path(tmp) / "map16.h5", np.full((16, 16), 5e3), math.inf, R=R, points=POINTS,
                                 depth=0.15e-6, noise=2e-12)

@@ -8,8 +8,11 @@ validation study.  The same call runs
 * on dask's in-process threads (``scheduler="threads"``: a ``LocalCluster(processes=False)``; numpy and scipy
   release the GIL in their loops, Python code does not);
 * on a local cluster of worker processes (``scheduler="local"``: ``LocalCluster(processes=True)``, one worker per
-  core, one thread each), the embedded default for a large batch;
-* on an existing cluster (``scheduler="tcp://host:8786"``, or a ``distributed.Client`` already connected).
+  core, one thread each, started as :func:`start_method` says), the embedded default for a large batch;
+* on an existing cluster (``scheduler="tcp://host:8786"``, or a ``distributed.Client`` already connected);
+* ``scheduler="auto"`` (the default of :func:`thinlayer.afm.maps.fit_map` and ``thinlayer fit-map``): ``"local"`` for
+  a batch of :data:`AUTO_BATCH` items or more when dask.distributed is installed and there are 2 cores or more, else
+  serially.
 
 No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about 4 per worker: a
 4096-pixel map on 2 workers is 8 tasks, not 4096), sent to the workers by ``Client.scatter``, mapped by
@@ -30,10 +33,13 @@ from typing import Any
 
 from ..errors import InputError, InputTypeError
 
-__all__ = ["SCHEDULERS", "chunked", "map_batch", "solve_sweep"]
+__all__ = ["AUTO_BATCH", "SCHEDULERS", "auto_scheduler", "chunked", "map_batch", "solve_sweep", "start_method"]
 
 #: the named schedulers (besides a ``tcp://``/``tls://``/``inproc://`` address or a ``distributed.Client``)
-SCHEDULERS = (None, "serial", "threads", "local")
+SCHEDULERS = (None, "serial", "threads", "local", "auto")
+#: ``scheduler="auto"``: a local cluster of processes from this many items on (with dask.distributed and 2+ cores),
+#: else serially.  Starting 2 workers and closing them: about 0.5 s forked, 4 s spawned; a map curve 3-7 ms of CPU
+AUTO_BATCH = 256
 #: seconds to wait for a cluster to start or a scheduler to answer before giving up (one line, never a hang)
 CONNECT_TIMEOUT = 60.0
 
@@ -93,9 +99,12 @@ def _client(scheduler: Any, workers: int | None):
     if isinstance(scheduler, Client):
         return scheduler, False
     if scheduler in ("threads", "local"):
+        import dask
+
         n = workers or (2 if scheduler == "threads" else _cores())
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": a free port
-                               dashboard_address=":0", silence_logs=logging.CRITICAL)
+        with dask.config.set({"distributed.worker.multiprocessing-method": start_method()}):
+            cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": any port
+                                   dashboard_address=":0", silence_logs=logging.CRITICAL)
         return Client(cluster, timeout=CONNECT_TIMEOUT), True
     try:
         return Client(scheduler, timeout=CONNECT_TIMEOUT), True
@@ -103,6 +112,32 @@ def _client(scheduler: Any, workers: int | None):
         raise InputError(f"scheduler {scheduler!r}: no dask scheduler answered within {CONNECT_TIMEOUT:g} s "
                          f"({str(exc).splitlines()[0][:120]}); give a running scheduler's address, 'local' or None")\
             from None
+
+
+def auto_scheduler(n_items: int) -> str | None:
+    """What ``scheduler="auto"`` runs ``n_items`` on: ``"local"`` or None (serially); see :data:`AUTO_BATCH`."""
+    import importlib.util
+
+    if n_items >= AUTO_BATCH and _cores() > 1 and importlib.util.find_spec("distributed") is not None:
+        return "local"
+    return None
+
+
+def start_method() -> str:
+    """How a local cluster started here starts its worker processes: dask's configured method (``"spawn"`` by
+    default), or ``THINLAYER_DASK_START`` (``fork``, ``spawn``, ``forkserver``).  ``fork`` starts 2 workers in 0.3 s
+    where ``spawn`` took 3.3 s (each spawned worker imports dask, numpy, scipy and thinlayer again; load 14), but a
+    second forked cluster in the same process was seen to hang in ``Client.scatter`` (benchmarks/bench_maps.py, the
+    second map): opt-in until that is understood.
+    """
+    import os
+
+    asked = os.environ.get("THINLAYER_DASK_START", "")
+    if asked in ("fork", "spawn", "forkserver"):
+        return asked
+    import dask
+
+    return str(dask.config.get("distributed.worker.multiprocessing-method", "spawn"))
 
 
 def _cores() -> int:
@@ -121,11 +156,11 @@ def check_scheduler(scheduler: Any) -> Any:
     if isinstance(scheduler, str):
         if scheduler.startswith(("tcp://", "tls://", "inproc://", "ucx://", "ws://", "wss://")):
             return scheduler
-        raise InputError(f"scheduler must be None (serial), 'threads', 'local' (a dask LocalCluster) or a dask "
-                         f"scheduler address such as 'tcp://host:8786', got {scheduler[:80]!r}")
+        raise InputError(f"scheduler must be None (serial), 'threads', 'local' (a dask LocalCluster), 'auto' or a "
+                         f"dask scheduler address such as 'tcp://host:8786', got {scheduler[:80]!r}")
     if type(scheduler).__name__ == "Client" and type(scheduler).__module__.startswith("distributed"):
         return scheduler
-    raise InputTypeError(f"scheduler must be None, 'threads', 'local', an address 'tcp://host:8786' or a "
+    raise InputTypeError(f"scheduler must be None, 'threads', 'local', 'auto', an address 'tcp://host:8786' or a "
                          f"distributed.Client, got {type(scheduler).__name__}")
 
 
@@ -170,6 +205,8 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
     """
     items = list(items)
     scheduler = check_scheduler(scheduler)
+    if scheduler == "auto":
+        scheduler = auto_scheduler(len(items))
     bar = Progress(len(items), progress, label)
     try:
         if scheduler in (None, "serial") or not items:

@@ -20,7 +20,11 @@ substrate level (:func:`thickness_from_height`).
 The per-curve fitter.  ``fit_one(curve, punch=, H=, nu=, base=)`` takes a :class:`~thinlayer.afm.map_data.MapCurve`
 and returns an object with ``E`` and optionally ``E_se``, ``H``, ``contact_point`` (or ``z0``), ``residual_rms``,
 ``valid``, ``validity``, ``flags``.  The default (:func:`default_fitter`) is :func:`fit_curve_full`:
-:func:`thinlayer.afm.curve_fit.fit_curve`, with the contact point and the baseline offset as fit parameters.
+:func:`thinlayer.afm.curve_fit.fit_curve`, with the contact point and the baseline offset as fit parameters, solved by
+variable projection (``solver="varpro"``: the reference Levenberg-Marquardt's numbers within 1e-3 of a standard
+error, 6-7 ms of CPU per 2,000-point curve on a layer).  With ``scheduler="auto"`` (default) a map of 256 curves or
+more runs on a local dask cluster (one process per core); the any-thickness law is built here once and sent to
+the workers (:func:`thinlayer.contact.models.any_thickness.adopt_law`).
 :func:`fit_curve_basic` is a simpler, faster fitter (baseline line fitted to the first quarter of the approach and
 subtracted, the contact point started where the corrected force leaves the noise, then :func:`thinlayer.fit` with
 the contact point free).
@@ -191,6 +195,9 @@ def fit_curve_full(curve: MapCurve, *, punch: Any, H: Any = None, nu: float = 0.
     from .curves import curve_from_arrays
 
     c = curve_from_arrays(curve.tip_position, curve.force, axis="tip position", units=("m", "N"), source=curve.name)
+    options.setdefault("solver", "varpro")
+    if options.get("model") is None and isinstance(punch, (int, float)) and H is not None and math.isfinite(H):
+        options["model"] = "any-thickness"  # the sphere's law at any thickness, named: no search of the registry
     return fit_curve(c, punch=punch, H=H, nu=nu, base=base, **options)
 
 
@@ -231,8 +238,14 @@ def _number(obj: Any, *names: str) -> float:
 
 
 def _fit_pixel(item: tuple[MapCurve, Any], *, fit_one: Callable[..., Any], punch: Any, nu: float,
-               base: str) -> _Pixel:
-    """Fit one pixel, turning a refusal into a failed pixel with its reason (one line)."""
+               base: str, law: Any = None) -> _Pixel:
+    """Fit one pixel, turning a refusal into a failed pixel with its reason (one line).  ``law``: the any-thickness
+    law the parent built, adopted by this (worker) process instead of building its own.
+    """
+    if law is not None:
+        from ..contact.models.any_thickness import adopt_law
+
+        adopt_law(law)
     curve, H = item
     if H is not None and not (isinstance(H, float) and math.isinf(H)) and not (H > 0):
         return _Pixel(curve.index, status="failed",
@@ -549,8 +562,25 @@ def _thickness_map(H: Any, height_image: Any, substrate: Any, curves: list[MapCu
     return arr, None, math.nan
 
 
+def _law_to_send(scheduler: Any, punch: Any, nu: float, base: str, Hs: list) -> Any:
+    """The any-thickness law of the sphere, built here once and sent with the work, when the pixels run in other
+    processes (a dask scheduler) and some pixel has a finite thickness: each worker adopts it instead of building
+    its own (about 3 s CPU of symbolic series and tables per process, benchmarks/bench_maps.py).
+    """
+    if scheduler in (None, "serial", "threads") or not isinstance(punch, (int, float)) or isinstance(punch, bool):
+        return None
+    if not any(H is not None and math.isfinite(H) and H > 0 for H in Hs):
+        return None
+    from ..contact.any_thickness import any_thickness_law
+
+    try:
+        return any_thickness_law(nu, base)
+    except (ThinlayerError, ValueError, TypeError):  # the pixels say why, one by one
+        return None
+
+
 def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: str = "bonded",
-            fit_one: Callable[..., Any] | None = None, progress: bool = True, scheduler: Any = None,
+            fit_one: Callable[..., Any] | None = None, progress: bool = True, scheduler: Any = "auto",
             height_image: Any = None, substrate: float | None = None, workers: int | None = None,
             timeout: float | None = None) -> MapResult:
     """Fit every curve of a force map: E, H, contact point and quality per pixel (issue 25 item 5).
@@ -574,8 +604,9 @@ def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: st
     progress : bool
         A progress bar on stderr.
     scheduler : None, str or distributed.Client
-        Where the curves are fitted (:func:`thinlayer.afm.distributed.map_batch`): None serially, ``"local"`` on a
-        local dask cluster, ``"tcp://host:8786"`` on a cluster.
+        Where the curves are fitted (:func:`thinlayer.afm.distributed.map_batch`): ``"auto"`` (default) a local dask
+        cluster of one process per core for 256 curves or more (when dask.distributed is installed), else serially;
+        None serially, ``"local"`` on a local dask cluster, ``"tcp://host:8786"`` on a cluster.
     height_image : array or path, optional
         The topography (m) for ``H="height"``.
     substrate : float, optional
@@ -607,7 +638,12 @@ def fit_map(source: Any, *, punch: Any, H: Any = None, nu: float = 0.5, base: st
     Hmap, H1, level = _thickness_map(H, height_image, substrate, curves, grid)
     fitter = default_fitter() if fit_one is None else fit_one
     items = [(c, float(Hmap[c.index]) if Hmap is not None else H1) for c in curves]
-    work = functools.partial(_fit_pixel, fit_one=fitter, punch=punch, nu=float(nu), base=base)
+    if scheduler == "auto":
+        from .distributed import auto_scheduler
+
+        scheduler = auto_scheduler(len(items))
+    work = functools.partial(_fit_pixel, fit_one=fitter, punch=punch, nu=float(nu), base=base,
+                             law=_law_to_send(scheduler, punch, nu, base, [H for _, H in items]))
     pixels = map_batch(work, items, scheduler=scheduler, progress=progress, label="curves", workers=workers,
                        timeout=timeout)
     shape = grid.shape

@@ -467,6 +467,10 @@ def _law_cached(nu: float, base: str) -> AnyThicknessLaw:
     return build_law(_packaged_table(), nu if base == "bonded" else 0.3, base)
 
 
+#: laws built in another process and sent here, by (nu, base) (thinlayer.contact.models.any_thickness.adopt_law)
+ADOPTED_LAWS: dict[tuple[float, str], AnyThicknessLaw] = {}
+
+
 @boundary
 def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
     """The sphere's any-thickness law for one Poisson ratio and base (cached; about 20 ms the first time).
@@ -479,7 +483,8 @@ def any_thickness_law(nu: float, base: str = "bonded") -> AnyThicknessLaw:
     ([1.0602], True)
     """
     nu, base = _check_nu_base(nu, base)
-    return _law_cached(nu if base == "bonded" else 0.3, base)
+    key = (nu if base == "bonded" else 0.3, base)
+    return ADOPTED_LAWS.get(key) or _law_cached(*key)
 
 
 # =============================================================================================

@@ -60,9 +60,10 @@ def add_map_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
     s.add_argument("--nu", type=finite, required=True, help="Poisson ratio in (-1, 1/2]")
     s.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
                    help="the base under the layer (default bonded)")
-    s.add_argument("--scheduler", default=None, metavar="ADDR|local|threads",
+    s.add_argument("--scheduler", default="auto", metavar="ADDR|auto|local|threads|serial",
                    help="run on dask.distributed: 'local' (a local cluster, one process per core), 'threads', or a "
-                        "scheduler address tcp://host:8786 (default: serially in this process)")
+                        "scheduler address tcp://host:8786; 'serial': in this process (default auto: local for 256 "
+                        "curves or more when dask is installed, else serial)")
     s.add_argument("--workers", type=int, help="workers of a local cluster (default: one per core)")
     s.add_argument("--out", type=Path, required=True, help="output folder (created if missing)")
     s.add_argument("--overwrite", action="store_true", help="replace the output files if they exist")

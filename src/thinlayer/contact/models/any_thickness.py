@@ -9,18 +9,78 @@ thin-layer models and before the direct solver.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from ...asymptotics.solution import ValidityError
-from ..any_thickness import NotTabulatedError, any_thickness_fields, any_thickness_law, sphere_radius
+from ...errors import InputTypeError
+from ..any_thickness import (
+    ADOPTED_LAWS,
+    AnyThicknessLaw,
+    NotTabulatedError,
+    any_thickness_fields,
+    any_thickness_law,
+    sphere_radius,
+)
 from ..indentation import Indentation
 from ..problem import Problem
 from .base import ForceCurve, Model, register_model
 from .common import polynomial_reason
 from .tip_tables import tip_table_curve
 
-__all__ = ["AnyThicknessModel", "sphere_curve"]
+__all__ = ["AnyThicknessModel", "SphereCurve", "adopt_law", "sphere_curve"]
+
+#: ``R delta`` within these bounds: the contact area of (T.7) is a positive double wherever the force is (the
+#: force-only path needs no area to mask the force; outside them :meth:`SphereCurve.force_slopes` computes it)
+_RD_SAFE = (1e-250, 1e250)
+
+
+@dataclass(frozen=True, eq=False)
+class SphereCurve(ForceCurve):
+    """The sphere's :class:`ForceCurve` of the law (T.7), with a force-only path for fits.
+
+    A fit evaluates the force (and its slopes) many times and the validity once, over the fitted depths:
+    :meth:`force_slopes` computes ``P`` from ``log(P/P_Hertz)`` alone (no contact radius, no error estimate), the
+    same numbers bit for bit as :meth:`ForceCurve.force` and ``slopes`` (tests/afm/test_maps_fast.py).
+    """
+
+    fast: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None  # delta > 0 -> (P, d log P/d log chi)
+    radius_scale: float = 1.0  # R: the contact area is pi R delta (c/sqrt(R delta))^2
+
+    def force_slopes(self, delta: np.ndarray, slopes: bool = True) -> tuple[np.ndarray, Any, Any]:
+        """``(force, d log P/d log delta, d log P/d log H)`` at depths ``delta > 0`` (every one positive), equal bit for
+        bit to ``(self.force(delta), *self.slopes(delta))``; the slopes None unless ``slopes``.
+        """
+        d = np.asarray(delta, dtype=float)
+        fast = self.fast is not None and self.tol == math.inf and d.size > 0
+        if fast:
+            lo, hi = self.radius_scale * float(d.min()), self.radius_scale * float(d.max())
+            fast = lo > 0 and _RD_SAFE[0] < lo and hi < _RD_SAFE[1]  # NaN fails
+        if not fast:
+            P = self.force(d)
+            return (P, *self.slopes(d)) if slopes else (P, None, None)
+        with np.errstate(all="ignore"):
+            P, dlp = self.fast(d)
+            ok = P > 0
+            ok &= P < math.inf
+        if not ok.all():
+            P[~ok] = np.nan
+        if not slopes:
+            return P, None, None
+        return P, 1.5 + 0.5 * dlp, -dlp
+
+
+def adopt_law(law: AnyThicknessLaw) -> None:
+    """Use ``law`` for its (nu, base) from now on instead of building it: a worker process of a force map receives
+    the law its parent built (:func:`thinlayer.afm.maps.fit_map`), the same numbers, and skips the build (seconds of
+    symbolic series per process).
+    """
+    if not isinstance(law, AnyThicknessLaw):
+        raise InputTypeError(f"adopt_law() takes an AnyThicknessLaw, got {type(law).__name__}")
+    ADOPTED_LAWS.setdefault((law.nu, law.base), law)
 
 
 def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float) -> ForceCurve:
@@ -49,6 +109,10 @@ def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float
         _, dlp = law.log_force_ratio(np.log(np.sqrt(R * d) / H))
         return 1.5 + 0.5 * dlp, -dlp
 
+    def fast(d):  # f(d)'s force and slopes' dlp from one lookup of log(P/P_Hertz): the same operations
+        lp, dlp = law.log_force_ratio(np.log(np.sqrt(R * d) / H))
+        return K * d**1.5 * np.exp(lp), dlp
+
     grid = np.geomspace(1e-8, 1e8, 4001)
 
     def inverse(c):
@@ -61,7 +125,8 @@ def sphere_curve(name: str, R: float, H: float, nu: float, base: str, tol: float
             x = x - (y - t) / s
         return (np.exp(x) * H) ** 2 / R
 
-    return ForceCurve(name, tol, f, radius_law=radius, inverse_radius=inverse, slopes=slopes)
+    return SphereCurve(name, tol, f, radius_law=radius, inverse_radius=inverse, slopes=slopes, fast=fast,
+                       radius_scale=float(R))
 
 
 
