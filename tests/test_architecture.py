@@ -51,7 +51,8 @@ RANK = {
 STAGES = [
     "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "tip_law", "composite",
     "pyramid_law", "second_order",
-    "incompressible", "thick_layer", "thick_tips", "pyramid_thick", "flat_punch", "adhesion", "solution",
+    "incompressible", "thick_layer", "thick_tips", "pyramid_thick", "flat_punch", "adhesion", "adhesion_elliptic",
+    "solution",
 ]
 
 #: modules whose import must not load scipy (the symbolic pipeline)
