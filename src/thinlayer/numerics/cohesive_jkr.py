@@ -14,7 +14,11 @@ lambdas stay small (default 2 and 3), and the extrapolation's remainder is not s
 extrapolation step ``|X_JKR - X(l2)|`` (measured on the sphere with the axisymmetric solver at lambda = 2, 3: the true
 remainder is 0.17-0.31 of it for the force, 0.04 for the radius), plus the grid's: the change from ``n/2`` to ``n``
 cells at each lambda, carried through the Richardson weights.  Checked against the axisymmetric JKR solver (J.1)-(J.5)
-on the sphere on a thin and a thick layer (tests/adhesion/test_elliptic_reference.py).
+on the sphere (bonded nu = 0.3, n = 128/64; tests/adhesion/test_elliptic_reference.py, SLOW): H/R = 0.1, force off by
+2.3e-4 (estimate 1.1e-3, 2 % of the force), radius 6e-4 (estimate 0.02); H/R = 1, force 4.9e-3 (estimate 1.3e-2,
+11 %), radius 2.5e-3 (estimate 0.021).  The semi-axes' estimate is dominated by the extrapolation step, which
+overstates the radius's remainder about 25 times on the sphere: a third lambda (4 or 5, on a finer grid) would
+tighten it (not done).  Cost: 0.5-3 min of CPU per state at n = 128-320.
 
 The contact semi-axes are read off the sub-cell contour (:class:`~thinlayer.numerics.fft2d.Contact2D`) where it
 crosses the axes ``x2 = 0`` and ``x1 = 0`` (a punch symmetric about both axes, apex at the origin).
