@@ -13,7 +13,9 @@ Measured (2026-11-26, branch adhesion2d; diff/allowed, force / a1 / a2): law bon
 w = 0.005 0.30/0.30/0.15, w = 0.02 0.03/0.67/0.71; frictionless R2/R1 = 2: 0.17/0.26/0.07, 0.10/0.37/0.38;
 R2/R1 = 4 H = 0.05, w = 0.005: bonded 0.30/0.37/0.18, frictionless 0.17/0.47/0.10; half-space at H = 10:
 R2/R1 = 2 0.22/0.27/0.27, R2/R1 = 4 0.61/0.03/0.25; bonded 0.5 direct only (R2/R1 = 2): P = 0.5939 +- 0.0010,
-a1 = 0.272 +- 0.006, a2 = 0.364 +- 0.009.  The w = 0.02 cells at R2/R1 = 4 were not finished at the time of writing.
+a1 = 0.272 +- 0.006, a2 = 0.364 +- 0.009; R2/R1 = 4 H = 0.05, w = 0.02: bonded 0.03/0.78/0.90, frictionless
+0.08/0.47/0.54.  Doubt: in the w = 0.02 cells (near the load-controlled pull-off, k ~ g) the law's semi-axes exceed
+the reference's by 10-16 %, covered mostly by the reference's own (extrapolation) estimate, not by the law's.
 
 Each cell costs 0.5-3 min of CPU (grid Maugis-Dugdale at lambda = 2, 3 on n and n/2 cells): THINLAYER_SLOW=1 only.
 Run as a script to print the table:  python tests/adhesion/test_elliptic_acceptance.py
