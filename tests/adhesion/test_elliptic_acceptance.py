@@ -1,12 +1,12 @@
-"""Acceptance cells of the elliptic paraboloid (issue 26 item 6): the thin-layer law (J.19)-(J.23) against the 2D
-JKR reference (D.11), every difference inside (law estimate + reference estimate).
+"""Acceptance cells of the elliptic paraboloid (issue 26 item 6): the thin-layer law (J.25)-(J.29) against the 2D
+JKR reference (D.12), every difference inside (law estimate + reference estimate).
 
 Kinds of cell (R1 = 1, mu = 0.35):
 * ``law``: a thin compressible layer (bonded nu = 0.3, frictionless base): the law :func:`elliptic_jkr` against
   :func:`jkr_limit_2d` at the same depth: force, semi-axes a1, a2.
 * ``half-space``: a thick layer (H = 10 R1): the 2D reference on the layer against the 2D reference on the half-space
   (the thick end; the half-space elliptic JKR of Johnson & Greenwood (1997) is not transcribed).
-* ``direct``: bonded nu = 0.5, where no law exists (the contour is not a level set, (J.23)): the reference and its
+* ``direct``: bonded nu = 0.5, where no law exists (the contour is not a level set, (J.29)): the reference and its
   estimate only.
 
 Measured (2026-11-26, branch adhesion2d; diff/allowed, force / a1 / a2): law bonded 0.3 R2/R1 = 2 H = 0.04:

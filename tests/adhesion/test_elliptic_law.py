@@ -1,8 +1,8 @@
-"""The thin-layer JKR law of the elliptic paraboloid (J.19)-(J.23) (issue 26 item 6).
+"""The thin-layer JKR law of the elliptic paraboloid (J.25)-(J.29) (issue 26 item 6).
 
-Independent routes: an mpmath quadrature of the outer pressure (2.29) over the contact ellipse (J.21); the sphere's
+Independent routes: an mpmath quadrature of the outer pressure (2.29) over the contact ellipse (J.27); the sphere's
 thin-layer law (J.11) at R1 = R2 (derived separately, in (r, c)); the direct axisymmetric JKR solver (J.1)-(J.5)
-for the estimate (J.23) on the sphere.  The elliptic cells against the 2D solver are in test_elliptic_acceptance.py.
+for the estimate (J.29) on the sphere.  The elliptic cells against the 2D solver are in test_elliptic_acceptance.py.
 """
 import math
 
@@ -23,21 +23,21 @@ LAW = elliptic_jkr(BondedLayer(0.3))
 
 
 def test_derived_law_symbolic_ladder():
-    """(J.21), (J.22): the force and the pull-off in closed form, checked by ==, then expand/cancel, then simplify."""
+    """(J.27), (J.28): the force and the pull-off in closed form, checked by ==, then expand/cancel, then simplify."""
     syms = {s.name: s for s in LAW.force.free_symbols}
     R1, R2, k, w, H, vt, A = (syms[n] for n in ("R_1", "R_2", "k", "w", "H", "vartheta", r"\mathcal{A}"))
     g = sp.sqrt(2 * A * H * w / vt)
     closed = sp.pi * vt * sp.sqrt(R1 * R2) * (k**2 - 2 * g * k) / (A * H)
     assert LAW.force == closed or sp.cancel(sp.expand(LAW.force - closed)) == 0 or sp.simplify(LAW.force - closed) == 0
-    assert sp.expand(LAW.pull_off_load + 2 * sp.pi * w * sp.sqrt(R1 * R2)) == 0  # (J.22)
+    assert sp.expand(LAW.pull_off_load + 2 * sp.pi * w * sp.sqrt(R1 * R2)) == 0  # (J.28)
     a1, a2 = LAW.semi_axes
-    assert sp.expand(a1**2 / (2 * R1) - k) == 0 and sp.expand(a2**2 / (2 * R2) - k) == 0  # the level set (J.20)
+    assert sp.expand(a1**2 / (2 * R1) - k) == 0 and sp.expand(a2**2 / (2 * R2) - k) == 0  # the level set (J.26)
     assert sp.simplify(LAW.contour_pressure + sp.sqrt(2 * vt * w / (A * H))) == 0
-    assert "J.21" in LAW.latex() and "order 0" in str(LAW)
+    assert "J.27" in LAW.latex() and "order 0" in str(LAW)
 
 
 def test_force_by_mpmath_quadrature():
-    """(J.21): P = iint_{Phi<k} p_out dx by mpmath (Cartesian, x2 inner), against the law's state, to 1e-10."""
+    """(J.27): P = iint_{Phi<k} p_out dx by mpmath (Cartesian, x2 inner), against the law's state, to 1e-10."""
     H, R1, R2, w, mu = 0.02, 1.0, 4.0, 0.05, 1.0
     vt = mu / 0.7
     s = LAW.state(0.015, H, R1, R2, w, mu)
@@ -71,7 +71,7 @@ def test_sphere_limit_is_J11():
 
 @pytest.mark.parametrize("c_over_H", [10.0, 20.0])
 def test_estimate_holds_on_the_sphere_against_direct(c_over_H):
-    """(J.23) at R1 = R2: |law - direct JKR solver| <= the estimate, at the direct state's depth (force and radius;
+    """(J.29) at R1 = R2: |law - direct JKR solver| <= the estimate, at the direct state's depth (force and radius;
     bonded nu = 0.3, H = 0.01, w = 0.05 vartheta H ... the scaling of (J.11)'s measurements)."""
     H, mu, w = 0.01, 1.0, 0.02
     c = c_over_H * H

@@ -1,4 +1,4 @@
-"""The 2D JKR reference (D.11): Richardson in lambda^-2 of the grid's Maugis-Dugdale states (issue 26 item 6).
+"""The 2D JKR reference (D.12): Richardson in lambda^-2 of the grid's Maugis-Dugdale states (issue 26 item 6).
 
 Independent route: on the sphere the axisymmetric JKR direct solver (J.1)-(J.5) (no grid, no cohesive zone), on a
 thin (H/R = 0.1) and a thick (H/R = 1) bonded layer; the reference must equal it inside its own estimate.  The

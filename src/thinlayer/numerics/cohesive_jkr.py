@@ -1,6 +1,6 @@
-r"""The JKR limit of the grid's Maugis-Dugdale states: a 2D direct reference for adhesion of any punch (D.11).
+r"""The JKR limit of the grid's Maugis-Dugdale states: a 2D direct reference for adhesion of any punch (D.12).
 
-(D.11) *JKR as the large-lambda limit.*  At a fixed depth the Maugis-Dugdale force, contact semi-axes and depth of
+(D.12) *JKR as the large-lambda limit.*  At a fixed depth the Maugis-Dugdale force, contact semi-axes and depth of
 the grid solver (:func:`~thinlayer.numerics.cohesive.maugis_dugdale_2d`, (D.10)) tend to JKR's like ``lambda^-2``
 (the cohesive zone's width is ``O(lambda^-2)``; measured with the axisymmetric solver (D.3)-(D.9) on the sphere,
 bonded nu = 0.3, H/R = 0.1 and 1: ``lambda^2 (P_MD - P_JKR)`` changes by 2 % from lambda = 10 to 20, and the
@@ -44,7 +44,7 @@ __all__ = ["JKRLimit2D", "jkr_limit_2d"]
 
 @dataclass(frozen=True)
 class JKRLimit2D(RichDisplay):
-    """JKR state at a prescribed depth from the Maugis-Dugdale states of the grid (D.11).
+    """JKR state at a prescribed depth from the Maugis-Dugdale states of the grid (D.12).
 
     Attributes
     ----------
@@ -70,14 +70,14 @@ class JKRLimit2D(RichDisplay):
     lambdas: tuple
     rows: tuple
 
-    equation = "D.11"
+    equation = "D.12"
 
     def latex(self) -> str:
         return (rf"P = {self.force:.8g} \pm {self.force_error:.2g},\quad a_1 = {self.a1:.6g},\ a_2 = {self.a2:.6g}"
-                r" \tag{D.11}")
+                r" \tag{D.12}")
 
     def text_lines(self) -> list[str]:
-        return [f"JKRLimit2D: delta0 = {self.delta0:.8g}, P = {self.force:.8g} +- {self.force_error:.2g}   (D.11)",
+        return [f"JKRLimit2D: delta0 = {self.delta0:.8g}, P = {self.force:.8g} +- {self.force_error:.2g}   (D.12)",
                 f"  a1 = {self.a1:.8g} +- {self.a1_error:.2g}, a2 = {self.a2:.8g} +- {self.a2_error:.2g}; "
                 f"lambda = {', '.join(f'{v:g}' for v in self.lambdas)}"]
 
@@ -100,7 +100,7 @@ def _axis_crossing(contour: tuple, axis: int) -> float:
 def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0, *,
                  w: float, extent: float, n: int = 128, lambdas: tuple = (2.0, 3.0), nu: float | None = None,
                  refine: bool = True) -> JKRLimit2D:
-    """JKR at the depth ``delta0`` as the large-lambda limit of :func:`maugis_dugdale_2d` (D.11).
+    """JKR at the depth ``delta0`` as the large-lambda limit of :func:`maugis_dugdale_2d` (D.12).
 
     Parameters
     ----------
