@@ -52,6 +52,7 @@ STAGES = [
     "moment_expansion", "inner", "contour", "boundary_layer", "wiener_hopf", "force_law", "tip_law", "composite",
     "pyramid_law", "second_order",
     "incompressible", "thick_layer", "thick_tips", "pyramid_thick", "flat_punch", "adhesion", "adhesion_two_term",
+    "adhesion_elliptic",
     "solution",
 ]
 

@@ -755,7 +755,7 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
     (Dugdale's law holds there with any tension up to ``sigma0``: Maugis's pressure inside the contact,
     ``p_Hertz - (2 sigma0/pi) arctan(...)``, is never below ``-sigma0``), in the cohesive zone ``t = -sigma0``, beyond
     it 0.  The zone is found by the fixed point ``Z_{k+1} = {gap_k < h0}``, started from the rigid separation
-    ``Phi - delta0 < h0``, until it repeats.
+    ``Phi - delta0 < h0``, until it repeats (Anderson-accelerated, depth 5).
 
     Parameters
     ----------
@@ -806,14 +806,31 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
     phi = np.broadcast_to(np.asarray(punch.lambdify()(X1, X2), dtype=float), X1.shape)
     dx = 2.0 * half / n
     frac = _coverage(phi - d0, h0v, dx)
-    change = math.inf
+    change, xs, fs = math.inf, [], []
     for it in range(1, max_iterations + 1):
-        res = solve_2d(layer, work_punch, d0 + k, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
-        new = _coverage(np.asarray(res.gap), h0v, dx)
-        change = float(np.abs(new - frac).max())
-        frac = new
+        try:
+            res = solve_2d(layer, work_punch, d0 + k, H, mu, n, half, tol, nu=nu, surface_load=-s0 * frac)
+        except InputError:
+            if len(fs) < 2:
+                raise
+            frac = np.clip(xs[-1] + fs[-1], 0.0, 1.0).reshape(n, n)  # an Anderson step lost the contact: plain step
+            xs, fs = [], []
+            continue
+        f = (_coverage(np.asarray(res.gap), h0v, dx) - frac).ravel()
+        change, last = float(np.abs(f).max()), change
         if change < 1e-9:
             break
+        if change > last:  # the mixing overshot (a zone a cell or two wide flips): restart it from a plain step
+            xs, fs = [], []
+        # Anderson mixing of depth 5 on the covered fraction (measured: 52 instead of > 200 iterations at n = 64,
+        # lambda = 3 on a thin layer; 78 instead of 184 at n = 256; the same fixed point)
+        xs, fs = [*xs[-5:], frac.ravel().copy()], [*fs[-5:], f]
+        step = frac.ravel() + f
+        if len(fs) > 1:
+            dF, dX = np.diff(np.array(fs), axis=0).T, np.diff(np.array(xs), axis=0).T
+            gam = np.linalg.lstsq(dF, f, rcond=None)[0]
+            step = step - (dX + dF) @ gam
+        frac = np.clip(step, 0.0, 1.0).reshape(n, n)
     else:
         raise InputError(f"the cohesive zone did not settle in {max_iterations} iterations (last change of the "
                          f"covered fraction {change:.2e})")

@@ -1,0 +1,166 @@
+r"""The JKR limit of the grid's Maugis-Dugdale states: a 2D direct reference for adhesion of any punch (D.12).
+
+(D.12) *JKR as the large-lambda limit.*  At a fixed depth the Maugis-Dugdale force, contact semi-axes and depth of
+the grid solver (:func:`~thinlayer.numerics.cohesive.maugis_dugdale_2d`, (D.10)) tend to JKR's like ``lambda^-2``
+(the cohesive zone's width is ``O(lambda^-2)``; measured with the axisymmetric solver (D.3)-(D.9) on the sphere,
+bonded nu = 0.3, H/R = 0.1 and 1: ``lambda^2 (P_MD - P_JKR)`` changes by 2 % from lambda = 10 to 20, and the
+contact radius's ``lambda^2 (c_MD - c_JKR)`` by 3 % from lambda = 2 to 5).  Richardson's value of two lambdas
+``l1 < l2``::
+
+    X_JKR = (l2^2 X(l2) - l1^2 X(l1))/(l2^2 - l1^2).
+
+The zone must be resolved by the grid (a cell is far wider than the zone at lambda = 10 on affordable grids), so the
+lambdas stay small (default 2 and 3), and the extrapolation's remainder is not small: its estimate is the
+extrapolation step ``|X_JKR - X(l2)|`` (measured on the sphere with the axisymmetric solver at lambda = 2, 3: the true
+remainder is 0.17-0.31 of it for the force, 0.04 for the radius), plus the grid's: the change from ``n/2`` to ``n``
+cells at each lambda, carried through the Richardson weights.  Checked against the axisymmetric JKR solver (J.1)-(J.5)
+on the sphere (bonded nu = 0.3, n = 128/64; tests/adhesion/test_elliptic_reference.py, SLOW): H/R = 0.1, force off by
+2.3e-4 (estimate 1.1e-3, 2 % of the force), radius 6e-4 (estimate 0.02); H/R = 1, force 4.9e-3 (estimate 1.3e-2,
+11 %), radius 2.5e-3 (estimate 0.021).  The semi-axes' estimate is dominated by the extrapolation step, which
+overstates the radius's remainder about 25 times on the sphere: a third lambda (4 or 5, on a finer grid) would
+tighten it (not done).  Cost: 0.5-3 min of CPU per state at n = 128-320.
+
+The contact semi-axes are read off the sub-cell contour (:class:`~thinlayer.numerics.fft2d.Contact2D`) where it
+crosses the axes ``x2 = 0`` and ``x1 = 0`` (a punch symmetric about both axes, apex at the origin).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from .. import symbols as S
+from .._checks import InputError, check_int, positive
+from ..display import RichDisplay
+from ..layers.kernels import LayerKernel
+from ._layer import numeric_layer_nu
+from .cohesive import maugis_dugdale_2d, maugis_lambda
+
+__all__ = ["JKRLimit2D", "jkr_limit_2d"]
+
+
+@dataclass(frozen=True)
+class JKRLimit2D(RichDisplay):
+    """JKR state at a prescribed depth from the Maugis-Dugdale states of the grid (D.12).
+
+    Attributes
+    ----------
+    delta0, force, a1, a2 : float
+        float
+        Depth, force (negative: pulled) and contact semi-axes along ``x1``, ``x2`` (Richardson in ``lambda^-2``).
+    force_error, a1_error, a2_error : float
+        float
+        Absolute estimates: extrapolation step plus the grid's change (module docstring).
+    lambdas : tuple of float
+        Maugis's lambdas used (of the apex's mean radius of curvature).
+    rows : tuple of dict
+        Per lambda and grid: ``{"lambda", "n", "force", "a1", "a2"}``.
+    """
+
+    delta0: float
+    force: float
+    a1: float
+    a2: float
+    force_error: float
+    a1_error: float
+    a2_error: float
+    lambdas: tuple
+    rows: tuple
+
+    equation = "D.12"
+
+    def latex(self) -> str:
+        return (rf"P = {self.force:.8g} \pm {self.force_error:.2g},\quad a_1 = {self.a1:.6g},\ a_2 = {self.a2:.6g}"
+                r" \tag{D.12}")
+
+    def text_lines(self) -> list[str]:
+        return [f"JKRLimit2D: delta0 = {self.delta0:.8g}, P = {self.force:.8g} +- {self.force_error:.2g}   (D.12)",
+                f"  a1 = {self.a1:.8g} +- {self.a1_error:.2g}, a2 = {self.a2:.8g} +- {self.a2_error:.2g}; "
+                f"lambda = {', '.join(f'{v:g}' for v in self.lambdas)}"]
+
+
+def _axis_crossing(contour: tuple, axis: int) -> float:
+    """The largest coordinate ``|x_axis|`` where a contour polygon crosses the other axis (linear interpolation)."""
+    best = 0.0
+    other = 1 - axis
+    for line in contour:
+        y, x = line[:, other], line[:, axis]
+        s = np.nonzero(np.sign(y[:-1]) != np.sign(y[1:]))[0]
+        for i in s:
+            t = y[i] / (y[i] - y[i + 1]) if y[i] != y[i + 1] else 0.0
+            best = max(best, abs(x[i] + t * (x[i + 1] - x[i])))
+    if best == 0.0:
+        raise InputError("the contact contour does not cross the axes: the punch must have its apex at the origin")
+    return best
+
+
+def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0, *,
+                 w: float, extent: float, n: int = 128, lambdas: tuple = (2.0, 3.0), nu: float | None = None,
+                 refine: bool = True) -> JKRLimit2D:
+    """JKR at the depth ``delta0`` as the large-lambda limit of :func:`maugis_dugdale_2d` (D.12).
+
+    Parameters
+    ----------
+    layer, punch, H, mu, nu
+        As for :func:`~thinlayer.numerics.cohesive.maugis_dugdale_2d` (a punch with its apex at the origin,
+        symmetric about both axes, e.g. ``Punch.elliptic_paraboloid(R1, R2)``).
+    delta0 : float
+        Depth (negative when pulled).
+    w : float
+        Work of adhesion.
+    extent : float
+        Half-width of the square: it must hold the cohesive zone at the smallest lambda.
+    n : int
+        Cells per side of the finest grid (even; the grid estimate also solves on ``n/2``).
+    lambdas : tuple of float
+        Two Maugis lambdas (of the mean apex curvature), increasing.
+    refine : bool
+        Also solve on ``n/2`` cells for the grid's part of the estimate (otherwise it is left out: say so).
+
+    Returns
+    -------
+    JKRLimit2D
+    """
+    wv = positive(w, "w (work of adhesion)")
+    n = check_int(n, "n (cells per side)", 16)
+    try:
+        l1, l2 = (positive(v, "lambda") for v in lambdas)
+    except (TypeError, ValueError):
+        raise InputError(f"lambdas must be two positive numbers, increasing, got {lambdas!r:.60}") from None
+    if not l1 < l2:
+        raise InputError(f"lambdas must increase, got {lambdas!r}")
+    grids = (n, n // 2) if refine else (n,)
+    rows, vals = [], {}
+    vt = positive(mu, "mu") / (1.0 - numeric_layer_nu(layer, nu))
+    lam_h0 = maugis_lambda(_mean_radius(punch), 2.0 * vt, wv, 1.0)  # lambda is proportional to 1/h0 (D.8)
+    for lam in (l1, l2):
+        h0 = lam_h0 / lam
+        for m in grids:
+            st = maugis_dugdale_2d(layer, punch, delta0, H, mu, w=wv, h0=h0, extent=extent, n=m, nu=nu)
+            row = {"lambda": st.maugis_lambda, "n": m, "force": st.force,
+                   "a1": _axis_crossing(st.contact.contour, 0), "a2": _axis_crossing(st.contact.contour, 1)}
+            rows.append(row)
+            vals[(lam, m)] = row
+    wt1, wt2 = l1 * l1 / (l2 * l2 - l1 * l1), l2 * l2 / (l2 * l2 - l1 * l1)
+    out, err = {}, {}
+    for key in ("force", "a1", "a2"):
+        x1, x2 = vals[(l1, n)][key], vals[(l2, n)][key]
+        out[key] = wt2 * x2 - wt1 * x1
+        err[key] = abs(out[key] - x2)
+        if refine:
+            err[key] += wt2 * abs(x2 - vals[(l2, n // 2)][key]) + wt1 * abs(x1 - vals[(l1, n // 2)][key])
+    return JKRLimit2D(float(delta0), out["force"], out["a1"], out["a2"], err["force"], err["a1"], err["a2"],
+                      (l1, l2), tuple(rows))
+
+
+def _mean_radius(punch: Any) -> float:
+    """``1/sqrt(k1 k2)`` of the apex at the origin (D.8)."""
+    e = punch.expr
+    hess = sp.Matrix([[sp.diff(e, a, b) for b in (S.x1, S.x2)] for a in (S.x1, S.x2)]).subs({S.x1: 0, S.x2: 0})
+    det = float(hess.det())
+    if not det > 0:
+        raise InputError("the punch needs a rounded apex (positive-definite Hessian of Phi at the origin)")
+    return 1.0 / math.sqrt(det)

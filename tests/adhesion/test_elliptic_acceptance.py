@@ -1,0 +1,101 @@
+"""Acceptance cells of the elliptic paraboloid (issue 26 item 6): the thin-layer law (J.25)-(J.29) against the 2D
+JKR reference (D.12), every difference inside (law estimate + reference estimate).
+
+Kinds of cell (R1 = 1, mu = 0.35):
+* ``law``: a thin compressible layer (bonded nu = 0.3, frictionless base): the law :func:`elliptic_jkr` against
+  :func:`jkr_limit_2d` at the same depth: force, semi-axes a1, a2.
+* ``half-space``: a thick layer (H = 10 R1): the 2D reference on the layer against the 2D reference on the half-space
+  (the thick end; the half-space elliptic JKR of Johnson & Greenwood (1997) is not transcribed).
+* ``direct``: bonded nu = 0.5, where no law exists (the contour is not a level set, (J.29)): the reference and its
+  estimate only.
+
+Measured (2026-11-26, branch adhesion2d; diff/allowed, force / a1 / a2): law bonded 0.3 R2/R1 = 2 H = 0.04:
+w = 0.005 0.30/0.30/0.15, w = 0.02 0.03/0.67/0.71; frictionless R2/R1 = 2: 0.17/0.26/0.07, 0.10/0.37/0.38;
+R2/R1 = 4 H = 0.05, w = 0.005: bonded 0.30/0.37/0.18, frictionless 0.17/0.47/0.10; half-space at H = 10:
+R2/R1 = 2 0.22/0.27/0.27, R2/R1 = 4 0.61/0.03/0.25; bonded 0.5 direct only (R2/R1 = 2): P = 0.5939 +- 0.0010,
+a1 = 0.272 +- 0.006, a2 = 0.364 +- 0.009; R2/R1 = 4 H = 0.05, w = 0.02: bonded 0.03/0.78/0.90, frictionless
+0.08/0.47/0.54.  Doubt: in the w = 0.02 cells (near the load-controlled pull-off, k ~ g) the law's semi-axes exceed
+the reference's by 10-16 %, covered mostly by the reference's own (extrapolation) estimate, not by the law's.
+
+Each cell costs 0.5-3 min of CPU (grid Maugis-Dugdale at lambda = 2, 3 on n and n/2 cells): THINLAYER_SLOW=1 only.
+Run as a script to print the table:  python tests/adhesion/test_elliptic_acceptance.py
+"""
+import os
+import sys
+
+import pytest
+
+from thinlayer import BondedLayer, FrictionlessLayer, HalfSpace, IncompressibleLayer, Punch
+from thinlayer.asymptotics.adhesion_elliptic import elliptic_jkr
+from thinlayer.numerics.cohesive_jkr import jkr_limit_2d
+
+SLOW = os.environ.get("THINLAYER_SLOW") == "1"
+slow = pytest.mark.skipif(not SLOW, reason="long validation run: THINLAYER_SLOW=1")
+MU = 0.35  # vartheta = 1/2 at nu = 0.3
+LAYERS = {"bonded 0.3": (BondedLayer(0.3), None), "frictionless": (FrictionlessLayer(), 0.3),
+          "bonded 0.5": (IncompressibleLayer(), None)}
+#: (kind, layer, R2/R1, H, w, delta0, extent, n)
+CELLS = [
+    ("law", "bonded 0.3", 2.0, 0.04, 0.005, 0.0108, 0.45, 256),
+    ("law", "bonded 0.3", 2.0, 0.04, 0.02, -0.0076, 0.5, 256),
+    ("law", "frictionless", 2.0, 0.04, 0.005, 0.0087, 0.45, 256),
+    ("law", "frictionless", 2.0, 0.04, 0.02, -0.0113, 0.5, 256),
+    ("law", "bonded 0.3", 4.0, 0.05, 0.005, 0.0246, 0.75, 320),
+    ("half-space", "bonded 0.3", 2.0, 10.0, 0.05, 0.1, 1.3, 128),
+    ("law", "frictionless", 4.0, 0.05, 0.005, 0.0226, 0.75, 320),
+    ("direct", "bonded 0.5", 2.0, 0.04, 0.005, 0.02, 0.5, 256),
+    ("law", "bonded 0.3", 4.0, 0.05, 0.02, 0.0044, 0.8, 320),
+    ("half-space", "bonded 0.3", 4.0, 10.0, 0.05, 0.1, 1.8, 160),
+    ("law", "frictionless", 4.0, 0.05, 0.02, 0.0003, 0.8, 320),
+]
+KEYS = (("force", "force_error"), ("a1", "a1_error"), ("a2", "a2_error"))
+
+
+def cell_rows(kind, name, R2, H, w, delta0, extent, n):
+    layer, nu = LAYERS[name]
+    punch = Punch.elliptic_paraboloid(R1=1, R2=R2)
+    ref = jkr_limit_2d(layer, punch, delta0, H, MU, w=w, extent=extent, n=n, nu=nu)
+    if kind == "law":
+        other = elliptic_jkr(layer, nu=nu).state(delta0, H, 1.0, R2, w, MU)
+        assert other.valid, other.reason
+    elif kind == "half-space":
+        other = jkr_limit_2d(HalfSpace(), punch, delta0, None, MU, w=w, extent=extent, n=n, nu=0.3)
+    else:
+        other = None
+    label = f"{kind:10s} {name:12s} R2/R1={R2:g} H={H:g} w={w:g} delta={delta0:g}"
+    out = []
+    for key, err in KEYS:
+        row = {"cell": label, "what": key, "direct": getattr(ref, key), "direct_err": getattr(ref, err)}
+        if other is not None:
+            row.update(law=getattr(other, key), diff=getattr(other, key) - getattr(ref, key),
+                       allowed=getattr(other, err) + getattr(ref, err))
+        out.append(row)
+    return out
+
+
+@slow
+@pytest.mark.parametrize("cell", CELLS, ids=lambda c: f"{c[0]}-{c[1]}-{c[2]:g}-{c[3]:g}-{c[4]:g}")
+def test_elliptic_cell(cell):
+    for row in cell_rows(*cell):
+        if "diff" in row:
+            assert abs(row["diff"]) <= row["allowed"], row
+        else:  # direct only: the reference's estimate is not vacuous
+            assert row["direct_err"] < 0.2 * abs(row["direct"]), row
+
+
+def main() -> None:
+    print(f"{'cell':62s} {'what':5s} {'law/other':>11s} {'direct':>11s} {'direct est':>10s} {'diff':>10s} "
+          f"{'allowed':>10s} diff/allowed", flush=True)
+    for cell in CELLS:
+        for r in cell_rows(*cell):
+            if "diff" in r:
+                tail = (f"{r['law']:11.6g} {r['direct']:11.6g} {r['direct_err']:10.3g} {r['diff']:10.3g} "
+                        f"{r['allowed']:10.3g} {abs(r['diff']) / r['allowed']:.2f}")
+            else:
+                tail = f"{'-':>11s} {r['direct']:11.6g} {r['direct_err']:10.3g}"
+            print(f"{r['cell']:62s} {r['what']:5s} {tail}", flush=True)
+
+
+if __name__ == "__main__":
+    main()
+    sys.exit(0)
