@@ -7,6 +7,7 @@ own numeric evaluation (``evaluate``), which never goes through the generated ex
 """
 from __future__ import annotations
 
+import functools
 import re
 import shutil
 
@@ -55,12 +56,23 @@ def _results():
     }
 
 
-RESULTS = _results()
+KEYS = ("inner", "coefficients", "force-symbolic", "force-0.3", "force-frictionless", "second-order", "flat-thin",
+        "flat-thick", "incompressible")
+# the results are built on first use (3.6 s of sympy), once per worker, not at collection in every worker; the
+# module's tests run on one worker (xdist group)
+pytestmark = pytest.mark.xdist_group("codegen-documented")
 
 
-@pytest.mark.parametrize("key", list(RESULTS))
+@functools.lru_cache(maxsize=1)
+def results() -> dict:
+    out = _results()
+    assert tuple(out) == KEYS, (tuple(out), KEYS)
+    return out
+
+
+@pytest.mark.parametrize("key", KEYS)
 def test_every_argument_and_output_is_described_in_every_language(key):
-    res = RESULTS[key]
+    res = results()[key]
     for lang in LANGUAGES:
         gc = generate(res, lang)
         text = gc.source
@@ -85,7 +97,7 @@ def test_a_punch_parameter_is_described_as_one():
 
 
 def test_numeric_nu_folds_the_edge_shift_in_as_a_named_constant():
-    law = RESULTS["force-0.3"]
+    law = results()["force-0.3"]
     ref = float(edge_shift(tl.BondedLayer(0.3).edge_shift_key, kernel="exact", dps=30))  # afresh, 30 digits
     for lang in LANGUAGES:
         gc = generate(law, lang)
@@ -98,18 +110,18 @@ def test_numeric_nu_folds_the_edge_shift_in_as_a_named_constant():
     assert re.search(r"^    h_s = 0\.12207064785\d+  # edge shift h\*\(nu=0\.3\), exact Wiener-Hopf solution "
                      r"\(3\.18\), \(3\.25\)$", py, flags=re.M), py
     # a symbolic nu keeps h* an argument (it is a function of nu without closed form), described as such
-    sym = generate(RESULTS["force-symbolic"], "python")
+    sym = generate(results()["force-symbolic"], "python")
     assert "h_s" in sym.arguments and "thinlayer.edge_shift_exact(nu)" in sym.source
 
 
 def test_second_order_and_flat_punch_name_their_layer_constants():
-    so = generate(RESULTS["second-order"], "c").source
+    so = generate(results()["second-order"], "c").source
     assert re.search(r"const double r_3 = 0\.05300837\d+;", so) and "(SO.4)" in so
     assert re.search(r"const double h_s = 0\.12207064\d+;", so)
-    thin = generate(RESULTS["flat-thin"], "fortran").source
+    thin = generate(results()["flat-thin"], "fortran").source
     for name, eq in (("A", "(2.4)"), ("m_1", "(2.20)"), ("h_s", "(3.25)")):
         assert re.search(rf"^{name} = -?[0-9.]+d0$", thin, flags=re.M) and eq in thin, name
-    thick = generate(RESULTS["flat-thick"], "rust").source
+    thick = generate(results()["flat-thick"], "rust").source
     assert all(re.search(rf"let c_{k} = -?[0-9.]+;", thick) for k in range(1, 7)) and "(F.18)" in thick
 
 
@@ -126,7 +138,7 @@ def _law_reference(law, points, h):
 
 
 def test_generated_force_law_with_the_constant_agrees_with_evaluate(tmp_path):
-    law = RESULTS["force-0.3"]
+    law = results()["force-0.3"]
     h = float(edge_shift(tl.BondedLayer(0.3).edge_shift_key, kernel="exact", dps=30))
     pts = _law_points()
     ref = _law_reference(law, pts, h)
@@ -146,8 +158,8 @@ def test_generated_force_law_with_the_constant_agrees_with_evaluate(tmp_path):
 def test_flat_punch_constants_agree_with_the_model(tmp_path):
     x = np.array([0.05, 0.3, 0.79, 2.0, 10.0, 60.0])
     for key in ("flat-thin", "flat-thick"):
-        model = RESULTS[key]
+        model = results()[key]
         gc = generate(model, "python")
         kappa, _ = getattr(load_module(gc, tmp_path / key), gc.function_name)(x)
         np.testing.assert_allclose(kappa, model(x), rtol=1e-13)
-    assert sp.Symbol("A", real=True) in RESULTS["flat-thin"].codegen_constants()
+    assert sp.Symbol("A", real=True) in results()["flat-thin"].codegen_constants()
