@@ -122,4 +122,5 @@ def test_fit_tip_options(tmp_path, capsys):
     assert main(["fit", str(path), "--H", "0.2", "--nu", "0.3"]) == 2
     assert main(["fit", str(path), "--cone", "70", "--H", "0.2", "--nu", "0.3", "--model", "hertz"]) == 2
     err = capsys.readouterr().err
-    assert "models that fit it: tip-law, any-thickness, direct" in err and len(err.strip().splitlines()) == 2  # two commands
+    # two commands, one line each
+    assert "models that fit it: tip-law, any-thickness, direct" in err and len(err.strip().splitlines()) == 2
