@@ -78,6 +78,7 @@ EXPECTED_ERRATA = {
     "elliptic_paraboloid": _COMPRESSIBLE | {"2.31", "3.1"},
     "sphere": _COMPRESSIBLE | {"2.31"},
     "sphere_adhesive": _COMPRESSIBLE | {"2.31"},
+    "sphere_viscoelastic": _COMPRESSIBLE | {"2.31"},
     "frictionless_sphere": _COMPRESSIBLE | {"2.31"},
     "fourth_degree_paraboloid": _COMPRESSIBLE,
     "quartic_punch": _COMPRESSIBLE,

@@ -169,8 +169,9 @@ from . import (  # noqa: E402 - the registry above is what they register into
     tip,
     two_term,
     validation,
+    viscoelastic,
 )
 
 for _section in (intro, kernel, inner, boundary_layer, two_term, incompressible, edge_shift, tip, second_order,
-                 contact, validation, flat_punch, adhesion, errata, references):
+                 contact, validation, flat_punch, adhesion, viscoelastic, errata, references):
     register_section(_section)
