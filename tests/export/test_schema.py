@@ -17,7 +17,8 @@ BASE = {"derivation": "name='x'\n", "layer": "nu='3/10'\n", "punch": "kind='para
 OPTIONAL = {"coefficients": "order=2\n", "inner": "order=2\n", "edge_shift": "nu=[0.3]\n",
             "contact": "delta0=0.1\nH=0.01\nparameters={R=1}\n", "validation": "nu=[0.3]\n", "units": "length='mm'\n",
             "flat_punch": "a_over_H=[1]\n", "second_order": "nu=['3/10']\n", "tip": "H=1.0\n",
-            "adhesion": "work_of_adhesion=0.1\n"}
+            "adhesion": "work_of_adhesion=0.1\n",
+            "viscoelastic": "E0=3.0\nE_inf=1.0\ntau=0.2\nspeed=0.05\nduration=2.0\n"}
 
 
 def _file(tmp_path, tables: dict) -> Path:
