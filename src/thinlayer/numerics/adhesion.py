@@ -128,7 +128,6 @@ class AdhesiveState(RichDisplay):
     layer : LayerKernel
         The layer.
     H, mu, nu, vartheta : float
-        float
         Thickness (``nan`` for the half-space), shear modulus, Poisson ratio, ``mu/(1 - nu)``.
     radius : float
         Contact radius ``c``.

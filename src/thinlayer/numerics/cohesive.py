@@ -118,7 +118,7 @@ from .flat_punch import MAX_A_OVER_H, MAX_NODES, check_numeric_layer, collocatio
 special, optimize = (lazy_module(f"scipy.{m}") for m in ("special", "optimize"))
 
 __all__ = ["Cohesive2D", "CohesiveState", "half_space_equations", "maugis_dugdale", "maugis_dugdale_2d",
-           "maugis_lambda", "pull_off", "tabor_parameter"]
+           "maugis_lambda", "mean_radius", "pull_off", "tabor_parameter"]
 
 #: relative floor of the error estimates (rounding of the collocation and the quadratures)
 ROUNDING_FLOOR = 1e-12
@@ -379,7 +379,6 @@ class CohesiveState(RichDisplay):
     layer : LayerKernel
         The layer.
     H, mu, nu, vartheta : float
-        float
         Thickness (``nan`` for the half-space), shear modulus, Poisson ratio, ``mu/(1 - nu)``.
     R : float
         Apex radius of curvature of the punch (``1/Phi''(0)``).
@@ -797,7 +796,7 @@ def maugis_dugdale_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | 
     max_iterations = check_int(max_iterations, "max_iterations", 1)
     if not (hasattr(punch, "lambdify") and hasattr(punch, "expr")):
         raise InputTypeError(f"punch must be a thinlayer Punch, got {type(punch).__name__}")
-    R = _mean_radius(punch)
+    R = mean_radius(punch)
     # solve_2d takes delta0 > 0: a pulled punch (delta0 <= 0) is the same punch raised by k (Phi + k, delta0 + k)
     k = 0.0 if d0 > 0 else 2.0 * h0v - d0
     work_punch = punch if k == 0.0 else Punch(punch.expr + k)
@@ -865,7 +864,7 @@ def _coverage(g: np.ndarray, h0: float, dx: float) -> np.ndarray:
     return np.clip(f, 0.0, 1.0)
 
 
-def _mean_radius(punch: Any) -> float:
+def mean_radius(punch: Any) -> float:
     """``1/sqrt(k1 k2)`` from the Hessian of Phi at the origin (the apex)."""
     from .. import symbols as S
 

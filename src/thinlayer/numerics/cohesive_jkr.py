@@ -25,19 +25,16 @@ crosses the axes ``x2 = 0`` and ``x1 = 0`` (a punch symmetric about both axes, a
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
-from .. import symbols as S
 from .._checks import InputError, check_int, positive
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
 from ._layer import numeric_layer_nu
-from .cohesive import maugis_dugdale_2d, maugis_lambda
+from .cohesive import maugis_dugdale_2d, maugis_lambda, mean_radius
 
 __all__ = ["JKRLimit2D", "jkr_limit_2d"]
 
@@ -135,7 +132,7 @@ def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None 
     grids = (n, n // 2) if refine else (n,)
     rows, vals = [], {}
     vt = positive(mu, "mu") / (1.0 - numeric_layer_nu(layer, nu))
-    lam_h0 = maugis_lambda(_mean_radius(punch), 2.0 * vt, wv, 1.0)  # lambda is proportional to 1/h0 (D.8)
+    lam_h0 = maugis_lambda(mean_radius(punch), 2.0 * vt, wv, 1.0)  # lambda is proportional to 1/h0 (D.8)
     for lam in (l1, l2):
         h0 = lam_h0 / lam
         for m in grids:
@@ -154,13 +151,3 @@ def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None 
             err[key] += wt2 * abs(x2 - vals[(l2, n // 2)][key]) + wt1 * abs(x1 - vals[(l1, n // 2)][key])
     return JKRLimit2D(float(delta0), out["force"], out["a1"], out["a2"], err["force"], err["a1"], err["a2"],
                       (l1, l2), tuple(rows))
-
-
-def _mean_radius(punch: Any) -> float:
-    """``1/sqrt(k1 k2)`` of the apex at the origin (D.8)."""
-    e = punch.expr
-    hess = sp.Matrix([[sp.diff(e, a, b) for b in (S.x1, S.x2)] for a in (S.x1, S.x2)]).subs({S.x1: 0, S.x2: 0})
-    det = float(hess.det())
-    if not det > 0:
-        raise InputError("the punch needs a rounded apex (positive-definite Hessian of Phi at the origin)")
-    return 1.0 / math.sqrt(det)

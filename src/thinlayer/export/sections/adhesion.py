@@ -18,10 +18,7 @@ import math
 from pathlib import Path
 from typing import Any
 
-import sympy as sp
-
-from ... import symbols as S
-from .base import DerivationFileError, nl, num, short
+from .base import DerivationFileError, nl, num, paraboloid_of_revolution, short
 
 __all__ = ["KEY", "SCHEMA", "ORDER", "parse", "applies", "render", "figure_files", "ADHESION_DEFAULT_H_OVER_R",
            "FIGURE"]
@@ -54,9 +51,7 @@ def parse(tab: Any, context: Any) -> dict | None:
     if "work_of_adhesion" not in tab:
         raise DerivationFileError("[adhesion] work_of_adhesion is required: a number > 0 (the JKR work of adhesion)")
     punch, layer = context.punch, context.layer
-    ok = punch is not None and len(punch.parameters) == 1 and sp.expand(
-        punch.expr - (S.x1**2 + S.x2**2) / (2 * punch.parameters[0])) == 0
-    if not ok:
+    if not paraboloid_of_revolution(punch):
         raise DerivationFileError("[adhesion] is derived for the paraboloid of revolution r^2/(2R): give [punch] "
                                   "kind = \"paraboloid\"")
     if not layer.on_rigid_base or not layer.has_thickness or (layer.numeric_nu is None

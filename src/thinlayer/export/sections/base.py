@@ -89,6 +89,18 @@ def compressible_bonded(layer: Any) -> bool:
     return layer.has_two_term_model and layer.has_compressible_expansion
 
 
+def paraboloid_of_revolution(punch: Any) -> bool:
+    """The punch is ``r^2/(2R)`` with its one parameter ``R`` (the tables derived for the sphere: [adhesion],
+    [viscoelastic]).
+    """
+    import sympy as sp
+
+    from ... import symbols as S
+
+    return punch is not None and len(punch.parameters) == 1 and sp.expand(
+        punch.expr - (S.x1**2 + S.x2**2) / (2 * punch.parameters[0])) == 0
+
+
 def polynomial_only(key: str, table: Any, context: ParseContext) -> None:
     """Refuse the table ``[key]`` beside a flat punch: it is for a polynomial punch."""
     if table is not None and context.punch is None:

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .base import DerivationFileError, compressible_bonded, nl, num, short
+from .base import DerivationFileError, compressible_bonded, nl, num, paraboloid_of_revolution, short
 
 __all__ = ["KEY", "SCHEMA", "ORDER", "parse", "applies", "render"]
 
@@ -34,12 +34,9 @@ def parse(tab: Any, context: Any) -> dict | None:
     """
     if tab is None:
         return None
-    from ... import symbols as S
 
     punch, layer = context.punch, context.layer
-    ok = punch is not None and len(punch.parameters) == 1 and sp.expand(
-        punch.expr - (S.x1**2 + S.x2**2) / (2 * punch.parameters[0])) == 0
-    if not ok:
+    if not paraboloid_of_revolution(punch):
         raise DerivationFileError("[viscoelastic] is derived for the paraboloid of revolution r^2/(2R): give [punch] "
                                   "kind = \"paraboloid\"")
     if not compressible_bonded(layer) or layer.numeric_nu is None:
