@@ -244,6 +244,8 @@ def _state(path: Path) -> str:
 #: outcomes of the attacks run in this process: tests/export/test_symlink_safety.py and the acceptance table
 #: (tests/acceptance/cases_files.py) try the same inputs; they share one xdist group, and each input runs once
 _OUTCOMES: dict[tuple, Outcome] = {}
+#: one killed run per (stage, signal), see :func:`killed_run`
+_KILLED: dict = {}
 
 
 def attack(writer: Writer, rels: list[str], kind: str, overwrite: bool, work: Path) -> Outcome:
@@ -356,7 +358,19 @@ class Killed:
 def killed_run(work: Path, stage: str, sig: int) -> Killed:
     """Write a report (tex, PDF, log), then kill a second run of it with ``sig`` while it is at ``stage``
     (``"compile"``: pdflatex running; ``"tex"``: the .tex's temporary file written, not yet renamed); then
-    run it once more."""
+    run it once more.
+
+    As for :func:`attack`, the outcome of one ``(stage, sig)`` is kept for the process: the acceptance table
+    (tests/acceptance/cases_files.py) and tests/export/test_symlink_safety.py share one run of each (they are one
+    xdist group, ``file-attacks``).
+    """
+    key = (stage, int(sig))
+    if key not in _KILLED:
+        _KILLED[key] = _killed_run(work, stage, sig)
+    return _KILLED[key]
+
+
+def _killed_run(work: Path, stage: str, sig: int) -> Killed:
     out = work / "out"
     path = fake_tex(work / "bin")
     src = str(Path(__file__).resolve().parents[1] / "src")

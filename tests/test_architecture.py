@@ -19,6 +19,9 @@ from pathlib import Path
 
 import pytest
 
+#: the checks share one parse of every module (lru_cache below): one worker runs them all
+pytestmark = pytest.mark.xdist_group("architecture")
+
 SRC = Path(__file__).resolve().parents[1] / "src" / "thinlayer"
 
 #: group -> rank.  A module imports only from its own group or from a lower rank.
@@ -81,26 +84,20 @@ def _is_package(mod: str) -> bool:
     return MODULES[mod].name == "__init__.py"
 
 
-def _type_checking_lines(tree: ast.AST) -> set[int]:
-    lines: set[int] = set()
+@lru_cache(maxsize=None)
+def _imports(mod: str) -> list[tuple[str, str | None, int]]:
+    """``(imported module, imported name or None, line)`` for every executed import of ``mod``.
+
+    One walk of the tree collects the imports and the ``if TYPE_CHECKING:`` blocks; imports inside such a block are
+    left out (they never execute)."""
+    tree = _tree(MODULES[mod])
+    package = mod if _is_package(mod) else mod.rsplit(".", 1)[0]
+    out, skip = [], set()
     for node in ast.walk(tree):
         if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
             for sub in node.body:
-                lines.update(range(sub.lineno, sub.end_lineno + 1))
-    return lines
-
-
-@lru_cache(maxsize=None)
-def _imports(mod: str) -> list[tuple[str, str | None, int]]:
-    """``(imported module, imported name or None, line)`` for every executed import of ``mod``."""
-    tree = _tree(MODULES[mod])
-    skip = _type_checking_lines(tree)
-    package = mod if _is_package(mod) else mod.rsplit(".", 1)[0]
-    out = []
-    for node in ast.walk(tree):
-        if getattr(node, "lineno", None) in skip:
-            continue
-        if isinstance(node, ast.Import):
+                skip.update(range(sub.lineno, sub.end_lineno + 1))
+        elif isinstance(node, ast.Import):
             out += [(a.name, None, node.lineno) for a in node.names]
         elif isinstance(node, ast.ImportFrom):
             if node.level:
@@ -115,7 +112,7 @@ def _imports(mod: str) -> list[tuple[str, str | None, int]]:
                     out.append((sub, None, node.lineno))
                 else:
                     out.append((target, a.name, node.lineno))
-    return out
+    return [edge for edge in out if edge[2] not in skip]
 
 
 def _group(mod: str) -> str:

@@ -31,6 +31,9 @@ from thinlayer.asymptotics import second_order as SO
 from thinlayer.asymptotics import solution as SOL
 from thinlayer.errors import ThinlayerError
 
+#: one worker builds F() once for the 240 door tests (it costs ~8 s), not once per worker
+pytestmark = pytest.mark.xdist_group("doors")
+
 #: strings that run code if anything evaluates them; {m} is the marker file
 PAYLOADS = ("__import__('os').system('touch {m}') or 1",
             "x_1**2 + x_2**2 + 0*__import__('os').system('touch {m}')")

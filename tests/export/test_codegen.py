@@ -28,6 +28,7 @@ import shutil
 import subprocess
 import sys
 import textwrap
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -152,8 +153,29 @@ def _composite_case() -> Case:
     return Case("composite_pressure", comp, tuple(args), (outs["p"],), pts, {})
 
 
-CASES = {c.key: c for c in (_inner_case(), _coefficient_case(), _special_case(), _force_law_case(),
-                            _composite_case())}
+class _LazyCases(Mapping):
+    """The cases by key, each built on first use (not at collection, where every xdist worker would build all)."""
+
+    def __init__(self, builders):
+        self._builders, self._built = builders, {}
+
+    def __getitem__(self, key):
+        if key not in self._built:
+            case = self._builders[key]()
+            assert case.key == key, (case.key, key)
+            self._built[key] = case
+        return self._built[key]
+
+    def __iter__(self):
+        return iter(self._builders)
+
+    def __len__(self):
+        return len(self._builders)
+
+
+CASES = _LazyCases({"inner_pressure": _inner_case, "kernel_coefficients": _coefficient_case,
+                    "boundary_layer_q": _special_case, "force_law": _force_law_case,
+                    "composite_pressure": _composite_case})
 
 
 def assert_close(got, ref, what):
