@@ -24,7 +24,7 @@ NOTEBOOKS = sorted(NB_DIR.glob("*.ipynb"))
 #: the small run: (line start at full size, its small-size replacement) per notebook
 SMALL = {
     "00_solve": [("nus = [0.3, 0.45, 0.49, 0.499, 0.5]", "nus = [0.3, 0.49, 0.5]"),
-                 ("ratios = [0.005, 0.02, 0.05, 0.2, 0.5]", "ratios = [0.005, 0.05, 0.5]")],
+                 ("ratios = [0.005, 0.02, 0.05, 0.2, 0.5]", "ratios = [0.005, 0.05]")],
     "01_layer_kernel": [("u = np.linspace(1e-6, 4, 800)", "u = np.linspace(1e-6, 4, 200)"),
                         ("ORDER = 60", "ORDER = 24"), ("TOL = 0.005", "TOL = 0.05"),
                         ("nu_scan = np.linspace(-0.95, 0.48, 40)", "nu_scan = np.linspace(-0.95, 0.48, 12)")],

@@ -93,6 +93,29 @@ class Progress:
             self._print(f"validate: interrupted after {done} of {self.total} cases; the rows done are kept")
 
 
+#: the cases computed in this process, by (shape, nu, H/a, cells per H): each is a pure function of these, its row,
+#: profiles and contours immutable (frozen, read-only arrays), so a report and ``thinlayer validate`` in one session
+#: (or a notebook re-running a study) compute a case once.  At most :data:`CASE_MEMO` cases are kept.
+_CASES: dict[tuple, tuple] = {}
+CASE_MEMO = 256
+
+
+def _case(shape: str, nu: float, eps: float, cells_per_H: float, workers: int | None) -> tuple:
+    """``(row, profiles, contours)`` of one case, computed once per process (``workers`` changes the speed of the
+    2D solver only, not its numbers)."""
+    key = (shape, float(nu), float(eps), float(cells_per_H) if shape == "elliptic" else None)
+    if key not in _CASES:
+        if shape == "sphere":
+            row, pr, co = sphere_case(nu, eps)
+        else:
+            row, pr, co = elliptic_case(nu, eps, cells_per_H, workers)
+        if len(_CASES) >= CASE_MEMO:
+            _CASES.pop(next(iter(_CASES)))
+        _CASES[key] = (row, tuple(pr), tuple(co))
+    row, pr, co = _CASES[key]
+    return row, list(pr), list(co)
+
+
 def _run(cases: list[tuple[str, float, float]], *, cells_per_H: float, max_n: int, workers: int | None,
          progress: bool, callback: Callable[[StudyEvent], Any] | None, settings: dict) -> ValidationStudy:
     rows, profiles, contours, skipped = [], [], [], []
@@ -114,10 +137,7 @@ def _run(cases: list[tuple[str, float, float]], *, cells_per_H: float, max_n: in
                 callback(StudyEvent("start", k, len(todo), shape, nu, eps, time.perf_counter() - t0))
             prog.start(k, label, shape == "elliptic")
             tc = time.perf_counter()
-            if shape == "sphere":
-                row, pr, co = sphere_case(nu, eps)
-            else:
-                row, pr, co = elliptic_case(nu, eps, cells_per_H, workers)
+            row, pr, co = _case(shape, nu, eps, cells_per_H, workers)
             rows.append(row)
             profiles += pr
             contours += co
@@ -202,6 +222,9 @@ def validation_study(nus: Iterable[float] | None = None, ratios: Iterable[float]
                      progress: bool = True, callback: Callable[[StudyEvent], Any] | None = None
                      ) -> ValidationStudy:
     """The validation study of issue 4: every shape, Poisson ratio and thickness ratio asked for.
+
+    A case (shape, nu, H/a) already computed in this process is taken from memory, not computed again: a report's
+    validation section and ``thinlayer validate`` in one session share their cases.
 
     Parameters
     ----------
