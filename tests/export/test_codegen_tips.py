@@ -33,29 +33,39 @@ def _points(key):
     return law, args, np.column_stack([cols[a.name] for a in args])
 
 
-def _reference(law, args, pts):
-    """The Python law (P0 + P1 lambdified) and the radius a - h* H from the tip's numeric level set."""
+#: the rigid overlap radius a(delta0) by elementary geometry, where the tip has one: the cone a = delta0 tan(alpha)
+#: (alpha the half-angle in degrees), the sphere a = sqrt(2 R delta0 - delta0^2) (a chord of the circle)
+OVERLAP = {"cone": lambda v: v["delta_0"] * math.tan(math.radians(v["alpha"])),
+           "sphere": lambda v: math.sqrt(2.0 * v["R"] * v["delta_0"] - v["delta_0"] ** 2)}
+
+
+def _reference(key, law, args, pts):
+    """The Python law (P0 + P1 lambdified) and the radius a - h* H, with a by geometry (:data:`OVERLAP`) or from the
+    tip's numeric level set (the power law)."""
     force = law.lambdify(args[:len(args)])
     h = float(next(iter(law.codegen_constants().values()))[0])
     rows = []
     for pt in pts:
         vals = dict(zip((a.name for a in args), pt))
-        tip = law.tip.subs({k: v for k, v in vals.items() if k in {q.name for q in law.tip.parameters}})
-        a = tip.level_set(vals["delta_0"]).radius
+        if key in OVERLAP:
+            a = OVERLAP[key](vals)
+        else:
+            tip = law.tip.subs({k: v for k, v in vals.items() if k in {q.name for q in law.tip.parameters}})
+            a = tip.level_set(vals["delta_0"]).radius
         rows.append([float(force(*pt)[0]), a - h * vals["H"]])
     return np.array(rows)
 
 
 @pytest.fixture(scope="module")
 def references():
-    """Per law: its points and the reference values, computed once for the four languages (the exact sphere's
-    level sets by sympy take seconds); the module's tests share it, so they run in one xdist worker."""
+    """Per law: its points and the reference values, computed once for the four languages; the module's tests share
+    it, so they run in one xdist worker."""
     cache = {}
 
     def get(key):
         if key not in cache:
             law, args, pts = _points(key)
-            cache[key] = (law, args, pts, _reference(law, args, pts))
+            cache[key] = (law, args, pts, _reference(key, law, args, pts))
         return cache[key]
     return get
 
