@@ -28,6 +28,7 @@ from __future__ import annotations
 import logging
 import math
 import sys
+import time
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
@@ -49,9 +50,20 @@ def chunked(items: Sequence[Any], size: int) -> list[list[Any]]:
     return [list(items[i:i + size]) for i in range(0, len(items), size)]
 
 
-def _run_chunk(func: Callable[[Any], Any], chunk: list[Any]) -> list[Any]:
-    """One dask task: ``func`` over a chunk of items, in order."""
-    return [func(item) for item in chunk]
+def _run_chunk(func: Callable[[Any], Any], chunk: Iterable[Any]) -> tuple[list[Any], float]:
+    """One dask task: ``func`` over a chunk of items (a list, or what ``pack`` made of one), in order, and the CPU
+    seconds it took (:func:`map_batch`'s ``timings``).
+    """
+    t0 = time.process_time()
+    out = [func(item) for item in chunk]
+    return out, time.process_time() - t0
+
+
+def _warm(func: Callable[[Any], Any], item: Any) -> None:
+    """A worker's first call, its result dropped: the imports and caches ``func`` needs, paid while the items are
+    still being sent.
+    """
+    func(item)
 
 
 class Progress:
@@ -102,7 +114,7 @@ def _client(scheduler: Any, workers: int | None):
         import dask
 
         n = workers or (2 if scheduler == "threads" else _cores())
-        with dask.config.set({"distributed.worker.multiprocessing-method": start_method()}):
+        with dask.config.set(_cluster_config()):
             cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": any port
                                    dashboard_address=":0", silence_logs=logging.CRITICAL)
         return Client(cluster, timeout=CONNECT_TIMEOUT), True
@@ -112,6 +124,19 @@ def _client(scheduler: Any, workers: int | None):
         raise InputError(f"scheduler {scheduler!r}: no dask scheduler answered within {CONNECT_TIMEOUT:g} s "
                          f"({str(exc).splitlines()[0][:120]}); give a running scheduler's address, 'local' or None")\
             from None
+
+
+def _cluster_config() -> dict[str, Any]:
+    """Dask's settings for a cluster started here (:func:`map_batch`): the start method (:func:`start_method`), no
+    statistical profiler (it samples every thread's stack each 10 ms: CPU taken from the tasks, for a dashboard
+    nobody sees on a cluster that lives one call), and glibc's own ``malloc`` trimming instead of the nanny's
+    ``MALLOC_TRIM_THRESHOLD_=65536`` (which returns every freed heap top above 64 KiB to the system: about 120 page
+    faults and 0.5 ms of system CPU per map curve, benchmarks/bench_maps.py).  The BLAS/OpenMP threads stay at the
+    nanny's 1 per worker (one worker per core).
+    """
+    return {"distributed.worker.multiprocessing-method": start_method(),
+            "distributed.worker.profile.enabled": False,
+            "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}
 
 
 def auto_scheduler(n_items: int) -> str | None:
@@ -166,7 +191,8 @@ def check_scheduler(scheduler: Any) -> Any:
 
 def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: Any = None, chunk: int | None = None,
               workers: int | None = None, progress: bool = False, label: str = "items",
-              timeout: float | None = None) -> list[Any]:
+              timeout: float | None = None, pack: Callable[[list[Any]], Iterable[Any]] | None = None,
+              warm: bool = False, timings: dict[str, float] | None = None) -> list[Any]:
     """``[func(item) for item in items]``, serially or on dask.distributed, in the items' order.
 
     Parameters
@@ -192,6 +218,20 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
     timeout : float, optional
         Seconds to wait for the dask results; past it a :class:`TimeoutError` is raised (and a cluster started here
         closed) instead of waiting for ever.
+    pack : callable, optional
+        On dask: each chunk (a list of items) is sent as ``pack(chunk)``, an object that iterates over the same items
+        in order and pickles in fewer, larger buffers (a force map's curves as one array per chunk: 0.8 s instead of
+        5.2 s to send 4,096 curves of 2,000 points, benchmarks/bench_maps.py).  ``func`` sees what the iteration
+        gives, on every path (the serial path iterates over the items themselves).
+    warm : bool
+        On dask: each worker computes ``func(first item)`` once, its result dropped, while the chunks are being sent
+        (imports and caches paid then, not by the worker's first chunk).  ``func`` must have no side effect.
+    timings : dict, optional
+        Filled, on dask, with where the time went (benchmarks/bench_maps.py): wall seconds ``"start"`` (the cluster
+        and its client), ``"send"`` (the chunks scattered), ``"compute"`` (until the last result), ``"close"``;
+        ``"task_cpu"``, the CPU seconds of the tasks summed over the workers, and ``"worker_cpu"``, the workers'
+        process CPU from the send to the last result (the warm-up, receiving the data and dask's own work included);
+        ``"workers"``, ``"chunks"``.
 
     Returns
     -------
@@ -215,21 +255,40 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
                 out.append(func(item))
                 bar.update()
             return out
+        tick = {"start": time.perf_counter()}
         client, owned = _client(scheduler, workers)
         try:
             from distributed import as_completed
 
+            tick["send"] = time.perf_counter()
+            names = list(client.scheduler_info(n_workers=-1).get("workers", {}))
             if chunk is None:
-                n = max(1, len(client.scheduler_info(n_workers=-1).get("workers", {})))
-                chunk = max(1, math.ceil(len(items) / (4 * n)))
+                chunk = max(1, math.ceil(len(items) / (4 * max(1, len(names)))))
             parts = chunked(items, int(chunk))
-            data = client.scatter(parts)  # the items sent to the workers once, not embedded in the task graph
+            cpu0 = client.run(time.process_time) if timings is not None else {}
+            warming = []
+            if warm:  # runs on the workers while the chunks are sent (a worker thread: its event loop stays free)
+                warming = [client.submit(_warm, func, items[0], workers=[w], allow_other_workers=False, pure=False)
+                           for w in names]
+            # the items sent to the workers once, not embedded in the task graph
+            data = client.scatter([pack(p) for p in parts] if pack is not None else parts)
+            tick["compute"] = time.perf_counter()
             futures = client.map(_run_chunk, [func] * len(parts), data, pure=False)
             order = {f.key: i for i, f in enumerate(futures)}
             results: list[Any] = [None] * len(parts)
+            task_cpu = 0.0
             for fut in as_completed(futures, timeout=timeout):
-                results[order[fut.key]] = fut.result()
+                out, cpu = fut.result()
+                results[order[fut.key]] = out
+                task_cpu += cpu
                 bar.update(len(parts[order[fut.key]]))
+            tick["close"] = time.perf_counter()
+            for w in warming:  # done long ago; an error there is the chunks' error too, already raised
+                w.release()
+            if timings is not None:
+                cpu1 = client.run(time.process_time)
+                timings.update(task_cpu=task_cpu, workers=len(names), chunks=len(parts),
+                               worker_cpu=sum(cpu1[w] - cpu0[w] for w in cpu0 if w in cpu1))
             return [r for part in results for r in part]
         finally:
             if owned:
@@ -237,6 +296,10 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
                 client.close()
                 if cluster is not None:
                     cluster.close()
+            if timings is not None and "close" in tick:
+                end = time.perf_counter()
+                marks = [tick["start"], tick["send"], tick["compute"], tick["close"], end]
+                timings.update({k: b - a for k, a, b in zip(("start", "send", "compute", "close"), marks, marks[1:])})
     finally:
         bar.close()
 
