@@ -431,7 +431,8 @@ def _checked(res: CurveFit) -> CurveFit:
 def _orientation(x: np.ndarray, f: np.ndarray, curve: Curve) -> None:
     if x.size < 6:
         raise InputError(f"{x.size} points in the fit range: too few for E, the contact point and the baseline")
-    if np.ptp(x) > 0 and np.ptp(f) > 0 and float(np.corrcoef(x, f)[0, 1]) < 0:
+    # the sign of the correlation of position and force: the sign of their covariance (no need to normalise it)
+    if np.ptp(x) > 0 and np.ptp(f) > 0 and float(np.dot(x - x.mean(), f - f.mean())) < 0:
         how = ("the file's tip position is negative into the sample" if curve.segment else
                "axis='depth' is positive into the sample, axis='tip position' (CLI --depth-sign -1) negative")
         raise InputError(f"fit_curve(): the force falls as the tip moves into the sample ({how}): is this the "
@@ -507,8 +508,9 @@ def _initial(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
 
 def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solved=False):
     """Least squares from ``start`` (nanite's weights, when asked, move with the contact point).  Returns
-    ``(params (xc, E, b0, bx, H), jacobian, scaled residuals, names)``; ``solved``: ``start`` is the solution already
-    (:func:`_varpro`), only the Jacobian and the residuals are computed there.
+    ``(params (xc, E, b0, bx, H), jacobian, scaled residuals, names, column scales, weights, the law's force at the
+    solution)``; ``solved``: ``start`` is the solution already (:func:`_varpro`), only the Jacobian and the residuals
+    are computed there (from one evaluation of the law).
     """
     from scipy import optimize
 
@@ -531,15 +533,15 @@ def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solv
         H_ = math.exp(p[i]) if fit_H else H0
         return xc_, E_, b0_, bx_, H_
 
-    def resid(p):
+    def resid(p, shape=None):
         xc_, E_, b0_, bx_, H_ = unpack(p)
-        P, _, _ = law.shape(x - xc_, H_, slopes=False)
+        P, _, _ = law.shape(x - xc_, H_, slopes=False) if shape is None else shape
         return (b0_ + bx_ * (x - xc_) + E_ * P - f) * _weights(x, xc_, weighting, wcp) / fscale
 
-    def jac(p):
+    def jac(p, shape=None):
         xc_, E_, b0_, bx_, H_ = unpack(p)
         d = x - xc_
-        P, gd, gH = law.shape(d, H_, slopes=True)
+        P, gd, gH = law.shape(d, H_, slopes=True) if shape is None else shape
         EP = E_ * P
         w = _weights(x, xc_, weighting, wcp)
         cols = [EP * w]
@@ -560,17 +562,19 @@ def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solv
         + ([math.log(HH)] if fit_H else [])
     if solved:
         px = np.array(p0, dtype=float)
-        fun = resid(px)
     else:
         sol = optimize.least_squares(resid, p0, jac=jac, method="lm", xtol=1e-12, ftol=1e-12, gtol=1e-12,
                                      max_nfev=400)
         px, fun = sol.x, sol.fun
     xc, E, b0, bx, HH = unpack(px)
+    shape = law.shape(x - xc, HH, slopes=True)  # once at the solution: its force is the same with or without slopes
+    if solved:
+        fun = resid(px, shape)
     w = _weights(x, xc, weighting, wcp)
-    J = jac(px)
+    J = jac(px, shape)
     T = np.array([E] + ([xscale] if free_xc else []) + [fscale] + ([fscale / xscale] if slope else [])
                  + ([HH] if fit_H else []))
-    return (xc, E, b0, bx, HH), J, fun, names, T, w
+    return (xc, E, b0, bx, HH), J, fun, names, T, w, shape[0]
 
 
 class _ForceOnly:
@@ -727,7 +731,7 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
 
 def _result(curve, x, f, sol, H0, xc_fixed, rng_, range_kind, baseline, n_boot, seed, boot_kind, *, law, slope,
             fit_H, weighting, wcp) -> CurveFit:
-    (xc, E, b0, bx, HH), J, r, names, T, w = sol
+    (xc, E, b0, bx, HH), J, r, names, T, w, P = sol
     s = curve.direction
     p = len(names)
     if x.size < p + 1:
@@ -747,8 +751,7 @@ def _result(curve, x, f, sol, H0, xc_fixed, rng_, range_kind, baseline, n_boot, 
     # physical signs: z0 = s xc, b1 = s bx (the covariance of a sign flip changes the off-diagonal signs only)
     flip = np.array([s if nm in ("z0", "b1") else 1 for nm in names], dtype=float)
     cov = cov * np.outer(flip, flip)
-    P, _, _ = law.shape(x - xc, HH, slopes=False)
-    model_f = b0 + bx * (x - xc) + E * P
+    model_f = b0 + bx * (x - xc) + E * P  # P: the law's force at the solution (:func:`_solve`)
     resid = model_f - f
     b, phi = block_length(resid)
     boot = dict.fromkeys(_PHYS, math.nan)
