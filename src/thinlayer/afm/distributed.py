@@ -43,6 +43,9 @@ SCHEDULERS = (None, "serial", "threads", "local", "auto")
 AUTO_BATCH = 256
 #: seconds to wait for a cluster to start or a scheduler to answer before giving up (one line, never a hang)
 CONNECT_TIMEOUT = 60.0
+#: what the server of a ``forkserver`` local cluster imports before it forks the workers (:func:`start_method`)
+FORKSERVER_PRELOAD = ("distributed", "numpy", "scipy.optimize", "thinlayer.afm.maps", "thinlayer.afm.curve_fit",
+                      "thinlayer.contact.models.any_thickness")
 
 
 def chunked(items: Sequence[Any], size: int) -> list[list[Any]]:
@@ -114,7 +117,10 @@ def _client(scheduler: Any, workers: int | None):
         import dask
 
         n = workers or (2 if scheduler == "threads" else _cores())
-        with dask.config.set(_cluster_config()):
+        config = _cluster_config()
+        if scheduler == "local":
+            _preload_forkserver(config)
+        with dask.config.set(config):
             cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": any port
                                    dashboard_address=":0", silence_logs=logging.CRITICAL)
         return Client(cluster, timeout=CONNECT_TIMEOUT), True
@@ -149,20 +155,44 @@ def auto_scheduler(n_items: int) -> str | None:
 
 
 def start_method() -> str:
-    """How a local cluster started here starts its worker processes: dask's configured method (``"spawn"`` by
-    default), or ``THINLAYER_DASK_START`` (``fork``, ``spawn``, ``forkserver``).  ``fork`` starts 2 workers in 0.3 s
-    where ``spawn`` took 3.3 s (each spawned worker imports dask, numpy, scipy and thinlayer again; load 14), but a
-    second forked cluster in the same process was seen to hang in ``Client.scatter`` (benchmarks/bench_maps.py, the
-    second map): opt-in until that is understood.
+    """How a local cluster started here starts its worker processes: ``THINLAYER_DASK_START`` (``fork``, ``spawn``,
+    ``forkserver``) when set; else dask's configured method when it is not dask's default ``"spawn"``; else
+    ``"forkserver"`` where the platform has it (Linux, macOS), else ``"spawn"``.
+
+    ``forkserver``: one clean server process (no thread, no event loop: none of ``fork``'s hazards; a second forked
+    cluster in the same process was seen to hang in ``Client.scatter``) imports :data:`FORKSERVER_PRELOAD` once and
+    forks each worker from itself: the workers start with dask, numpy, scipy and thinlayer imported, and exit
+    without tearing an interpreter down.  Against ``spawn`` (each worker imports everything again): the same first
+    start, a second cluster in the same process 1.0 s instead of 6.0 s, closing 0.3 s instead of 3.0 s (load 10,
+    benchmarks/bench_maps.py).
     """
     import os
 
     asked = os.environ.get("THINLAYER_DASK_START", "")
     if asked in ("fork", "spawn", "forkserver"):
         return asked
+    import multiprocessing
+
     import dask
 
-    return str(dask.config.get("distributed.worker.multiprocessing-method", "spawn"))
+    configured = str(dask.config.get("distributed.worker.multiprocessing-method", "spawn"))
+    if configured != "spawn":
+        return configured
+    return "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() else "spawn"
+
+
+def _preload_forkserver(config: dict[str, Any]) -> None:
+    """With ``forkserver`` (:func:`start_method`): the server, when this call starts it, imports
+    :data:`FORKSERVER_PRELOAD` (dask's own list, set on its first use, is replaced: it has pandas, not thinlayer).
+    """
+    if config.get("distributed.worker.multiprocessing-method") != "forkserver":
+        return
+    import dask
+    from distributed.utils import get_mp_context
+
+    with dask.config.set(config):
+        context = get_mp_context()
+    context.set_forkserver_preload(list(FORKSERVER_PRELOAD))
 
 
 def _cores() -> int:
