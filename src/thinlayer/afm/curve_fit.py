@@ -439,6 +439,20 @@ def _orientation(x: np.ndarray, f: np.ndarray, curve: Curve) -> None:
                          f"right segment or axis?")
 
 
+def _median(a: np.ndarray) -> float:
+    """``float(np.median(a))`` of a 1D float array, bit for bit (the same partition, the same mean of the two middle
+    values, NaN when ``a`` has one), without np.median's generic machinery (a fit takes five).
+    """
+    n = a.size
+    if n == 0:
+        return float(np.median(a))
+    k = n // 2
+    p = np.partition(a, [k - 1, k, -1] if n % 2 == 0 else [k, -1])
+    if np.isnan(p[-1]):
+        return math.nan
+    return float((p[k - 1] + p[k]) / 2.0) if n % 2 == 0 else float(p[k])
+
+
 def _weights(x: np.ndarray, xc: float, weighting: str | None, wcp: float) -> np.ndarray:
     if weighting is None:
         return np.ones_like(x)
@@ -458,10 +472,10 @@ def _trials(x, f, slope, xc_fixed):
 
             sl, ic = stats.theilslopes(fs[sub], xs[sub])[:2]
         else:
-            sl, ic = 0.0, float(np.median(fs[:n0]))
+            sl, ic = 0.0, _median(fs[:n0])
         r = fs - (ic + sl * xs)
-        dev = r[:n0] - np.median(r[:n0])
-        sigma = 1.4826 * float(np.median(np.abs(dev))) or float(np.std(r[:n0])) or 1e-12 * float(np.max(np.abs(fs)))
+        dev = r[:n0] - _median(r[:n0])
+        sigma = 1.4826 * _median(np.abs(dev)) or float(np.std(r[:n0])) or 1e-12 * float(np.max(np.abs(fs)))
         below = np.nonzero(r <= 3 * sigma)[0]
         i_dep = int(below[-1]) if below.size else 0
         if i_dep >= n0 or n0 <= 5:
@@ -518,7 +532,7 @@ def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solv
     free_xc = xc_fixed is None
     names = ["E"] + (["z0"] if free_xc else []) + ["b0"] + (["b1"] if slope else []) + (["H"] if fit_H else [])
     xscale = float(np.ptp(x)) or 1.0
-    fscale = float(np.max(np.abs(f - np.median(f)))) or float(np.max(np.abs(f))) or 1.0
+    fscale = float(np.max(np.abs(f - _median(f)))) or float(np.max(np.abs(f))) or 1.0
     xref = xc
 
     def unpack(p):
@@ -604,12 +618,26 @@ class _ForceOnly:
     def __reduce__(self):
         return _ForceOnly, (self._law,)
 
-    def shape(self, delta: np.ndarray, H: float, slopes: bool = True):
+    def _curve(self, H: float) -> Any:
         curve = self._curves.get(H)
         if curve is None:
             if len(self._curves) > 64:
                 self._curves.clear()
             curve = self._curves[H] = self._law.shape.curve(H)
+        return curve
+
+    def in_contact(self, delta: np.ndarray, H: float):
+        """``shape(delta, H)`` at depths that are all ``> 0`` (the points past a contact point): the same numbers bit
+        for bit, without the masks (:func:`_varpro` takes it 3-4 times per curve).
+        """
+        both = getattr(self._curve(H), "force_slopes", None)
+        if both is None:
+            return self._law.shape(delta, H, True)
+        p, a, b = both(np.asarray(delta, dtype=float), True)
+        return p * self._scale, a, b
+
+    def shape(self, delta: np.ndarray, H: float, slopes: bool = True):
+        curve = self._curve(H)
         both = getattr(curve, "force_slopes", None)
         if both is None:
             return self._law.shape(delta, H, slopes)
@@ -642,7 +670,7 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
     xs, fs, grid = _trials(x, f, slope, xc_fixed)
     n = xs.size
     span = float(xs[-1] - xs[0]) or 1.0
-    fmid = float(np.median(fs))
+    fmid = _median(fs)
     fsc = float(np.max(np.abs(fs - fmid))) or 1.0
     g = (fs - fmid) / fsc  # the force centred and scaled: sums of squares without cancellation
     u = (xs - xs[0]) / span
@@ -676,12 +704,14 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
         xc = float(xc_fixed)
 
     # --- variable projection on every point -----------------------------------------------------------------------
+    contact = isinstance(law, _ForceOnly)
+
     def linear(xc_):
         i = int(np.searchsorted(xs, xc_, side="right"))
         d = xs[i:] - xc_
         if not d.size:
             return None
-        Pc, gd, _ = law.shape(d, H0, slopes=True)
+        Pc, gd, _ = law.in_contact(d, H0) if contact else law.shape(d, H0, slopes=True)  # d > 0: xs[i:] > xc_
         Pp = -Q @ (Q[i:].T @ Pc)
         Pp[i:] += Pc
         spp = float(Pp @ Pp)
