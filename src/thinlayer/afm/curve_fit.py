@@ -19,15 +19,16 @@ before contact (``delta <= 0``).  ``b0`` is the baseline force at the contact po
 
 Solvers.  ``solver="lm"`` (the default, the reference) scores the 100 trial contact points on every point and runs
 Levenberg-Marquardt on all parameters from the best.  ``solver="varpro"`` (the default of force maps,
-:func:`thinlayer.afm.maps.fit_curve_full`) solves the same least squares by variable projection: the force is linear
-in ``E``, ``b0``, ``b1``, so for a contact point they are one linear solve (the baseline's columns span the same space
+:func:`thinlayer.afm.maps.fit_curve_full`) solves the same least squares by variable projection: the force is linear in
+``E``, ``b0``, ``b1``, so for a contact point they are one linear solve (the baseline's columns span the same space
 whatever ``z0``: projected out once), the trials are scored all at once on at most 128 block means of the curve, and
 Gauss-Newton steps on the projected residual (Kaufman's approximation) in ``z0`` alone converge in 3-5 evaluations of
 the law on the points in contact; the standard errors are then computed as ``"lm"``'s, from the full Jacobian at the
 solution.  Measured against ``"lm"``: E, z0, b0 within 2.2e-5 of a standard error on the 2,000-point curves of
-benchmarks/bench_maps.py, within 1.2e-3 on a 300-point map pixel where Levenberg-Marquardt stops earlier along the
-E-z0 valley (variable projection's residual is the lower); 6-7 ms of CPU per curve on a layer against 50-90 ms
-(tests/afm/test_maps_fast.py).  Weighted fits, a fitted H and an indentation range are left to ``"lm"``.
+benchmarks/bench_maps.py, within 1.2e-3 on a 300-point map pixel where Levenberg-Marquardt stops earlier along the E-z0
+valley (variable projection's residual is the lower); 3.9 ms of CPU per curve on a layer against 47 ms, 2.5 ms on the
+half-space against 41 ms (benchmarks/bench_maps.py, load 8-10; tests/afm/test_maps_fast.py).  Weighted fits, a fitted H
+and an indentation range are left to ``"lm"``.
 
 Contact-point weighting.  ``weighting="nanite"`` multiplies each residual by ``min(|z - z0|/weight_cp, 1)``
 (nanite's ``compute_contact_point_weights``, its default ``weight_cp = 1e-6`` m), which lets the points next to the

@@ -14,12 +14,15 @@ validation study.  The same call runs
   a batch of :data:`AUTO_BATCH` items or more when dask.distributed is installed and there are 2 cores or more, else
   serially.
 
-No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about 4 per worker: a
-4096-pixel map on 2 workers is 8 tasks, not 4096), sent to the workers by ``Client.scatter``, mapped by
-``Client.map`` and collected by ``distributed.as_completed``; the results come back in the items' order.  A cluster
-started here logs nothing below CRITICAL (its shutdown chatter); the tasks' errors reach the caller through their
-futures.  Each item is computed by the same function on the same numbers on every path: the serial, threaded and
-process results are equal bit for bit (``tests/afm/test_maps_distributed.py``).
+No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about :data:`TASKS_PER_WORKER`
+per worker: a 4096-pixel map on 2 workers is 32 tasks of 128 curves, not 4096), sent to the workers by
+``Client.scatter``, mapped by ``Client.map`` and collected by ``distributed.as_completed``; the results come back in
+the items' order.  A chunk may travel packed (``pack=``: a force map's curves as 2 arrays per chunk), each worker may
+make one warm-up call while the chunks travel (``warm=``), and ``timings=`` says where the time went.  A cluster
+started here runs without dask's statistical profiler and with glibc's own ``malloc`` trimming
+(:func:`_cluster_config`), and logs nothing below CRITICAL (its shutdown chatter); the tasks' errors reach the caller
+through their futures.  Each item is computed by the same function on the same numbers on every path: the serial,
+threaded and process results are equal bit for bit (``tests/afm/test_maps_distributed.py``).
 
 dask is imported on first use (the extra ``thinlayer[afm]``); the serial path never imports it.
 """
@@ -39,8 +42,12 @@ __all__ = ["AUTO_BATCH", "SCHEDULERS", "auto_scheduler", "chunked", "map_batch",
 #: the named schedulers (besides a ``tcp://``/``tls://``/``inproc://`` address or a ``distributed.Client``)
 SCHEDULERS = (None, "serial", "threads", "local", "auto")
 #: ``scheduler="auto"``: a local cluster of processes from this many items on (with dask.distributed and 2+ cores),
-#: else serially.  Starting 2 workers and closing them: about 0.5 s forked, 4 s spawned; a map curve 3-7 ms of CPU
+#: else serially.  Starting 2 workers and closing them (forkserver, load 7-9): 0.6-1.1 s, the process's first
+#: cluster 4-5 s (spawned: 7-9 s each time); a map curve 2.5-5 ms of CPU
 AUTO_BATCH = 256
+#: chunks per worker by default: the workers finish together within about one chunk (a worker that is done waits
+#: for the others' last chunk; 128 map curves are 0.5 s, 512 were 2 s); a task costs dask about a millisecond
+TASKS_PER_WORKER = 16
 #: seconds to wait for a cluster to start or a scheduler to answer before giving up (one line, never a hang)
 CONNECT_TIMEOUT = 60.0
 #: what the server of a ``forkserver`` local cluster imports before it forks the workers (:func:`start_method`)
@@ -238,7 +245,7 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
         ``"local"``: a ``LocalCluster`` of worker processes (one per core); ``"tcp://host:port"``: that cluster's
         scheduler; a ``Client``: used as it is (and left open).  A cluster started here is closed before return.
     chunk : int, optional
-        Items per dask task (default: about 4 tasks per worker, at least 1 item).
+        Items per dask task (default: about :data:`TASKS_PER_WORKER` tasks per worker, at least 1 item).
     workers : int, optional
         Workers of a cluster started here (default: 2 threads, or one process per core).
     progress : bool
@@ -293,7 +300,7 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
             tick["send"] = time.perf_counter()
             names = list(client.scheduler_info(n_workers=-1).get("workers", {}))
             if chunk is None:
-                chunk = max(1, math.ceil(len(items) / (4 * max(1, len(names)))))
+                chunk = max(1, math.ceil(len(items) / (TASKS_PER_WORKER * max(1, len(names)))))
             parts = chunked(items, int(chunk))
             cpu0 = client.run(time.process_time) if timings is not None else {}
             warming = []
