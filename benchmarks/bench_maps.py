@@ -2,23 +2,23 @@
 
 The curves are synthetic (thinlayer.afm.map_data.synthetic_curve, built in memory, not timed): E from 3 to 12 kPa
 over the map, contact heights over +-0.3 um, a sphere R = 5 um pressed 0.15 um (half of each curve off contact),
-noise 2 pN. Timed: ``fit_map`` with its DEFAULT fitter (``fit_curve_full``: thinlayer.afm.curve_fit.fit_curve with
+noise 2 pN.  Timed: ``fit_map`` with its DEFAULT fitter (``fit_curve_full``: thinlayer.afm.curve_fit.fit_curve with
 ``solver="varpro"``, E, the contact point and the baseline offset fitted) from the curves to the MapResult with its
 default scheduler (``"auto"``: for 4,096 curves a dask LocalCluster of one worker process per core, started as
-thinlayer.afm.distributed.start_method says: forkserver where the platform has it, ``THINLAYER_DASK_START`` to
-choose; the cluster's start-up and shutdown, sending the curves and the law included), for a layer H = 2 um (the
-any-thickness law (T.7); the law of this process is built before the timed runs, as a session that fits several
-maps has it, and sent to the workers) and the half-space (Hertz, closed form).  The layer runs first: its first run
-starts the process's first cluster (the forkserver cold), a row of its own.  Each map is fitted
-``THINLAYER_BENCH_REPEAT`` times (default 3): the rows give the best and the worst wall time, the load average
-(1 min) over the runs, the best run's phases (fit_map's ``timings``: cluster start, sending the curves while the
-workers warm up, fitting, closing) and the CPU per curve in the workers' tasks, 2 workers running at once (on this
-2-vCPU machine two processes at once each take 1.2-1.7 times the CPU one alone takes for the same work, a plain
-Python loop too: the host's cores are shared).  Load-independent rows: the CPU seconds per curve (serial, 64 curves,
-one process) of the default fitter, of the reference ``solver="lm"`` (the same least squares by trial contact points
-and Levenberg-Marquardt) and of the simpler ``fit_curve_basic``, and the time 2 idle cores would take for the map
-from the default's CPU (an extrapolation without start-up or transfer); the largest difference between the default
-and the reference fitter's E, in the reference's standard errors, is printed.
+thinlayer.afm.distributed.start_method says: forkserver where the platform has it, ``THINLAYER_DASK_START`` to choose;
+the cluster's start-up and shutdown, sending the curves and the law included), for a layer H = 2 um (the any-thickness
+law (T.7); the law of this process is built before the timed runs, as a session that fits several maps has it, and sent
+to the workers) and the half-space (Hertz, closed form).  The layer runs first: its first run starts the process's
+first cluster (the forkserver cold), a row of its own.  Each map is fitted ``THINLAYER_BENCH_REPEAT`` times (default
+3): the rows give the best and the worst wall time, the load average (1 min) over the runs, the best run's phases
+(fit_map's ``timings``: cluster start, sending the curves while the workers warm up, fitting, closing) and the CPU per
+curve in the workers' tasks, 2 workers running at once (on the 2-vCPU test machine two processes at once each took
+1.2-1.7 times the CPU one alone took for the same fits, and a plain Python loop 1.3-1.7 times, at load 5-6: CPU per
+curve depends on what else runs).  Rows of one process: the CPU seconds per curve (serial, 64 curves, one process) of
+the default fitter, of the reference ``solver="lm"`` (the same least squares by trial contact points and
+Levenberg-Marquardt) and of the simpler ``fit_curve_basic``, and the time 2 idle cores would take for the map from the
+default's CPU (an extrapolation without start-up or transfer); the largest difference between the default and the
+reference fitter's E, in the reference's standard errors, is printed.
 Reading a map file is a separate row: a 16 x 16 map written in afmformats' HDF5 format and read back by
 ``read_map``. ``THINLAYER_BENCH_MAP=N`` sets the side (default 64).
 """
