@@ -71,6 +71,62 @@ def test_fit_map_on_threads_equals_serial(small_map, threads_client):
     assert serial.counts() == {"ok": 5, "flagged": 0, "failed": 1, "empty": 0}
 
 
+_CALLS: list = []
+
+
+def _counted(x: float) -> float:
+    _CALLS.append(x)
+    return _series(x)
+
+
+def test_map_batch_packs_warms_and_times_with_the_same_results(threads_client):
+    """pack= (each chunk sent as an object that iterates over its items), warm= (one call per worker before the
+    chunks) and timings= change nothing in the results; every phase is timed."""
+    items = list(np.linspace(0.1, 3.0, 11))
+    serial = map_batch(_series, items)
+    _CALLS.clear()
+    timings: dict = {}
+    got = map_batch(_counted, items, scheduler=threads_client, chunk=4, timeout=TIMEOUT, pack=tuple, warm=True,
+                    timings=timings)
+    assert got == serial
+    assert len(_CALLS) == len(items) + 2 and _CALLS.count(items[0]) == 3  # the 2 workers' warm-up calls
+    assert timings["chunks"] == 3 and timings["workers"] == 2
+    assert all(timings[k] >= 0 for k in ("start", "send", "compute", "close", "task_cpu", "worker_cpu"))
+
+
+def test_packed_pixels_iterate_to_the_same_curves_after_pickling():
+    """A map chunk packed for a worker (maps._PixelBlock): pickled, it gives back every item, in order, with equal
+    arrays, names, indices and thicknesses; curves that are not float arrays of one length travel as they are."""
+    import pickle
+
+    from thinlayer.afm.map_data import MapCurve
+    from thinlayer.afm.maps import _PixelBlock
+
+    rng = np.random.default_rng(5)
+    items = [(MapCurve((i, 2 * i), rng.normal(size=7 + i), rng.normal(size=7 + i), f"c{i}", 0.1 * i, (i, -i)),
+              None if i == 1 else 1e-6 * (i + 1)) for i in range(4)]
+    block = pickle.loads(pickle.dumps(_PixelBlock(items)))
+    assert block.items is None and block.z.size == sum(c.force.size for c, _ in items)
+    back = list(block)
+    assert len(back) == len(block) == len(items)
+    for (c, H), (c2, H2) in zip(items, back):
+        assert (c2.index, c2.name, c2.spring_constant, c2.position, H2) == (c.index, c.name, c.spring_constant,
+                                                                           c.position, H)
+        assert np.array_equal(c2.tip_position, c.tip_position) and np.array_equal(c2.force, c.force)
+    odd = [(MapCurve((0, 0), np.arange(5), np.ones(5)), None), (MapCurve((0, 1), np.ones(3), np.ones(4)), None)]
+    kept = _PixelBlock(odd)
+    assert kept.z is None and [c for c, _ in kept] == [c for c, _ in odd]
+
+
+def test_clusters_started_here_run_without_the_profiler_and_with_glibc_trimming():
+    from thinlayer.afm.distributed import _cluster_config, start_method
+
+    config = _cluster_config()
+    assert config["distributed.worker.profile.enabled"] is False
+    assert config["distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_"] is None
+    assert config["distributed.worker.multiprocessing-method"] == start_method()
+
+
 def test_progress_counter_goes_to_stderr(capsys):
     assert map_batch(abs, [-1, -2, -3], progress=True, label="curves") == [1, 2, 3]
     out, err = capsys.readouterr()

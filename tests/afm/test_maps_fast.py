@@ -182,13 +182,24 @@ def test_a_worker_adopts_the_law_its_parent_sent(monkeypatch):
 
 
 def test_local_clusters_start_as_dask_says_unless_asked(monkeypatch):
+    """dask's configured start method when it is not dask's default, else forkserver where the platform has it."""
+    import multiprocessing
+
     from thinlayer.afm.distributed import start_method
 
     monkeypatch.delenv("THINLAYER_DASK_START", raising=False)
     dask = pytest.importorskip("dask")
-    assert start_method() == dask.config.get("distributed.worker.multiprocessing-method", "spawn")
+    pytest.importorskip("distributed")  # its defaults in dask's config
+    configured = dask.config.get("distributed.worker.multiprocessing-method", "spawn")
+    has_forkserver = "forkserver" in multiprocessing.get_all_start_methods()
+    assert start_method() == (configured if configured != "spawn" else "forkserver" if has_forkserver else "spawn")
+    with dask.config.set({"distributed.worker.multiprocessing-method": "fork"}):
+        assert start_method() == "fork"
     monkeypatch.setenv("THINLAYER_DASK_START", "fork")
     assert start_method() == "fork"
+    monkeypatch.setenv("THINLAYER_DASK_START", "spawn")
+    with dask.config.set({"distributed.worker.multiprocessing-method": "forkserver"}):
+        assert start_method() == "spawn"
 
 
 def test_auto_scheduler_is_a_local_cluster_for_a_large_map_only():

@@ -19,15 +19,16 @@ before contact (``delta <= 0``).  ``b0`` is the baseline force at the contact po
 
 Solvers.  ``solver="lm"`` (the default, the reference) scores the 100 trial contact points on every point and runs
 Levenberg-Marquardt on all parameters from the best.  ``solver="varpro"`` (the default of force maps,
-:func:`thinlayer.afm.maps.fit_curve_full`) solves the same least squares by variable projection: the force is linear
-in ``E``, ``b0``, ``b1``, so for a contact point they are one linear solve (the baseline's columns span the same space
+:func:`thinlayer.afm.maps.fit_curve_full`) solves the same least squares by variable projection: the force is linear in
+``E``, ``b0``, ``b1``, so for a contact point they are one linear solve (the baseline's columns span the same space
 whatever ``z0``: projected out once), the trials are scored all at once on at most 128 block means of the curve, and
 Gauss-Newton steps on the projected residual (Kaufman's approximation) in ``z0`` alone converge in 3-5 evaluations of
 the law on the points in contact; the standard errors are then computed as ``"lm"``'s, from the full Jacobian at the
 solution.  Measured against ``"lm"``: E, z0, b0 within 2.2e-5 of a standard error on the 2,000-point curves of
-benchmarks/bench_maps.py, within 1.2e-3 on a 300-point map pixel where Levenberg-Marquardt stops earlier along the
-E-z0 valley (variable projection's residual is the lower); 6-7 ms of CPU per curve on a layer against 50-90 ms
-(tests/afm/test_maps_fast.py).  Weighted fits, a fitted H and an indentation range are left to ``"lm"``.
+benchmarks/bench_maps.py, within 1.2e-3 on a 300-point map pixel where Levenberg-Marquardt stops earlier along the E-z0
+valley (variable projection's residual is the lower); 3.9 ms of CPU per curve on a layer against 47 ms, 2.5 ms on the
+half-space against 41 ms (benchmarks/bench_maps.py, load 8-10; tests/afm/test_maps_fast.py).  Weighted fits, a fitted H
+and an indentation range are left to ``"lm"``.
 
 Contact-point weighting.  ``weighting="nanite"`` multiplies each residual by ``min(|z - z0|/weight_cp, 1)``
 (nanite's ``compute_contact_point_weights``, its default ``weight_cp = 1e-6`` m), which lets the points next to the
@@ -431,11 +432,26 @@ def _checked(res: CurveFit) -> CurveFit:
 def _orientation(x: np.ndarray, f: np.ndarray, curve: Curve) -> None:
     if x.size < 6:
         raise InputError(f"{x.size} points in the fit range: too few for E, the contact point and the baseline")
-    if np.ptp(x) > 0 and np.ptp(f) > 0 and float(np.corrcoef(x, f)[0, 1]) < 0:
+    # the sign of the correlation of position and force: the sign of their covariance (no need to normalise it)
+    if np.ptp(x) > 0 and np.ptp(f) > 0 and float(np.dot(x - x.mean(), f - f.mean())) < 0:
         how = ("the file's tip position is negative into the sample" if curve.segment else
                "axis='depth' is positive into the sample, axis='tip position' (CLI --depth-sign -1) negative")
         raise InputError(f"fit_curve(): the force falls as the tip moves into the sample ({how}): is this the "
                          f"right segment or axis?")
+
+
+def _median(a: np.ndarray) -> float:
+    """``float(np.median(a))`` of a 1D float array, bit for bit (the same partition, the same mean of the two middle
+    values, NaN when ``a`` has one), without np.median's generic machinery (a fit takes five).
+    """
+    n = a.size
+    if n == 0:
+        return float(np.median(a))
+    k = n // 2
+    p = np.partition(a, [k - 1, k, -1] if n % 2 == 0 else [k, -1])
+    if np.isnan(p[-1]):
+        return math.nan
+    return float((p[k - 1] + p[k]) / 2.0) if n % 2 == 0 else float(p[k])
 
 
 def _weights(x: np.ndarray, xc: float, weighting: str | None, wcp: float) -> np.ndarray:
@@ -457,10 +473,10 @@ def _trials(x, f, slope, xc_fixed):
 
             sl, ic = stats.theilslopes(fs[sub], xs[sub])[:2]
         else:
-            sl, ic = 0.0, float(np.median(fs[:n0]))
+            sl, ic = 0.0, _median(fs[:n0])
         r = fs - (ic + sl * xs)
-        dev = r[:n0] - np.median(r[:n0])
-        sigma = 1.4826 * float(np.median(np.abs(dev))) or float(np.std(r[:n0])) or 1e-12 * float(np.max(np.abs(fs)))
+        dev = r[:n0] - _median(r[:n0])
+        sigma = 1.4826 * _median(np.abs(dev)) or float(np.std(r[:n0])) or 1e-12 * float(np.max(np.abs(fs)))
         below = np.nonzero(r <= 3 * sigma)[0]
         i_dep = int(below[-1]) if below.size else 0
         if i_dep >= n0 or n0 <= 5:
@@ -507,8 +523,9 @@ def _initial(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
 
 def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solved=False):
     """Least squares from ``start`` (nanite's weights, when asked, move with the contact point).  Returns
-    ``(params (xc, E, b0, bx, H), jacobian, scaled residuals, names)``; ``solved``: ``start`` is the solution already
-    (:func:`_varpro`), only the Jacobian and the residuals are computed there.
+    ``(params (xc, E, b0, bx, H), jacobian, scaled residuals, names, column scales, weights, the law's force at the
+    solution)``; ``solved``: ``start`` is the solution already (:func:`_varpro`), only the Jacobian and the residuals
+    are computed there (from one evaluation of the law).
     """
     from scipy import optimize
 
@@ -516,7 +533,7 @@ def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solv
     free_xc = xc_fixed is None
     names = ["E"] + (["z0"] if free_xc else []) + ["b0"] + (["b1"] if slope else []) + (["H"] if fit_H else [])
     xscale = float(np.ptp(x)) or 1.0
-    fscale = float(np.max(np.abs(f - np.median(f)))) or float(np.max(np.abs(f))) or 1.0
+    fscale = float(np.max(np.abs(f - _median(f)))) or float(np.max(np.abs(f))) or 1.0
     xref = xc
 
     def unpack(p):
@@ -531,15 +548,15 @@ def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solv
         H_ = math.exp(p[i]) if fit_H else H0
         return xc_, E_, b0_, bx_, H_
 
-    def resid(p):
+    def resid(p, shape=None):
         xc_, E_, b0_, bx_, H_ = unpack(p)
-        P, _, _ = law.shape(x - xc_, H_, slopes=False)
+        P, _, _ = law.shape(x - xc_, H_, slopes=False) if shape is None else shape
         return (b0_ + bx_ * (x - xc_) + E_ * P - f) * _weights(x, xc_, weighting, wcp) / fscale
 
-    def jac(p):
+    def jac(p, shape=None):
         xc_, E_, b0_, bx_, H_ = unpack(p)
         d = x - xc_
-        P, gd, gH = law.shape(d, H_, slopes=True)
+        P, gd, gH = law.shape(d, H_, slopes=True) if shape is None else shape
         EP = E_ * P
         w = _weights(x, xc_, weighting, wcp)
         cols = [EP * w]
@@ -560,17 +577,19 @@ def _solve(x, f, start, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp, solv
         + ([math.log(HH)] if fit_H else [])
     if solved:
         px = np.array(p0, dtype=float)
-        fun = resid(px)
     else:
         sol = optimize.least_squares(resid, p0, jac=jac, method="lm", xtol=1e-12, ftol=1e-12, gtol=1e-12,
                                      max_nfev=400)
         px, fun = sol.x, sol.fun
     xc, E, b0, bx, HH = unpack(px)
+    shape = law.shape(x - xc, HH, slopes=True)  # once at the solution: its force is the same with or without slopes
+    if solved:
+        fun = resid(px, shape)
     w = _weights(x, xc, weighting, wcp)
-    J = jac(px)
+    J = jac(px, shape)
     T = np.array([E] + ([xscale] if free_xc else []) + [fscale] + ([fscale / xscale] if slope else [])
                  + ([HH] if fit_H else []))
-    return (xc, E, b0, bx, HH), J, fun, names, T, w
+    return (xc, E, b0, bx, HH), J, fun, names, T, w, shape[0]
 
 
 class _ForceOnly:
@@ -600,12 +619,26 @@ class _ForceOnly:
     def __reduce__(self):
         return _ForceOnly, (self._law,)
 
-    def shape(self, delta: np.ndarray, H: float, slopes: bool = True):
+    def _curve(self, H: float) -> Any:
         curve = self._curves.get(H)
         if curve is None:
             if len(self._curves) > 64:
                 self._curves.clear()
             curve = self._curves[H] = self._law.shape.curve(H)
+        return curve
+
+    def in_contact(self, delta: np.ndarray, H: float):
+        """``shape(delta, H)`` at depths that are all ``> 0`` (the points past a contact point): the same numbers bit
+        for bit, without the masks (:func:`_varpro` takes it 3-4 times per curve).
+        """
+        both = getattr(self._curve(H), "force_slopes", None)
+        if both is None:
+            return self._law.shape(delta, H, True)
+        p, a, b = both(np.asarray(delta, dtype=float), True)
+        return p * self._scale, a, b
+
+    def shape(self, delta: np.ndarray, H: float, slopes: bool = True):
+        curve = self._curve(H)
         both = getattr(curve, "force_slopes", None)
         if both is None:
             return self._law.shape(delta, H, slopes)
@@ -638,7 +671,7 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
     xs, fs, grid = _trials(x, f, slope, xc_fixed)
     n = xs.size
     span = float(xs[-1] - xs[0]) or 1.0
-    fmid = float(np.median(fs))
+    fmid = _median(fs)
     fsc = float(np.max(np.abs(fs - fmid))) or 1.0
     g = (fs - fmid) / fsc  # the force centred and scaled: sums of squares without cancellation
     u = (xs - xs[0]) / span
@@ -672,12 +705,14 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
         xc = float(xc_fixed)
 
     # --- variable projection on every point -----------------------------------------------------------------------
+    contact = isinstance(law, _ForceOnly)
+
     def linear(xc_):
         i = int(np.searchsorted(xs, xc_, side="right"))
         d = xs[i:] - xc_
         if not d.size:
             return None
-        Pc, gd, _ = law.shape(d, H0, slopes=True)
+        Pc, gd, _ = law.in_contact(d, H0) if contact else law.shape(d, H0, slopes=True)  # d > 0: xs[i:] > xc_
         Pp = -Q @ (Q[i:].T @ Pc)
         Pp[i:] += Pc
         spp = float(Pp @ Pp)
@@ -727,7 +762,7 @@ def _varpro(x, f, H0, xc_fixed, *, law, slope, fit_H, weighting, wcp):
 
 def _result(curve, x, f, sol, H0, xc_fixed, rng_, range_kind, baseline, n_boot, seed, boot_kind, *, law, slope,
             fit_H, weighting, wcp) -> CurveFit:
-    (xc, E, b0, bx, HH), J, r, names, T, w = sol
+    (xc, E, b0, bx, HH), J, r, names, T, w, P = sol
     s = curve.direction
     p = len(names)
     if x.size < p + 1:
@@ -747,8 +782,7 @@ def _result(curve, x, f, sol, H0, xc_fixed, rng_, range_kind, baseline, n_boot, 
     # physical signs: z0 = s xc, b1 = s bx (the covariance of a sign flip changes the off-diagonal signs only)
     flip = np.array([s if nm in ("z0", "b1") else 1 for nm in names], dtype=float)
     cov = cov * np.outer(flip, flip)
-    P, _, _ = law.shape(x - xc, HH, slopes=False)
-    model_f = b0 + bx * (x - xc) + E * P
+    model_f = b0 + bx * (x - xc) + E * P  # P: the law's force at the solution (:func:`_solve`)
     resid = model_f - f
     b, phi = block_length(resid)
     boot = dict.fromkeys(_PHYS, math.nan)

@@ -14,12 +14,15 @@ validation study.  The same call runs
   a batch of :data:`AUTO_BATCH` items or more when dask.distributed is installed and there are 2 cores or more, else
   serially.
 
-No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about 4 per worker: a
-4096-pixel map on 2 workers is 8 tasks, not 4096), sent to the workers by ``Client.scatter``, mapped by
-``Client.map`` and collected by ``distributed.as_completed``; the results come back in the items' order.  A cluster
-started here logs nothing below CRITICAL (its shutdown chatter); the tasks' errors reach the caller through their
-futures.  Each item is computed by the same function on the same numbers on every path: the serial, threaded and
-process results are equal bit for bit (``tests/afm/test_maps_distributed.py``).
+No pool of thinlayer's own: the items are grouped in chunks (one dask task per chunk, about :data:`TASKS_PER_WORKER`
+per worker: a 4096-pixel map on 2 workers is 32 tasks of 128 curves, not 4096), sent to the workers by
+``Client.scatter``, mapped by ``Client.map`` and collected by ``distributed.as_completed``; the results come back in
+the items' order.  A chunk may travel packed (``pack=``: a force map's curves as 2 arrays per chunk), each worker may
+make one warm-up call while the chunks travel (``warm=``), and ``timings=`` says where the time went.  A cluster
+started here runs without dask's statistical profiler and with glibc's own ``malloc`` trimming
+(:func:`_cluster_config`), and logs nothing below CRITICAL (its shutdown chatter); the tasks' errors reach the caller
+through their futures.  Each item is computed by the same function on the same numbers on every path: the serial,
+threaded and process results are equal bit for bit (``tests/afm/test_maps_distributed.py``).
 
 dask is imported on first use (the extra ``thinlayer[afm]``); the serial path never imports it.
 """
@@ -28,6 +31,7 @@ from __future__ import annotations
 import logging
 import math
 import sys
+import time
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
@@ -38,10 +42,17 @@ __all__ = ["AUTO_BATCH", "SCHEDULERS", "auto_scheduler", "chunked", "map_batch",
 #: the named schedulers (besides a ``tcp://``/``tls://``/``inproc://`` address or a ``distributed.Client``)
 SCHEDULERS = (None, "serial", "threads", "local", "auto")
 #: ``scheduler="auto"``: a local cluster of processes from this many items on (with dask.distributed and 2+ cores),
-#: else serially.  Starting 2 workers and closing them: about 0.5 s forked, 4 s spawned; a map curve 3-7 ms of CPU
+#: else serially.  Starting 2 workers and closing them (forkserver, load 7-9): 0.6-1.1 s, the process's first
+#: cluster 4-5 s (spawned: 7-9 s each time); a map curve 2.5-5 ms of CPU
 AUTO_BATCH = 256
+#: chunks per worker by default: the workers finish together within about one chunk (a worker that is done waits
+#: for the others' last chunk; 128 map curves are 0.5 s, 512 were 2 s); a task costs dask about a millisecond
+TASKS_PER_WORKER = 16
 #: seconds to wait for a cluster to start or a scheduler to answer before giving up (one line, never a hang)
 CONNECT_TIMEOUT = 60.0
+#: what the server of a ``forkserver`` local cluster imports before it forks the workers (:func:`start_method`)
+FORKSERVER_PRELOAD = ("distributed", "numpy", "scipy.optimize", "thinlayer.afm.maps", "thinlayer.afm.curve_fit",
+                      "thinlayer.contact.models.any_thickness")
 
 
 def chunked(items: Sequence[Any], size: int) -> list[list[Any]]:
@@ -49,9 +60,20 @@ def chunked(items: Sequence[Any], size: int) -> list[list[Any]]:
     return [list(items[i:i + size]) for i in range(0, len(items), size)]
 
 
-def _run_chunk(func: Callable[[Any], Any], chunk: list[Any]) -> list[Any]:
-    """One dask task: ``func`` over a chunk of items, in order."""
-    return [func(item) for item in chunk]
+def _run_chunk(func: Callable[[Any], Any], chunk: Iterable[Any]) -> tuple[list[Any], float]:
+    """One dask task: ``func`` over a chunk of items (a list, or what ``pack`` made of one), in order, and the CPU
+    seconds it took (:func:`map_batch`'s ``timings``).
+    """
+    t0 = time.process_time()
+    out = [func(item) for item in chunk]
+    return out, time.process_time() - t0
+
+
+def _warm(func: Callable[[Any], Any], item: Any) -> None:
+    """A worker's first call, its result dropped: the imports and caches ``func`` needs, paid while the items are
+    still being sent.
+    """
+    func(item)
 
 
 class Progress:
@@ -102,7 +124,10 @@ def _client(scheduler: Any, workers: int | None):
         import dask
 
         n = workers or (2 if scheduler == "threads" else _cores())
-        with dask.config.set({"distributed.worker.multiprocessing-method": start_method()}):
+        config = _cluster_config()
+        if scheduler == "local":
+            _preload_forkserver(config)
+        with dask.config.set(config):
             cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=scheduler == "local",  # ":0": any port
                                    dashboard_address=":0", silence_logs=logging.CRITICAL)
         return Client(cluster, timeout=CONNECT_TIMEOUT), True
@@ -112,6 +137,19 @@ def _client(scheduler: Any, workers: int | None):
         raise InputError(f"scheduler {scheduler!r}: no dask scheduler answered within {CONNECT_TIMEOUT:g} s "
                          f"({str(exc).splitlines()[0][:120]}); give a running scheduler's address, 'local' or None")\
             from None
+
+
+def _cluster_config() -> dict[str, Any]:
+    """Dask's settings for a cluster started here (:func:`map_batch`): the start method (:func:`start_method`), no
+    statistical profiler (it samples every thread's stack each 10 ms: CPU taken from the tasks, for a dashboard
+    nobody sees on a cluster that lives one call), and glibc's own ``malloc`` trimming instead of the nanny's
+    ``MALLOC_TRIM_THRESHOLD_=65536`` (which returns every freed heap top above 64 KiB to the system: about 120 page
+    faults and 0.5 ms of system CPU per map curve, benchmarks/bench_maps.py).  The BLAS/OpenMP threads stay at the
+    nanny's 1 per worker (one worker per core).
+    """
+    return {"distributed.worker.multiprocessing-method": start_method(),
+            "distributed.worker.profile.enabled": False,
+            "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}
 
 
 def auto_scheduler(n_items: int) -> str | None:
@@ -124,20 +162,44 @@ def auto_scheduler(n_items: int) -> str | None:
 
 
 def start_method() -> str:
-    """How a local cluster started here starts its worker processes: dask's configured method (``"spawn"`` by
-    default), or ``THINLAYER_DASK_START`` (``fork``, ``spawn``, ``forkserver``).  ``fork`` starts 2 workers in 0.3 s
-    where ``spawn`` took 3.3 s (each spawned worker imports dask, numpy, scipy and thinlayer again; load 14), but a
-    second forked cluster in the same process was seen to hang in ``Client.scatter`` (benchmarks/bench_maps.py, the
-    second map): opt-in until that is understood.
+    """How a local cluster started here starts its worker processes: ``THINLAYER_DASK_START`` (``fork``, ``spawn``,
+    ``forkserver``) when set; else dask's configured method when it is not dask's default ``"spawn"``; else
+    ``"forkserver"`` where the platform has it (Linux, macOS), else ``"spawn"``.
+
+    ``forkserver``: one clean server process (no thread, no event loop: none of ``fork``'s hazards; a second forked
+    cluster in the same process was seen to hang in ``Client.scatter``) imports :data:`FORKSERVER_PRELOAD` once and
+    forks each worker from itself: the workers start with dask, numpy, scipy and thinlayer imported, and exit
+    without tearing an interpreter down.  Against ``spawn`` (each worker imports everything again): the same first
+    start, a second cluster in the same process 1.0 s instead of 6.0 s, closing 0.3 s instead of 3.0 s (load 10,
+    benchmarks/bench_maps.py).
     """
     import os
 
     asked = os.environ.get("THINLAYER_DASK_START", "")
     if asked in ("fork", "spawn", "forkserver"):
         return asked
+    import multiprocessing
+
     import dask
 
-    return str(dask.config.get("distributed.worker.multiprocessing-method", "spawn"))
+    configured = str(dask.config.get("distributed.worker.multiprocessing-method", "spawn"))
+    if configured != "spawn":
+        return configured
+    return "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() else "spawn"
+
+
+def _preload_forkserver(config: dict[str, Any]) -> None:
+    """With ``forkserver`` (:func:`start_method`): the server, when this call starts it, imports
+    :data:`FORKSERVER_PRELOAD` (dask's own list, set on its first use, is replaced: it has pandas, not thinlayer).
+    """
+    if config.get("distributed.worker.multiprocessing-method") != "forkserver":
+        return
+    import dask
+    from distributed.utils import get_mp_context
+
+    with dask.config.set(config):
+        context = get_mp_context()
+    context.set_forkserver_preload(list(FORKSERVER_PRELOAD))
 
 
 def _cores() -> int:
@@ -166,7 +228,8 @@ def check_scheduler(scheduler: Any) -> Any:
 
 def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: Any = None, chunk: int | None = None,
               workers: int | None = None, progress: bool = False, label: str = "items",
-              timeout: float | None = None) -> list[Any]:
+              timeout: float | None = None, pack: Callable[[list[Any]], Iterable[Any]] | None = None,
+              warm: bool = False, timings: dict[str, float] | None = None) -> list[Any]:
     """``[func(item) for item in items]``, serially or on dask.distributed, in the items' order.
 
     Parameters
@@ -182,7 +245,7 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
         ``"local"``: a ``LocalCluster`` of worker processes (one per core); ``"tcp://host:port"``: that cluster's
         scheduler; a ``Client``: used as it is (and left open).  A cluster started here is closed before return.
     chunk : int, optional
-        Items per dask task (default: about 4 tasks per worker, at least 1 item).
+        Items per dask task (default: about :data:`TASKS_PER_WORKER` tasks per worker, at least 1 item).
     workers : int, optional
         Workers of a cluster started here (default: 2 threads, or one process per core).
     progress : bool
@@ -192,6 +255,20 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
     timeout : float, optional
         Seconds to wait for the dask results; past it a :class:`TimeoutError` is raised (and a cluster started here
         closed) instead of waiting for ever.
+    pack : callable, optional
+        On dask: each chunk (a list of items) is sent as ``pack(chunk)``, an object that iterates over the same items
+        in order and pickles in fewer, larger buffers (a force map's curves as one array per chunk: 0.8 s instead of
+        5.2 s to send 4,096 curves of 2,000 points, benchmarks/bench_maps.py).  ``func`` sees what the iteration
+        gives, on every path (the serial path iterates over the items themselves).
+    warm : bool
+        On dask: each worker computes ``func(first item)`` once, its result dropped, while the chunks are being sent
+        (imports and caches paid then, not by the worker's first chunk).  ``func`` must have no side effect.
+    timings : dict, optional
+        Filled, on dask, with where the time went (benchmarks/bench_maps.py): wall seconds ``"start"`` (the cluster
+        and its client), ``"send"`` (the chunks scattered), ``"compute"`` (until the last result), ``"close"``;
+        ``"task_cpu"``, the CPU seconds of the tasks summed over the workers, and ``"worker_cpu"``, the workers'
+        process CPU from the send to the last result (the warm-up, receiving the data and dask's own work included);
+        ``"workers"``, ``"chunks"``.
 
     Returns
     -------
@@ -215,21 +292,40 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
                 out.append(func(item))
                 bar.update()
             return out
+        tick = {"start": time.perf_counter()}
         client, owned = _client(scheduler, workers)
         try:
             from distributed import as_completed
 
+            tick["send"] = time.perf_counter()
+            names = list(client.scheduler_info(n_workers=-1).get("workers", {}))
             if chunk is None:
-                n = max(1, len(client.scheduler_info(n_workers=-1).get("workers", {})))
-                chunk = max(1, math.ceil(len(items) / (4 * n)))
+                chunk = max(1, math.ceil(len(items) / (TASKS_PER_WORKER * max(1, len(names)))))
             parts = chunked(items, int(chunk))
-            data = client.scatter(parts)  # the items sent to the workers once, not embedded in the task graph
+            cpu0 = client.run(time.process_time) if timings is not None else {}
+            warming = []
+            if warm:  # runs on the workers while the chunks are sent (a worker thread: its event loop stays free)
+                warming = [client.submit(_warm, func, items[0], workers=[w], allow_other_workers=False, pure=False)
+                           for w in names]
+            # the items sent to the workers once, not embedded in the task graph
+            data = client.scatter([pack(p) for p in parts] if pack is not None else parts)
+            tick["compute"] = time.perf_counter()
             futures = client.map(_run_chunk, [func] * len(parts), data, pure=False)
             order = {f.key: i for i, f in enumerate(futures)}
             results: list[Any] = [None] * len(parts)
+            task_cpu = 0.0
             for fut in as_completed(futures, timeout=timeout):
-                results[order[fut.key]] = fut.result()
+                out, cpu = fut.result()
+                results[order[fut.key]] = out
+                task_cpu += cpu
                 bar.update(len(parts[order[fut.key]]))
+            tick["close"] = time.perf_counter()
+            for w in warming:  # done long ago; an error there is the chunks' error too, already raised
+                w.release()
+            if timings is not None:
+                cpu1 = client.run(time.process_time)
+                timings.update(task_cpu=task_cpu, workers=len(names), chunks=len(parts),
+                               worker_cpu=sum(cpu1[w] - cpu0[w] for w in cpu0 if w in cpu1))
             return [r for part in results for r in part]
         finally:
             if owned:
@@ -237,6 +333,10 @@ def map_batch(func: Callable[[Any], Any], items: Iterable[Any], *, scheduler: An
                 client.close()
                 if cluster is not None:
                     cluster.close()
+            if timings is not None and "close" in tick:
+                end = time.perf_counter()
+                marks = [tick["start"], tick["send"], tick["compute"], tick["close"], end]
+                timings.update({k: b - a for k, a, b in zip(("start", "send", "compute", "close"), marks, marks[1:])})
     finally:
         bar.close()
 
