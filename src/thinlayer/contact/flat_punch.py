@@ -17,6 +17,7 @@ r"""Flat-ended cylindrical punch: the stiffness ``kappa(a/H)`` by the model that
 """
 from __future__ import annotations
 
+import functools
 import math
 import sys
 from dataclasses import dataclass
@@ -427,6 +428,18 @@ SOURCE_POINTS = 161
 SOURCE_RANGE = (1e-3, 200.0)
 
 
+@functools.lru_cache(maxsize=16)
+def _log_kappa_table(layer: LayerKernel) -> tuple[np.ndarray, np.ndarray]:
+    """``(log(a/H), log kappa)`` on the :data:`SOURCE_POINTS` nodes of :func:`flat_punch_source`: the exact solution
+    (F.6)-(F.7) at each node, computed once per layer and process (both languages are generated from it), read-only.
+    """
+    xs = np.linspace(np.log(SOURCE_RANGE[0]), np.log(SOURCE_RANGE[1]), SOURCE_POINTS)
+    F = np.log([flat_punch_kappa(layer, float(np.exp(x)), error_estimate=False).kappa for x in xs])
+    for a in (xs, F):
+        a.setflags(write=False)
+    return xs, F
+
+
 def flat_punch_source(layer: LayerKernel, language: str = "python") -> str:
     r"""Source of a standalone ``kappa(a_over_H)`` of one layer for every thickness: numpy module or C99.
 
@@ -446,8 +459,7 @@ def flat_punch_source(layer: LayerKernel, language: str = "python") -> str:
 
     layer = check_numeric_layer(layer)
     check_choice(language, ("python", "c"), "language")
-    xs = np.linspace(np.log(SOURCE_RANGE[0]), np.log(SOURCE_RANGE[1]), SOURCE_POINTS)
-    F = np.log([flat_punch_kappa(layer, float(np.exp(x)), error_estimate=False).kappa for x in xs])
+    xs, F = _log_kappa_table(layer)
     dF = CubicSpline(xs, F)(xs, 1)
     c = thick_flat_punch(layer, 3).coefficients
     h = float(xs[1] - xs[0])
