@@ -7,9 +7,14 @@ import sys
 import pytest
 
 
-def test_plots_written(small_study, tmp_path):
+def test_plots_written(validate_cli_run):
+    """``study.write(out, plots=True)``, as ``thinlayer validate --out validation --plots`` (the README's command, run
+    once for the suite by conftest's ``validate_cli_run``) called it: every figure as PNG and PDF, and the JSON."""
     pytest.importorskip("matplotlib", reason="matplotlib (the optional 'plot' extra) is not installed")
-    files = small_study.write(tmp_path / "out", plots=True)
+    run = validate_cli_run(("validate", "--out", "validation", "--plots"))  # conftest.py's DEFAULT_VALIDATE
+    assert run.code == 0, run.err[-2000:]
+    out = run.folder / "validation"
+    files = sorted(p for p in out.iterdir() if p.is_file())
     names = {f.name for f in files}
     for stem in ("validation_errors", "validation_pressure", "validation_contours", "validation_edge_shift"):
         assert {f"{stem}.png", f"{stem}.pdf"} <= names
@@ -20,7 +25,7 @@ def test_plots_written(small_study, tmp_path):
             assert head == b"\x89PNG\r\n\x1a\n"
         elif f.suffix == ".pdf":
             assert head.startswith(b"%PDF")
-    assert json.loads((tmp_path / "out" / "validation.json").read_text())["rows"]
+    assert json.loads((out / "validation.json").read_text())["rows"]
 
 
 def test_plots_without_matplotlib_name_the_extra(small_study, tmp_path, monkeypatch):
