@@ -134,23 +134,34 @@ def test_general_punch_against_direct_solver(layer):
 
 # --------------------------------------------------------------------------- (T.7)
 def test_sphere_series_against_sympy_reversion():
-    """(T.7) with sympy's series (an independent reversion) from the (T.5) terms, through chi^5."""
+    """(T.7) by an independent reversion of the (T.5) terms, through chi^5: sympy's power-series ring
+    (``rs_nth_root``, ``rs_series_reversion``, ``rs_subs``; exact over QQ[b_k, 1/pi]), not the engine's algorithm."""
+    from sympy.polys.ring_series import rs_mul, rs_nth_root, rs_pow, rs_series_inversion, rs_series_reversion, rs_subs
+    from sympy.polys.rings import ring
+
     N = 5
     ex = thick_layer_expansion(Punch.paraboloid(), order=N)
-    c, R, H, vt = sp.symbols("c R H vartheta", positive=True)
-    eps, chi = sp.symbols("epsilon chi", positive=True)
-    D = sp.Add(*[t * eps**m for m, t in enumerate(ex.delta_terms)]) / (c**2 / R)
-    F = sp.Add(*[t * eps**m for m, t in enumerate(ex.force_terms)]) / (8 * vt * c**3 / (3 * R))
-    chi_of_eps = sp.series(eps * sp.sqrt(D), eps, 0, N + 1).removeO()
-    e = chi
-    for _ in range(N):  # fixed point eps = chi - (chi(eps) - eps)
-        e = sp.series(chi - (chi_of_eps.subs(eps, e) - e), chi, 0, N + 1).removeO()
-    ratio = sp.expand(sp.series((F * D ** sp.Rational(-3, 2)).subs(eps, e), chi, 0, N + 1).removeO())
-    radius = sp.expand(sp.series((D ** sp.Rational(-1, 2)).subs(eps, e), chi, 0, N + 1).removeO())
+    c, R, vt = sp.symbols("c R vartheta", positive=True)
+    dn = [sp.expand(t / (c**2 / R)) for t in ex.delta_terms]  # D(eps) = delta0/(c^2/R)
+    fn = [sp.expand(t / (8 * vt * c**3 / (3 * R))) for t in ex.force_terms]  # F(eps) = P/(8 vartheta c^3/(3R))
+    q, E, X = sp.symbols("q e x")  # q = 1/pi, eps = H/c, chi
+    bs = sorted({s for t in dn + fn for s in t.free_symbols if s.name.startswith("b_")}, key=lambda s: s.name)
+    Rg, *gens = ring([*bs, q, E, X], sp.QQ)
+    e, x = gens[-2], gens[-1]
+    D = sum((Rg(sp.expand(t.subs(sp.pi, 1 / q))) * e**m for m, t in enumerate(dn)), Rg(0))
+    F = sum((Rg(sp.expand(t.subs(sp.pi, 1 / q))) * e**m for m, t in enumerate(fn)), Rg(0))
+    # chi = eps sqrt(D(eps)) (the contact radius a = c sqrt(D)), reverted: eps(chi)
+    eps = rs_series_reversion(rs_mul(e, rs_nth_root(D, 2, e, N + 1), e, N + 1), e, N + 1, x)
+    inv_sqrt_D = rs_series_inversion(rs_nth_root(rs_subs(D, {e: eps}, x, N + 1), 2, x, N + 1), x, N + 1)
+    ratio = rs_mul(rs_subs(F, {e: eps}, x, N + 1), rs_pow(inv_sqrt_D, 3, x, N + 1), x, N + 1)  # F D^{-3/2}
+
+    def coeff(series, n):
+        return sum((Rg({k: v}).as_expr() / X**n for k, v in series.terms() if k[-1] == n), sp.S(0)).subs(q, 1 / sp.pi)
+
     s = thick_sphere_series(N)
     for n in range(N + 1):
-        assert sp.expand(ratio.coeff(chi, n) - s.force[n]) == 0
-        assert sp.expand(radius.coeff(chi, n) - s.radius[n]) == 0
+        assert sp.expand(coeff(ratio, n) - s.force[n]) == 0, n
+        assert sp.expand(coeff(inv_sqrt_D, n) - s.radius[n]) == 0, n
     b0 = moment_symbols(0)[0]
     assert s.force[1] == 2 * b0 / sp.pi  # the flat-punch/rigid-shift term (T.2), k = 0
     assert s.force[2] == sp.Rational(14, 3) * b0**2 / sp.pi**2
