@@ -102,7 +102,8 @@ CASE_MEMO = 256
 
 def _case(shape: str, nu: float, eps: float, cells_per_H: float, workers: int | None) -> tuple:
     """``(row, profiles, contours)`` of one case, computed once per process (``workers`` changes the speed of the
-    2D solver only, not its numbers)."""
+    2D solver only, not its numbers).
+    """
     key = (shape, float(nu), float(eps), float(cells_per_H) if shape == "elliptic" else None)
     if key not in _CASES:
         if shape == "sphere":
