@@ -115,6 +115,8 @@ def _params():
         marks = []
         if " report " in f" {cmd} ":
             marks.append(pytest.mark.xdist_group("catalogue-reports"))
+        elif " validate " in f" {cmd} ":  # with the README's study: its cases are computed once per process
+            marks.append(pytest.mark.xdist_group("validation-study"))
         if "minutes" in comment and not SLOW:
             marks.append(pytest.mark.skip(reason="takes minutes (its help says so): THINLAYER_SLOW=1 runs it"))
         out.append(pytest.param(cmd, id=f"{name}: {cmd[10:70]}", marks=marks))

@@ -207,32 +207,26 @@ class RadialLoad:
     def __call__(self, rr: np.ndarray) -> np.ndarray:
         return self.phi(rr)
 
-    def nodes(self, c: float, modes: int) -> tuple[np.ndarray, np.ndarray]:
-        """Gauss-Legendre nodes and weights in ``th`` on ``[0, pi/2]``, split and graded (class docstring)."""
-        half = 0.5 * math.pi
-        edges = {0.0, half}
+    def edges(self, c: float) -> tuple[float, ...]:
+        """The panel ends in ``th`` on ``[0, pi/2]``: the breaks' angles and the apex grading (class docstring)."""
+        edges = {0.0, 0.5 * math.pi}
         edges.update(math.asin(b / c) for b in self.breaks if 0.0 < b < c)
         if self.graded:
             first = min(e for e in edges if e > 0)
             edges.update(first * 4.0 ** -j for j in range(1, GRADING_LEVELS + 1))
-        edges = sorted(edges)
-        total = 2 * modes + 48
-        th, w = [], []
-        for lo, hi in zip(edges[:-1], edges[1:]):
-            n = max(24, math.ceil(total * (hi - lo) / half))
-            xg, wg = _legendre(n)
-            th.append(0.5 * (hi - lo) * (xg + 1.0) + lo)
-            w.append(0.5 * (hi - lo) * wg)
-        return np.concatenate(th), np.concatenate(w)
+        return tuple(sorted(edges))
+
+    def nodes(self, c: float, modes: int) -> tuple[np.ndarray, np.ndarray]:
+        """Gauss-Legendre nodes and weights in ``th`` on ``[0, pi/2]``, split and graded (class docstring)."""
+        th, w, _, _ = _load_quadrature(self.edges(c), modes)
+        return th, w
 
     def loads(self, c: float, scale: np.ndarray) -> tuple[np.ndarray, float | None]:
         """``(F~_Phi, S[1] D(c))``: the normalised projections and the edge functional's infinite sum (None
         without a slope).
         """
         modes = scale.size
-        th, w = self.nodes(c, modes)
-        xq = np.sin(th)
-        P = special.eval_jacobi(np.arange(modes)[:, None], 0.0, -0.5, np.cos(2 * th)[None, :])
+        _, w, xq, P = _load_quadrature(self.edges(c), modes)
         F = (P @ (w * xq * self.phi(c * xq))) / scale
         if self.slope is None:
             return F, None
@@ -243,6 +237,30 @@ class RadialLoad:
 @lru_cache(maxsize=64)
 def _legendre(n: int) -> tuple[np.ndarray, np.ndarray]:
     return special.roots_legendre(n)
+
+
+@lru_cache(maxsize=16)
+def _load_quadrature(edges: tuple[float, ...], modes: int) -> tuple[np.ndarray, ...]:
+    """``(th, w, sin th, P_m(cos 2 th))`` of :meth:`RadialLoad.loads` for these panel ends and modes, read-only.
+
+    The panels depend on c only through a break (the blunted cone's join): for a cone, a power law or the exact
+    sphere every radius of a solve (the bracketing and Brent's method, about 15 per solve) uses the same nodes, and
+    the Jacobi polynomials at them (``eval_jacobi`` on modes x nodes, most of a load's cost) are computed once.
+    """
+    half = 0.5 * math.pi
+    total = 2 * modes + 48
+    th, w = [], []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        n = max(24, math.ceil(total * (hi - lo) / half))
+        xg, wg = _legendre(n)
+        th.append(0.5 * (hi - lo) * (xg + 1.0) + lo)
+        w.append(0.5 * (hi - lo) * wg)
+    th, w = np.concatenate(th), np.concatenate(w)
+    xq = np.sin(th)
+    P = special.eval_jacobi(np.arange(modes)[:, None], 0.0, -0.5, np.cos(2 * th)[None, :])
+    for a in (th, w, xq, P):
+        a.setflags(write=False)
+    return th, w, xq, P
 
 
 # --------------------------------------------------------------------------- the pressure and its displacement
