@@ -20,6 +20,28 @@ on the sphere (bonded nu = 0.3, n = 128/64; tests/adhesion/test_elliptic_referen
 overstates the radius's remainder about 25 times on the sphere: a third lambda (4 or 5, on a finer grid) would
 tighten it (not done).  Cost: 0.5-3 min of CPU per state at n = 128-320.
 
+(D.13) *The extrapolation's remainder, measured on the axisymmetric analog.*  The step is no bound near pull-off on a
+thin layer: there the Dugdale stress ``sigma0`` at lambda = 2, 3 is below the tension the JKR edge carries on the
+layer, ``sqrt(2 vartheta w/(A H))`` (J.26), the Maugis-Dugdale states are DMT-like (a wide zone, a small contact) and
+``lambda^-2`` is not yet their law.  Measured with the exact-kernel solvers on the paraboloid of the mean radius
+``R = sqrt(R1 R2)`` at the acceptance cells' depths (Richardson minus the JKR direct solver (J.1)-(J.5), relative;
+in brackets the step)::
+
+    layer, H, w, delta             lambda = 2, 3: radius     force              lambda = 6, 8: radius   force
+    bonded 0.3, 0.04, 0.02, -0.0076     -14.0 % (17.5 %)   +1.7 % (0.10 %)        +0.52 %          -0.017 %
+    frictionless, 0.04, 0.02, -0.0113    -7.6 % (21 %)     +1.9 % (0.30 %)        +0.37 %          -0.013 %
+    bonded 0.3, 0.05, 0.02, 0.0044 (R=2) -11.2 % (9.9 %)   +1.4 % (0.09 %)        +0.39 %          -0.010 %
+    bonded 0.3, 0.04, 0.005, 0.0108      -0.8 % (7.4 %)    +1.3 % (0.66 %)   (4, 5): +0.6 %         +0.04 %
+
+so the step understates the force's remainder up to 16 times and (R = 2) the radius's.  Hence the analog: the same
+Richardson on the axisymmetric Maugis-Dugdale solver (D.3)-(D.9) (no grid) against the JKR direct solver at the same
+depth, both on ``r^2/(2R)`` (:func:`axisymmetric_analog`, 3-8 s of CPU); twice its relative remainder, carried to
+this punch (the force relative to ``max(|P|, pi w R)``, each semi-axis relative to itself: on a thin layer the edge's
+Maugis-Dugdale error is local, the same along the contour), bounds the extrapolation's part of the estimate when it
+exceeds the step.  For the sphere it is the remainder itself.  On thin layers the cells choose lambdas whose
+``sigma0`` exceeds that edge tension (about 1.2 times: lambda = 4, 5 at w = 0.005 and 6, 7 at w = 0.02 above), on
+grids that resolve the zone (two cells or more at the larger lambda).
+
 The contact semi-axes are read off the sub-cell contour (:class:`~thinlayer.numerics.fft2d.Contact2D`) where it
 crosses the axes ``x2 = 0`` and ``x1 = 0`` (a punch symmetric about both axes, apex at the origin).
 """
