@@ -12,11 +12,13 @@ contact radius's ``lambda^2 (c_MD - c_JKR)`` by 3 % from lambda = 2 to 5).  Rich
 The zone must be resolved by the grid (a cell is far wider than the zone at lambda = 10 on affordable grids), so the
 lambdas stay small (default 2 and 3), and the extrapolation's remainder is not small: its estimate is the
 extrapolation step ``|X_JKR - X(l2)|`` (measured on the sphere with the axisymmetric solver at lambda = 2, 3: the true
-remainder is 0.17-0.31 of it for the force, 0.04 for the radius), plus the grid's: the change from ``n/2`` to ``n``
-cells at each lambda, carried through the Richardson weights.  Checked against the axisymmetric JKR solver (J.1)-(J.5)
-on the sphere (bonded nu = 0.3, n = 128/64; tests/adhesion/test_elliptic_reference.py, SLOW): H/R = 0.1, force off by
-2.3e-4 (estimate 1.1e-3, 2 % of the force), radius 6e-4 (estimate 0.02); H/R = 1, force 4.9e-3 (estimate 1.3e-2,
-11 %), radius 2.5e-3 (estimate 0.021).  The semi-axes' estimate is dominated by the extrapolation step, which
+remainder is 0.17-0.31 of it for the force, 0.04 for the radius, away from pull-off: see (D.13)), plus the grid's: the
+change of the extrapolated value from ``m = coarse n`` to ``n`` cells times ``m/(n - m)`` (first-order convergence;
+until 2026-11-26 the changes at each lambda carried through the Richardson weights, which add what the extrapolation
+cancels).  Checked against the axisymmetric JKR solver (J.1)-(J.5) on the sphere (bonded nu = 0.3, n = 128/64, with
+(D.13); tests/adhesion/test_elliptic_reference.py, SLOW): H/R = 0.1, force off by 2.3e-4 (estimate 6.6e-4, 1.2 % of
+the force; the analog's own remainder is 1.7e-4), radius 6e-4 (estimate 0.020); H/R = 1, force 4.9e-3 (estimate
+1.3e-2, 11 %), radius 2.5e-3 (estimate 0.021).  The semi-axes' estimate is dominated by the extrapolation step, which
 overstates the radius's remainder about 25 times on the sphere: a third lambda (4 or 5, on a finer grid) would
 tighten it (not done).  Cost: 0.5-3 min of CPU per state at n = 128-320.
 
@@ -77,7 +79,8 @@ class JKRLimit2D(RichDisplay):
         Depth, force (negative: pulled) and contact semi-axes along ``x1``, ``x2`` (Richardson in ``lambda^-2``).
     force_error, a1_error, a2_error : float
         float
-        Absolute estimates: extrapolation step plus the grid's change (module docstring).
+        Absolute estimates: the extrapolation's (the step, or twice the analog's remainder (D.13)) plus the grid's
+        (the extrapolated value's change under refinement).
     lambdas : tuple of float
         Maugis's lambdas used (of the apex's mean radius of curvature).
     rows : tuple of dict
@@ -181,7 +184,8 @@ def axisymmetric_analog(layer: LayerKernel, R: float, delta0: float, H: float | 
 
 def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None = None, mu: float = 1.0, *,
                  w: float, extent: float, n: int = 128, lambdas: tuple = (2.0, 3.0), nu: float | None = None,
-                 refine: bool = True, analog: bool = True, max_iterations: int = 200) -> JKRLimit2D:
+                 refine: bool = True, analog: bool = True, max_iterations: int = 200,
+                 coarse: float = 0.5) -> JKRLimit2D:
     """JKR at the depth ``delta0`` as the large-lambda limit of :func:`maugis_dugdale_2d` (D.12).
 
     Parameters
@@ -196,17 +200,22 @@ def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None 
     extent : float
         Half-width of the square: it must hold the cohesive zone at the smallest lambda.
     n : int
-        Cells per side of the finest grid (even; the grid estimate also solves on ``n/2``).
+        Cells per side of the finest grid (the grid estimate also solves on ``round(coarse n)``).
     lambdas : tuple of float
         Two Maugis lambdas (of the mean apex curvature), increasing.
     refine : bool
-        Also solve on ``n/2`` cells for the grid's part of the estimate (otherwise it is left out: say so).
+        Also solve on ``m = round(coarse n)`` cells for the grid's part of the estimate (otherwise it is left out:
+        say so): the change of the extrapolated value from ``m`` to ``n`` cells times ``m/(n - m)`` (the error at
+        ``n`` for first-order convergence in the cell size; the errors at the two lambdas are correlated, and the
+        extrapolated value cancels most of them).
     analog : bool
         Measure the extrapolation's remainder on the axisymmetric analog (D.13) and let twice it (carried to this
         punch) bound the extrapolation's part of the estimate when it exceeds the step.  Without it the estimate is
         the step alone, measured to be untrue near pull-off on thin layers (module docstring).
     max_iterations : int
         Of the fixed point on the zone in each grid solve (:func:`maugis_dugdale_2d`).
+    coarse : float
+        The coarser grid's fraction of ``n`` (0.5: ``n/2``; 0.75 keeps a narrow zone resolved on the coarse grid).
 
     Returns
     -------
@@ -220,7 +229,10 @@ def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None 
         raise InputError(f"lambdas must be two positive numbers, increasing, got {lambdas!r:.60}") from None
     if not l1 < l2:
         raise InputError(f"lambdas must increase, got {lambdas!r}")
-    grids = (n, n // 2) if refine else (n,)
+    if not 0.2 <= coarse <= 0.9:
+        raise InputError(f"coarse must be a fraction of n in [0.2, 0.9], got {coarse!r:.30}")
+    m_c = max(8, round(coarse * n))
+    grids = (n, m_c) if refine else (n,)
     rows, vals = [], {}
     vt = positive(mu, "mu") / (1.0 - numeric_layer_nu(layer, nu))
     lam_h0 = maugis_lambda(mean_radius(punch), 2.0 * vt, wv, 1.0)  # lambda is proportional to 1/h0 (D.8)
@@ -251,7 +263,7 @@ def jkr_limit_2d(layer: LayerKernel, punch: Any, delta0: float, H: float | None 
             err[key] = max(err[key], 2.0 * rel_c * out[key])
     if refine:
         for key in ("force", "a1", "a2"):
-            err[key] += wt2 * abs(vals[(l2, n)][key] - vals[(l2, n // 2)][key]) \
-                + wt1 * abs(vals[(l1, n)][key] - vals[(l1, n // 2)][key])
+            rich_c = wt2 * vals[(l2, m_c)][key] - wt1 * vals[(l1, m_c)][key]
+            err[key] += abs(out[key] - rich_c) * m_c / (n - m_c)
     return JKRLimit2D(float(delta0), out["force"], out["a1"], out["a2"], err["force"], err["a1"], err["a2"],
                       (l1, l2), tuple(rows), found)
