@@ -36,19 +36,19 @@ slow = pytest.mark.skipif(not SLOW, reason="long validation run: THINLAYER_SLOW=
 MU = 0.35  # vartheta = 1/2 at nu = 0.3
 LAYERS = {"bonded 0.3": (BondedLayer(0.3), None), "frictionless": (FrictionlessLayer(), 0.3),
           "bonded 0.5": (IncompressibleLayer(), None)}
-#: (kind, layer, R2/R1, H, w, delta0, extent, n, lambdas)
+#: (kind, layer, R2/R1, H, w, delta0, extent, n, lambdas[, coarse grid fraction])
 CELLS = [
     ("law", "bonded 0.3", 2.0, 0.04, 0.005, 0.0108, 0.4, 256, (4.0, 5.0)),
-    ("law", "bonded 0.3", 2.0, 0.04, 0.02, -0.0076, 0.4, 256, (6.0, 7.0)),
+    ("law", "bonded 0.3", 2.0, 0.04, 0.02, -0.0076, 0.4, 256, (6.0, 7.0), 0.75),
     ("law", "frictionless", 2.0, 0.04, 0.005, 0.0087, 0.4, 256, (4.0, 5.0)),
-    ("law", "frictionless", 2.0, 0.04, 0.02, -0.0113, 0.4, 256, (6.0, 7.0)),
+    ("law", "frictionless", 2.0, 0.04, 0.02, -0.0113, 0.4, 256, (6.0, 7.0), 0.75),
     ("law", "bonded 0.3", 4.0, 0.05, 0.005, 0.0246, 0.68, 384, (4.0, 5.0)),
     ("half-space", "bonded 0.3", 2.0, 10.0, 0.05, 0.1, 1.3, 128, (2.0, 3.0)),
     ("law", "frictionless", 4.0, 0.05, 0.005, 0.0226, 0.68, 384, (4.0, 5.0)),
     ("direct", "bonded 0.5", 2.0, 0.04, 0.005, 0.02, 0.5, 256, (2.0, 3.0)),
-    ("law", "bonded 0.3", 4.0, 0.05, 0.02, 0.0044, 0.7, 384, (6.0, 7.0)),
+    ("law", "bonded 0.3", 4.0, 0.05, 0.02, 0.0044, 0.7, 384, (6.0, 7.0), 0.75),
     ("half-space", "bonded 0.3", 4.0, 10.0, 0.05, 0.1, 1.8, 160, (2.0, 3.0)),
-    ("law", "frictionless", 4.0, 0.05, 0.02, 0.0003, 0.7, 384, (6.0, 7.0)),
+    ("law", "frictionless", 4.0, 0.05, 0.02, 0.0003, 0.7, 384, (6.0, 7.0), 0.75),
     ("front door", "bonded 0.3", 2.0, 0.2, 0.05, 0.05, 0.0, 0, (2.0, 3.0)),
     ("front door", "bonded 0.3", 2.0, 1.0, 0.05, 0.1, 0.0, 0, (2.0, 3.0)),
 ]
@@ -56,7 +56,7 @@ KEYS = (("force", "force_error"), ("a1", "a1_error"), ("a2", "a2_error"))
 
 
 @lru_cache(maxsize=None)
-def reference(kind, name, R2, H, w, delta0, extent, n, lambdas=(2.0, 3.0)):
+def reference(kind, name, R2, H, w, delta0, extent, n, lambdas=(2.0, 3.0), coarse=0.5):
     """The 2D JKR reference (D.12), (D.13) of a cell (for ``front door`` cells: solve()'s answer)."""
     layer, nu = LAYERS[name]
     punch = Punch.elliptic_paraboloid(R1=1, R2=R2)
@@ -64,12 +64,12 @@ def reference(kind, name, R2, H, w, delta0, extent, n, lambdas=(2.0, 3.0)):
         return thinlayer.solve(layer if nu is None else layer.with_nu(nu), punch, delta0=delta0, H=H, mu=MU,
                                work_of_adhesion=w)
     return jkr_limit_2d(layer, punch, delta0, H, MU, w=w, extent=extent, n=n, nu=nu, lambdas=lambdas,
-                        max_iterations=600)
+                        max_iterations=600, coarse=coarse)
 
 
-def cell_rows(kind, name, R2, H, w, delta0, extent, n, lambdas=(2.0, 3.0)):
+def cell_rows(kind, name, R2, H, w, delta0, extent, n, lambdas=(2.0, 3.0), coarse=0.5):
     layer, nu = LAYERS[name]
-    ref = reference(kind, name, R2, H, w, delta0, extent, n, lambdas)
+    ref = reference(kind, name, R2, H, w, delta0, extent, n, lambdas, coarse)
     others = []
     if kind == "law":
         for order in (1, 0):
