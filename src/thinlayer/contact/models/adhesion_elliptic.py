@@ -90,13 +90,13 @@ class _EllipticAdhesive(Model):
                                                                       if self.asymptotic else "")])
 
 
-def _estimates(s: Any, wv: float, R: float, dP_dd: float, load: bool) -> dict:
+def _estimates(s: Any, wv: float, R: float, dP_dd: float, dc_dd: float, load: bool) -> dict:
     """Relative estimates ``{"force", "depth", "contact_radius"}`` of a law state (J.29), under either control."""
     c = math.sqrt(s.a1 * s.a2)
     ec = 0.5 * c * (s.a1_error / s.a1 + s.a2_error / s.a2)  # the equal-area radius sqrt(a1 a2)
-    if load:  # the force is given: its error moves the depth by eP/|dP/d delta|
+    if load:  # the force is given: its error moves the depth by eP/|dP/d delta|, and the contact with it
         ed = s.force_error / abs(dP_dd) if dP_dd != 0 else math.inf
-        return relative_estimates(0.0, ed, ec, s.force, s.delta, c, math.pi * wv * R, c * c / R)
+        return relative_estimates(0.0, ed, ec + abs(dc_dd) * ed, s.force, s.delta, c, math.pi * wv * R, c * c / R)
     return relative_estimates(s.force_error, 0.0, ec, s.force, s.delta, c, math.pi * wv * R, c * c / R)
 
 
@@ -141,11 +141,12 @@ class EllipticJKRModel(_EllipticAdhesive):
         R = math.sqrt(R1 * R2)
         step = 1e-6 * max(abs(s.delta), s.level)
         try:
-            dP_dd = (law.state(s.delta + step, H, R1, R2, wv, mu).force
-                     - law.state(s.delta - step, H, R1, R2, wv, mu).force) / (2 * step)
+            hi, lo = (law.state(s.delta + sg * step, H, R1, R2, wv, mu) for sg in (1, -1))
+            dP_dd = (hi.force - lo.force) / (2 * step)
+            dc_dd = (math.sqrt(hi.a1 * hi.a2) - math.sqrt(lo.a1 * lo.a2)) / (2 * step)
         except InputError:
-            dP_dd = 0.0  # at the edge of the law's range: the depth at a given force is not determined
-        est = _estimates(s, wv, R, dP_dd, problem.force is not None)
+            dP_dd, dc_dd = 0.0, 0.0  # at the edge of the law's range: the depth at a given force is not determined
+        est = _estimates(s, wv, R, dP_dd, dc_dd, problem.force is not None)
 
         def pull_off() -> PullOff:
             try:
