@@ -12,8 +12,8 @@ Kinds of cell (R1 = 1, mu = 0.35):
 * ``front door``: intermediate thickness (H/R1 = 0.2 and 1): what ``thinlayer.solve(..., work_of_adhesion=w)``
   answers (the 2D reference, its estimate), and the law, flagged outside its validity, beside it.
 
-Measured (2026-11-26, diff/allowed, force / a1 / a2; "old grid est." rows ran with the grid estimate of the previous
-formula, the changes at each lambda through the Richardson weights, looser than the present one):
+Measured (2026-11-26, diff/allowed, force / a1 / a2; every "now" row with the present estimates; "before" is the
+previous stop's table, lambda = 2, 3, the step-only extrapolation estimate, the law at order 0):
 
     cell (R2/R1, H, w, delta; lambdas, n)        before (law0, lambda 2,3)  law1 now          law0 now
     bonded 0.3,   2, 0.04, 0.005, 0.0108; 4,5 256   0.30/0.30/0.15     0.25/0.00/0.02      0.32/0.23/0.23
@@ -22,11 +22,10 @@ formula, the changes at each lambda through the Richardson weights, looser than 
     frictionless, 4, 0.05, 0.005, 0.0226; 4,5 384   0.17/0.47/0.10     0.05/0.12/0.06      0.14/0.33/0.30
     bonded 0.3,   2, 0.04, 0.02, -0.0076; 6,7 256   0.03/0.67/0.71     0.15/0.40/0.29      0.21/0.44/0.41
     frictionless, 2, 0.04, 0.02, -0.0113; 6,7 256   0.10/0.37/0.38     0.62/0.70/0.39      0.48/0.59/0.51
-    bonded 0.3,   4, 0.05, 0.02, 0.0044;  6,7 384   0.03/0.78/0.90     0.15/0.16/0.02 (*)  0.17/0.23/0.15 (*)
+    bonded 0.3,   4, 0.05, 0.02, 0.0044;  6,7 384   0.03/0.78/0.90     0.21/0.32/0.04      0.22/0.38/0.22
     frictionless, 4, 0.05, 0.02, 0.0003;  6,7 384   0.08/0.47/0.54     0.22/0.48/0.11      0.23/0.48/0.33
     half-space vs H = 10, 2, w = 0.05, delta = 0.1   0.22/0.27/0.27     0.24/0.27/0.29
     half-space vs H = 10, 4                          0.61/0.03/0.25     0.73/0.04/0.24
-    (*) old grid est.
 
 Away from pull-off (w = 0.005) order 1 and the reference agree in the semi-axes to 0.02-0.8 % (order 0: 2-3.5 % high),
 well inside the law's own estimate.  Near pull-off (w = 0.02) the law (order 1) lies above the reference by 2.5-4.6 % in
