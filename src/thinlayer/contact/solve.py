@@ -98,10 +98,12 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     n : int, optional
         Modes (axisymmetric) or cells per side (2D) of the direct solver.
     work_of_adhesion : Any, optional
-        ``w >= 0``: JKR adhesion (:mod:`thinlayer.contact.adhesion`); the paraboloid of revolution or the flat
-        punch; ``delta0`` and ``force`` may then be negative (force: compressive positive).  The answer is an
+        ``w >= 0``: JKR adhesion (:mod:`thinlayer.contact.adhesion`); the paraboloid of revolution, the flat
+        punch or the elliptic paraboloid (:mod:`thinlayer.contact.models.adhesion_elliptic`); ``delta0`` and ``force``
+        may then be negative (force: compressive positive).  The answer is an
         :class:`~thinlayer.contact.adhesion.AdhesiveIndentation` (``force`` a magnitude, ``tensile``, ``branch``,
-        ``pull_off``); models ``"thin-layer-jkr"`` (J.11)/(J.15) and ``"direct"`` (J.1)-(J.6), (J.13).
+        ``pull_off``); models ``"thin-layer-jkr"`` (J.11)/(J.15), (J.30)/(J.31) and ``"direct"`` (J.1)-(J.6), (J.13),
+        (D.12).
     branch : str
         With adhesion: ``"stable"`` (default) or ``"unstable"`` state of the JKR curve.
     material, history, control

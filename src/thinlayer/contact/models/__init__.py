@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from . import (  # noqa: F401,E501 - they register
     adhesion,
+    adhesion_elliptic,
     any_thickness,
     compressible,
     direct,
