@@ -20,7 +20,26 @@ from thinlayer.numerics.adhesion import adhesive_state
 
 pytestmark = pytest.mark.xdist_group("adhesion-laws")
 
-LAW = elliptic_jkr(BondedLayer(0.3))
+class _LazyLaw:
+    """``elliptic_jkr(BondedLayer(0.3), **kwargs)``, built on first use: not at collection, where every xdist worker
+    would build it (~2 s), also the one that runs none of these tests."""
+
+    def __init__(self, **kwargs):
+        self._kwargs, self._law = kwargs, None
+
+    def _get(self):
+        if self._law is None:
+            self._law = elliptic_jkr(BondedLayer(0.3), **self._kwargs)
+        return self._law
+
+    def __getattr__(self, name):
+        return getattr(self._get(), name)
+
+    def __str__(self):
+        return str(self._get())
+
+
+LAW = _LazyLaw()
 
 
 def test_derived_law_symbolic_ladder():
@@ -98,7 +117,7 @@ def test_refusals_and_flags():
     assert np.isfinite(thick.force_error)
 
 
-LAW1 = elliptic_jkr(BondedLayer(0.3), order=1)
+LAW1 = _LazyLaw(order=1)
 
 
 def test_first_order_disc_is_J11_order_1():
