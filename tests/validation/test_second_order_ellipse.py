@@ -26,8 +26,8 @@ of the area 2e-5 .. 4e-5 |omega_0|, larger at nu = 0.45 for eps < 0.05):
   the three finest grids); with a fifth point at eps = 0.0125 (three grids) 4.10-4.17.
 
 Default run (~8 s, n = 768): nu = 0.3 at eps = 0.3, 0.2 (the law's nu-dependence is checked in the default run on the
-sphere, tests/asymptotics/test_second_order.py).  ``THINLAYER_SLOW=1`` adds nu = 0.45 at eps = 0.05, 0.035 (two grids, ~23 s
-of CPU) and the eps sequences above with two grids each (Richardson), a few minutes.
+sphere, tests/asymptotics/test_second_order.py).  ``THINLAYER_SLOW=1`` adds nu = 0.45 at eps = 0.05, 0.035 (two
+grids, ~23 s of CPU) and the eps sequences above with two grids each (Richardson), a few minutes.
 """
 from __future__ import annotations
 
