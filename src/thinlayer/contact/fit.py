@@ -29,6 +29,7 @@ solution, ``cov = s^2 (J^T J)^{-1}`` with ``s^2 = sum r^2/(n - p)`` (residuals i
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import numbers
 import warnings
@@ -41,7 +42,7 @@ from .._checks import InputError, InputTypeError, check_array_size, check_choice
 from ..display import RichDisplay
 from ..errors import ComputationError, ValidityWarning, boundary, boundary_methods
 from .any_thickness import BASES, any_thickness_law
-from .guards import half_space, oriented_depths, regime_flags
+from .guards import half_space, oriented_depths, regime_flags, substrate_flags
 from .models import MODEL_REGISTRY, fit_names
 from .models.published import series_coefficients
 
@@ -351,7 +352,8 @@ def _tip(punch: Any) -> tuple[Any, float]:
 @boundary
 def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5, base: str = "bonded", *,
         fit_H: bool = False, fit_offset: bool = False, model: str | None = None, E0: float | None = None,
-        sigma: Any = None, depth_sign: int = 1, work_of_adhesion: Any = None) -> FitResult:
+        sigma: Any = None, depth_sign: int = 1, work_of_adhesion: Any = None, substrate_E: Any = None,
+        substrate_nu: Any = 0.0) -> FitResult:
     r"""Estimate Young's modulus (and optionally H and the contact point) from a force-indentation curve.
 
     Parameters
@@ -391,6 +393,11 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
         law (J.16) on a layer, the direct solver on the half-space); the answer is an
         :class:`~thinlayer.contact.adhesion_fit.AdhesiveFit` (``E``, ``E_error``, ``work_of_adhesion``,
         ``work_of_adhesion_error``).  The paraboloid only; ``fit_H``, ``fit_offset`` and ``sigma`` are not taken.
+    substrate_E, substrate_nu : float, optional
+        Young's modulus (units of E) and Poisson ratio (default 0: the largest estimate) of the substrate under the
+        layer: the laws take the base as rigid, and the result carries a flag when the substrate's compliance would
+        change the force by more than 1 % at the deepest point (first order, ``kappa(a/H) E*_layer/E*_substrate``
+        with the rigid overlap radius ``a``: :func:`thinlayer.contact.guards.substrate_flags`).
 
     Returns
     -------
@@ -416,6 +423,10 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
     if work_of_adhesion is not None:  # an adhesive curve (issue 26 item 5): E and w together
         from .adhesion_fit import fit_free_adhesion
 
+        if substrate_E is not None:
+            raise InputTypeError("fit(): substrate_E is checked for the non-adhesive fits only; leave it out with "
+                                 "work_of_adhesion=")
+
         check_choice(base, BASES, "base")
         extras = tuple(n for n, v in (("fit_H", fit_H), ("fit_offset", fit_offset), ("sigma", sigma is not None)) if v)
         return fit_free_adhesion(delta, force, _tip(punch)[0] if punch is not None else None, H, _nu(nu), base,
@@ -429,6 +440,14 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
             or math.isnan(res.H):
         raise ComputationError(f"fit(): the fitted numbers are not finite (E = {res.E!r}, E_se = {res.E_se!r}): the "
                                "data's numbers leave the double range; express depths and forces in other units")
+    if substrate_E is not None:  # the rigid overlap radius at the deepest point: sqrt(2 R delta) for the paraboloid
+        from ..layers.kernels import BondedLayer, FrictionlessLayer
+
+        layer = FrictionlessLayer(res.nu) if res.base == "frictionless" else BondedLayer(res.nu)
+        a_over_H = res.chi_max if math.isnan(res.R) else math.sqrt(2.0) * res.chi_max
+        extra = substrate_flags(layer, a_over_H, res.E, substrate_E, substrate_nu)
+        if extra:
+            res = dataclasses.replace(res, flags=res.flags + extra)
     if res.valid is False:
         warnings.warn(f"fit(): E = {res.E:.4g} is NOT VALID: {res.validity}", ValidityWarning, stacklevel=3)
     return res

@@ -46,7 +46,7 @@ from ..asymptotics.solution import DEFAULT_TOL, numeric_punch
 from ..errors import boundary
 from ..layers.kernels import LayerKernel
 from ..punch import Tip, is_polynomial_tip
-from .guards import half_space, regime_flags
+from .guards import half_space, regime_flags, substrate_flags
 from .indentation import DirectComparison, Indentation
 from .indentation import tex_num as _tex_num  # noqa: F401 - the name tests and older callers import from here
 from .models import MODEL_REGISTRY, model_names, walk
@@ -67,7 +67,7 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
           force: Any = None, nu: Any = None, model: str = "auto", tol: Any = DEFAULT_TOL,
           parameters: dict | None = None, n: int | None = None, work_of_adhesion: Any = None,
           branch: str = "stable", material: Any = None, history: Any = None, control: str = "depth",
-          **options: Any) -> Indentation:
+          substrate_E: Any = None, substrate_nu: Any = 0.0, **options: Any) -> Indentation:
     r"""Force, contact size and pressure of a rigid punch pressed into a layer, by the model that holds.
 
     Parameters
@@ -114,6 +114,11 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
         :class:`~thinlayer.contact.hereditary.ViscoelasticForce` (force, depth and contact radius against time,
         ``valid`` and ``reason``) from the registry's viscoelastic row (:mod:`thinlayer.contact.models.viscoelastic`);
         ``model`` then names the elastic law at unit modulus (``"auto"``: the first valid over the history).
+    substrate_E, substrate_nu : float, optional
+        Young's modulus (same units as ``E``) and Poisson ratio (default 0: the largest estimate) of the substrate
+        under the layer: every law takes the base as rigid, and the answer carries a flag when the substrate's
+        compliance would change the force by more than 1 % (first order, ``kappa(a/H) E*_layer/E*_substrate``:
+        :func:`thinlayer.contact.guards.substrate_flags`).
     options
         For the compressible model: ``order``, ``terms``, ``boundary_layer``
         (:func:`thinlayer.asymptotics.solution.compressible_solution`).
@@ -154,6 +159,9 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     True
     """
     layer, nu_v = _check_model_layer(layer, nu)
+    if substrate_E is not None and (material is not None or history is not None or work_of_adhesion is not None):
+        raise InputTypeError("solve(): substrate_E is checked for the elastic, non-adhesive answers only; leave it "
+                             "out with material=/history= or work_of_adhesion=")
     if material is not None or history is not None:
         given = [k for k, v in (("delta0", delta0), ("force", force), ("mu", mu), ("E", E),
                                 ("work_of_adhesion", work_of_adhesion), ("n", n)) if v is not None]
@@ -203,6 +211,9 @@ def solve(layer: LayerKernel, punch: Any, delta0: Any = None, H: Any = None, mu:
     else:
         ans = walk(Problem(layer, tip, material, Frictionless(), loading, HH, tol_v, n, dict(options)), choice)
     flags = regime_flags(ans.delta0, HH, getattr(tip, "sphere_radius", None))
+    if substrate_E is not None:  # a: the contact radius, or the equal-area radius of a contact that is not a disc
+        a = ans.contact_radius if ans.contact_radius is not None else math.sqrt(ans.contact_area / math.pi)
+        flags += substrate_flags(layer, a / HH if math.isfinite(HH) else 0.0, material.E, substrate_E, substrate_nu)
     return dataclasses.replace(ans, flags=flags) if flags else ans
 
 

@@ -147,6 +147,10 @@ def add_fit_parser(subparsers: Any, formatter_class: type) -> argparse.ArgumentP
                    help="1 (default): the depth column is positive into the sample; -1: it is a tip position "
                         "(nanite, afmformats: negative into the sample), flipped")
     s.add_argument("--nu", type=finite, required=True, help="Poisson ratio in (-1, 1/2]")
+    s.add_argument("--substrate-E", type=finite, default=None, metavar="E_S",
+                   help="Young's modulus of the substrate (units of E): a FLAG when its compliance would change the "
+                        "force by more than 1 %% (the laws take the base as rigid)")
+    s.add_argument("--substrate-nu", type=finite, default=0.0, help="the substrate's Poisson ratio (default 0)")
     s.add_argument("--base", choices=("bonded", "frictionless"), default="bonded",
                    help="the base under the layer (default bonded)")
     s.add_argument("--model", choices=FIT_MODEL_CHOICES, default=None,
@@ -266,7 +270,8 @@ def cmd_fit(args: argparse.Namespace) -> int:
     with warnings.catch_warnings():  # a fit outside its model's range: the output says NOT VALID and why
         warnings.simplefilter("ignore", ValidityWarning)
         res = fit(delta, force, punch=punch, H=args.H, nu=args.nu, base=args.base, fit_H=args.fit_H,
-                  fit_offset=args.fit_offset, model=args.model, depth_sign=args.depth_sign)
+                  fit_offset=args.fit_offset, model=args.model, depth_sign=args.depth_sign,
+                  substrate_E=args.substrate_E, substrate_nu=args.substrate_nu)
     out = {"file": str(args.csv), **res.as_dict()}
     bad = [k for k, v in out.items() if isinstance(v, float) and not math.isfinite(v)]
     if bad:
@@ -300,6 +305,9 @@ def _cmd_fit_curve(args: argparse.Namespace, punch: Any, path: Path) -> int:
     if args.bootstrap is not None and args.bootstrap < 0:
         raise InputError(f"--bootstrap must be a number of refits >= 0, got {args.bootstrap}")
     if _is_instrument(path):
+        if args.substrate_E is not None:
+            raise InputError("--substrate-E is checked for a CSV's fit (thinlayer.fit); an instrument file's fit "
+                             "(thinlayer.fit_curve) does not take it yet")
         for opt, bad in (("--columns", args.columns != "0,1"), ("--depth-sign", args.depth_sign != 1),
                          ("--fit-offset", args.fit_offset)):
             if bad:

@@ -396,6 +396,10 @@ def add_solve_parser(sub: Any, fmt: type) -> argparse.ArgumentParser:
                    help="layer thickness (> 0), or a sweep START:STOP:COUNT or A,B,C; inf: the half-space (Hertz)")
     s.add_argument("--mu", type=_finite, default=None, help="shear modulus (> 0); or give --E")
     s.add_argument("--E", type=_finite, default=None, help="Young's modulus (> 0); or give --mu")
+    s.add_argument("--substrate-E", type=_finite, default=None, metavar="E_S",
+                   help="Young's modulus of the substrate (units of E): a FLAG when its compliance would change the "
+                        "force by more than 1 %% (the laws take the base as rigid)")
+    s.add_argument("--substrate-nu", type=_finite, default=0.0, help="the substrate's Poisson ratio (default 0)")
     s.add_argument("--delta0", type=parse_values, help="indentation (> 0), or a sweep START:STOP:COUNT or A,B,C")
     s.add_argument("--force", type=parse_values,
                    help="total force P instead of --delta0 (inverse problem), or a sweep")
@@ -500,7 +504,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
             kw[swept] = value
         try:
             ans = solve(layer, punch, delta0=kw["delta0"], force=kw["force"], H=kw["H"], mu=args.mu, E=args.E,
-                        model=args.model, tol=args.tol, parameters=kind_params, **opts)
+                        model=args.model, tol=args.tol, parameters=kind_params, substrate_E=args.substrate_E,
+                        substrate_nu=args.substrate_nu, **opts)
             for name in ("force", "contact_area", "delta0"):
                 val = getattr(ans, name)
                 if not (math.isfinite(val) and val > 0):
