@@ -187,8 +187,9 @@ def test_substrate_flag_in_solve_fit_and_the_cli(tmp_path, capsys):
     path.write_text("depth,force\n" + "".join(f"{float(a)!r},{float(b)!r}\n" for a, b in zip(d, P)))
     assert main(["fit", str(path), "--R", "10", "--nu", "0.5", "--H", "0.3", "--substrate-E", "2e4"]) == 0
     assert "FLAG: substrate" in capsys.readouterr().out
-    # an instrument file's fit (thinlayer.fit_curve) does not take it yet: refused in one line, never ignored
-    assert main(["fit", str(DATA / "fmt-jpk-fd_spot3-0192.jpk-force"), "--R", "10", "--nu", "0.5",
-                 "--substrate-E", "1e4"]) == 2
-    err = capsys.readouterr().err
-    assert "--substrate-E is checked for a CSV's fit" in err and len(err.strip().splitlines()) == 1
+    # an instrument file (thinlayer.fit_curve): the real JPK curve (E ~ 15 kPa, 0.24 um deep) on a 1 um layer
+    jpk = str(DATA / "fmt-jpk-fd_spot3-0192.jpk-force")
+    assert main(["fit", jpk, "--R", "10e-6", "--nu", "0.5", "--H", "1e-6", "--substrate-E", "2e5"]) == 0
+    assert "FLAG: substrate" in capsys.readouterr().out
+    assert main(["fit", jpk, "--R", "10e-6", "--nu", "0.5", "--H", "1e-6", "--substrate-E", "7e10"]) == 0
+    assert "FLAG: substrate" not in capsys.readouterr().out

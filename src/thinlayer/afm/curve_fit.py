@@ -302,7 +302,8 @@ def fit_curve(curve: Curve, punch: Any = None, H: Any = None, nu: Any = 0.5, bas
               model: str | None = None, fit_H: bool = False, baseline: str = "offset", contact_point: Any = None,
               weighting: str | None = None, weight_cp: float = 1e-6, fit_range: Any = None,
               range_kind: str = "position", bootstrap: int = 0, seed: int = 0,
-              bootstrap_method: str = "sieve", solver: str = "lm") -> CurveFit:
+              bootstrap_method: str = "sieve", solver: str = "lm", substrate_E: Any = None,
+              substrate_nu: Any = 0.0) -> CurveFit:
     r"""Fit E (and H), the contact point and the baseline to a measured force curve (module docstring).
 
     Parameters
@@ -335,6 +336,9 @@ def fit_curve(curve: Curve, punch: Any = None, H: Any = None, nu: Any = 0.5, bas
         ``"lm"`` (default, the reference) or ``"varpro"`` (the same least-squares problem solved by variable
         projection over the contact point, module docstring; used for the contact point free or fixed, no weighting,
         ``fit_H=False`` and a position range, else ``"lm"``).
+    substrate_E, substrate_nu : float, optional
+        The substrate's Young's modulus (units of E) and Poisson ratio (default 0): a flag when its compliance would
+        change the force by more than 1 % (as :func:`thinlayer.fit`; :func:`thinlayer.contact.guards.substrate_flags`).
 
     Returns
     -------
@@ -399,7 +403,7 @@ def fit_curve(curve: Curve, punch: Any = None, H: Any = None, nu: Any = 0.5, bas
         if fast is not None:
             res = _result(curve, x, f, fast, H0, xc0, rng_, range_kind, baseline, int(bootstrap), int(seed), boot_kind,
                           **opts)
-            return _checked(res)
+            return _checked(res, substrate_E, substrate_nu)
         start = _initial(x, f, H0, xc0, **opts)
         if rng_ is not None and range_kind == "indentation":
             for _ in range(6):  # the window follows the contact point
@@ -416,14 +420,26 @@ def fit_curve(curve: Curve, punch: Any = None, H: Any = None, nu: Any = 0.5, bas
         sol = _solve(x, f, start, H0, xc0, **opts)
         res = _result(curve, x, f, sol, H0, xc0, rng_, range_kind, baseline, int(bootstrap), int(seed), boot_kind,
                       **opts)
-    return _checked(res)
+    return _checked(res, substrate_E, substrate_nu)
 
 
-def _checked(res: CurveFit) -> CurveFit:
+def _checked(res: CurveFit, substrate_E: Any = None, substrate_nu: Any = 0.0) -> CurveFit:
     vals = (res.E, res.E_se, res.z0, res.b0, res.residual_rms)
     if not all(math.isfinite(v) for v in vals):
         raise ComputationError(f"fit_curve(): the fitted numbers are not finite (E = {res.E!r}): the data's numbers "
                                "leave the double range")
+    if substrate_E is not None:  # as fit(): the rigid overlap radius sqrt(2 R delta_max) for the paraboloid
+        from dataclasses import replace
+
+        from ..contact.guards import substrate_flags
+        from ..layers.kernels import BondedLayer, FrictionlessLayer
+
+        layer = FrictionlessLayer(res.nu) if res.base == "frictionless" else BondedLayer(res.nu)
+        a_over_H = res.chi_max if math.isnan(res.R) else math.sqrt(2.0) * res.chi_max
+        extra = substrate_flags(layer, a_over_H if math.isfinite(a_over_H) else 0.0, res.E, substrate_E,
+                                substrate_nu)
+        if extra:
+            res = replace(res, flags=res.flags + extra)
     if not res.valid:
         warnings.warn(f"fit_curve(): E = {res.E:.4g} is NOT VALID: {res.validity}", ValidityWarning, stacklevel=4)
     return res

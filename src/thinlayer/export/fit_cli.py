@@ -305,9 +305,6 @@ def _cmd_fit_curve(args: argparse.Namespace, punch: Any, path: Path) -> int:
     if args.bootstrap is not None and args.bootstrap < 0:
         raise InputError(f"--bootstrap must be a number of refits >= 0, got {args.bootstrap}")
     if _is_instrument(path):
-        if args.substrate_E is not None:
-            raise InputError("--substrate-E is checked for a CSV's fit (thinlayer.fit); an instrument file's fit "
-                             "(thinlayer.fit_curve) does not take it yet")
         for opt, bad in (("--columns", args.columns != "0,1"), ("--depth-sign", args.depth_sign != 1),
                          ("--fit-offset", args.fit_offset)):
             if bad:
@@ -327,7 +324,8 @@ def _cmd_fit_curve(args: argparse.Namespace, punch: Any, path: Path) -> int:
                         weighting=None if args.weighting in (None, "none") else args.weighting,
                         weight_cp=1e-6 if args.weight_cp is None else args.weight_cp,
                         fit_range=None if args.fit_range is None else tuple(args.fit_range),
-                        range_kind=args.range_kind or "position", bootstrap=args.bootstrap or 0, seed=args.seed or 0)
+                        range_kind=args.range_kind or "position", bootstrap=args.bootstrap or 0, seed=args.seed or 0,
+                        substrate_E=args.substrate_E, substrate_nu=args.substrate_nu)
     out = {"file": str(args.csv), **res.as_dict()}
     if args.json:
         text = json.dumps(out, indent=2, allow_nan=False)
