@@ -428,16 +428,12 @@ def _checked(res: CurveFit, substrate_E: Any = None, substrate_nu: Any = 0.0) ->
     if not all(math.isfinite(v) for v in vals):
         raise ComputationError(f"fit_curve(): the fitted numbers are not finite (E = {res.E!r}): the data's numbers "
                                "leave the double range")
-    if substrate_E is not None:  # as fit(): the rigid overlap radius sqrt(2 R delta_max) for the paraboloid
+    if substrate_E is not None:  # as fit()
         from dataclasses import replace
 
-        from ..contact.guards import substrate_flags
-        from ..layers.kernels import BondedLayer, FrictionlessLayer
+        from ..contact.guards import fit_substrate_flags
 
-        layer = FrictionlessLayer(res.nu) if res.base == "frictionless" else BondedLayer(res.nu)
-        a_over_H = res.chi_max if math.isnan(res.R) else math.sqrt(2.0) * res.chi_max
-        extra = substrate_flags(layer, a_over_H if math.isfinite(a_over_H) else 0.0, res.E, substrate_E,
-                                substrate_nu)
+        extra = fit_substrate_flags(res.base, res.nu, res.R, res.chi_max, res.E, substrate_E, substrate_nu)
         if extra:
             res = replace(res, flags=res.flags + extra)
     if not res.valid:

@@ -42,7 +42,7 @@ from .._checks import InputError, InputTypeError, check_array_size, check_choice
 from ..display import RichDisplay
 from ..errors import ComputationError, ValidityWarning, boundary, boundary_methods
 from .any_thickness import BASES, any_thickness_law
-from .guards import half_space, oriented_depths, regime_flags, substrate_flags
+from .guards import fit_substrate_flags, half_space, oriented_depths, regime_flags
 from .models import MODEL_REGISTRY, fit_names
 from .models.published import series_coefficients
 
@@ -440,12 +440,8 @@ def fit(delta: Any, force: Any, punch: Any = None, H: Any = None, nu: Any = 0.5,
             or math.isnan(res.H):
         raise ComputationError(f"fit(): the fitted numbers are not finite (E = {res.E!r}, E_se = {res.E_se!r}): the "
                                "data's numbers leave the double range; express depths and forces in other units")
-    if substrate_E is not None:  # the rigid overlap radius at the deepest point: sqrt(2 R delta) for the paraboloid
-        from ..layers.kernels import BondedLayer, FrictionlessLayer
-
-        layer = FrictionlessLayer(res.nu) if res.base == "frictionless" else BondedLayer(res.nu)
-        a_over_H = res.chi_max if math.isnan(res.R) else math.sqrt(2.0) * res.chi_max
-        extra = substrate_flags(layer, a_over_H, res.E, substrate_E, substrate_nu)
+    if substrate_E is not None:
+        extra = fit_substrate_flags(res.base, res.nu, res.R, res.chi_max, res.E, substrate_E, substrate_nu)
         if extra:
             res = dataclasses.replace(res, flags=res.flags + extra)
     if res.valid is False:

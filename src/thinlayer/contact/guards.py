@@ -37,7 +37,7 @@ import numpy as np
 from .._checks import InputError
 
 __all__ = ["SIGN_CONVENTION", "SMALL_STRAIN", "SPHERE_RATIO", "SUBSTRATE_ERROR", "half_space", "oriented_depths",
-           "regime_flags", "substrate_estimate", "substrate_flags"]
+           "fit_substrate_flags", "regime_flags", "substrate_estimate", "substrate_flags"]
 
 #: the largest depth over thickness taken as small strain (module docstring)
 SMALL_STRAIN = 0.1
@@ -127,6 +127,19 @@ def substrate_flags(layer: Any, a_over_H: float, E_layer: float, substrate_E: An
     return (f"substrate E = {Es:.3g} vs layer E = {float(E_layer):.3g}: the base's compliance changes the force by "
             f"kappa(a/H = {a_over_H:.3g}) E*_layer/E*_substrate = {est:.2g} > {SUBSTRATE_ERROR:g} (first order); "
             f"the law takes the base as rigid",)
+
+
+def fit_substrate_flags(base: str, nu: float, R: float, chi_max: float, E: float, substrate_E: Any,
+                        substrate_nu: Any = 0.0) -> tuple[str, ...]:
+    """:func:`substrate_flags` of a fit (:func:`thinlayer.fit`, :func:`thinlayer.fit_curve`) at its deepest point: the
+    layer of its base and nu, ``a/H`` the rigid overlap radius ``sqrt(2 R delta_max)/H = sqrt(2) chi_max`` for the
+    paraboloid (``R`` a number), the fit's ``(c/H)_max`` for another tip (``R`` nan).
+    """
+    from ..layers.kernels import BondedLayer, FrictionlessLayer
+
+    layer = FrictionlessLayer(nu) if base == "frictionless" else BondedLayer(nu)
+    a_over_H = chi_max if math.isnan(R) else math.sqrt(2.0) * chi_max
+    return substrate_flags(layer, a_over_H if math.isfinite(a_over_H) else 0.0, E, substrate_E, substrate_nu)
 
 
 def _modulus(value: Any, name: str, poisson: bool = False) -> float:

@@ -216,11 +216,6 @@ class RadialLoad:
             edges.update(first * 4.0 ** -j for j in range(1, GRADING_LEVELS + 1))
         return tuple(sorted(edges))
 
-    def nodes(self, c: float, modes: int) -> tuple[np.ndarray, np.ndarray]:
-        """Gauss-Legendre nodes and weights in ``th`` on ``[0, pi/2]``, split and graded (class docstring)."""
-        th, w, _, _ = _load_quadrature(self.edges(c), modes)
-        return th, w
-
     def loads(self, c: float, scale: np.ndarray) -> tuple[np.ndarray, float | None]:
         """``(F~_Phi, S[1] D(c))``: the normalised projections and the edge functional's infinite sum (None
         without a slope).
