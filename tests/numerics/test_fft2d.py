@@ -133,6 +133,28 @@ def test_correction_kernel_against_mpmath(layer):
     assert layer_correction_kernel(layer, 2.0, np.array([5.0]))[0] == pytest.approx(g[2] / 2.0, rel=1e-12)
 
 
+def test_layer_table_equals_a_table_of_the_grid(monkeypatch):
+    """The per-layer table of H g_c(rho H) (knots every 1/40, kept per process) gives the coefficients the grid's own
+    table (knots every <= H/40 on [0, r_tab], the construction before the cache) gives, to the splines' error; and
+    its values do not depend on which grid asked first (one quadrature per unit interval of rho)."""
+    from thinlayer.numerics import _influence
+
+    layer, H = BondedLayer(0.3), 0.05
+    for d, n in [(0.01, 128), (0.0075, 160)]:
+        _influence._layer_table.cache_clear()
+        _influence._layer_segment.cache_clear()
+        tabled = influence_coefficients(layer, H, d, n)
+        with monkeypatch.context() as m:
+            m.setattr(_influence, "_RHO_TABLE", 0)  # every grid builds its own table, as before the cache
+            own = influence_coefficients(layer, H, d, n)
+        assert np.abs(tabled - own).max() <= 1e-10 * np.abs(own).max()
+    first = _influence._layer_table(layer, 52)(np.array([0.3, 7.77, 40.1]))
+    _influence._layer_table.cache_clear()
+    _influence._layer_segment.cache_clear()
+    _influence._layer_table(layer, 9)
+    assert np.array_equal(_influence._layer_table(layer, 52)(np.array([0.3, 7.77, 40.1])), first)
+
+
 @pytest.mark.parametrize("layer", [BondedLayer(0.3), BondedLayer(0.45), BondedLayer(0.499), BondedLayer(-0.9),
                                    FrictionlessLayer()], ids=repr)
 def test_layer_kernel_negligible_beyond_cutoff(layer):

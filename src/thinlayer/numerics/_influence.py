@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Callable
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -25,6 +26,7 @@ sfft, interpolate, special = (lazy_module(f"scipy.{m}") for m in ("fft", "interp
 _R_CUT = 50.0  # in units of H: the layer kernel 1/(2 pi r) + g_c(r) is below 1e-15/H beyond
 _TABLE_STEP = 1.0 / 40.0  # spacing of the g_c table, in units of H
 _CELL_GAUSS = 4  # Gauss-Legendre points per direction for the cell integral of g_c
+_RHO_TABLE = 52  # the per-layer tables of H g_c(rho H) reach rho = 52 at most: past _R_CUT with room for two cells
 _MAX_N = 4096
 #: Largest estimated memory of one solve (bytes), :func:`memory_estimate`: it admits n <= 3600.
 MAX_BYTES = 2 * 1024**3
@@ -121,6 +123,56 @@ def _uniform_spline(spline: interpolate.CubicSpline) -> Callable[[np.ndarray], n
     return ev
 
 
+def _g_c_spline(layer: LayerKernel, H: float, r_tab: float) -> Callable[[np.ndarray], np.ndarray]:
+    """``g_c`` on ``[0, r_tab]`` as a cubic spline of knot spacing ``<= H/40`` (at least 64 intervals).
+
+    ``g_c(r) = G(r/H)/H`` with ``G`` a function of the layer alone.  Where the spacing is ``H/40`` the spline is
+    the layer's table of ``G`` on ``0 <= rho <= m`` (``m = ceil(r_tab/H)``, :func:`_layer_table`), scaled: its
+    knot values are computed once per layer and process, whatever the grid.  A domain much smaller than H
+    (``r_tab < 1.6 H``: a finer spacing) or wider than 52 H gets a table of its own.
+    """
+    m = math.ceil(r_tab / H)
+    if _TABLE_STEP * H * 64 <= r_tab and m <= _RHO_TABLE:
+        try:
+            G = _layer_table(layer, m)
+        except TypeError:  # a layer that cannot be a cache key
+            G = None
+        if G is not None:
+            inv_H = 1.0 / H
+
+            def g_c(r: np.ndarray) -> np.ndarray:
+                out = G(r * inv_H)
+                out *= inv_H
+                return out
+
+            return g_c
+    npts = max(65, math.ceil(r_tab / (_TABLE_STEP * H)) + 1)
+    rr = np.linspace(0.0, r_tab, npts)
+    return _uniform_spline(interpolate.CubicSpline(rr, layer_correction_kernel(layer, H, rr),
+                                                   bc_type=((1, 0.0), "not-a-knot")))
+
+
+@lru_cache(maxsize=64)
+def _layer_table(layer: LayerKernel, m: int) -> Callable[[np.ndarray], np.ndarray]:
+    """The layer's ``G(rho) = H g_c(rho H)`` as a cubic spline on the knots ``rho = 0, 1/40, ..., m``.
+
+    The knot values come in unit intervals of rho (:func:`_layer_segment`), each by ``layer_correction_kernel``
+    at ``H = 1`` with the J0 quadrature its own largest rho needs: the same values whatever grid asked first.
+    """
+    knots = np.concatenate([_layer_segment(layer, k) for k in range(m)] + [_layer_segment(layer, m)[:1]])
+    rr = np.arange(knots.size) * _TABLE_STEP
+    return _uniform_spline(interpolate.CubicSpline(rr, knots, bc_type=((1, 0.0), "not-a-knot")))
+
+
+@lru_cache(maxsize=4096)
+def _layer_segment(layer: LayerKernel, k: int) -> np.ndarray:
+    """``G`` at the 40 knots ``rho = k, k + 1/40, ..., k + 39/40`` (read-only)."""
+    per = round(1.0 / _TABLE_STEP)
+    out = layer_correction_kernel(layer, 1.0, (k * per + np.arange(per)) * _TABLE_STEP)
+    out.setflags(write=False)
+    return out
+
+
 @boundary
 def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, n: int, *,
                            nu: float | None = None, mu: float = 1.0) -> np.ndarray:
@@ -177,12 +229,7 @@ def influence_coefficients(layer: LayerKernel, H: float | None, spacing: float, 
         near = np.hypot(X, Y) <= _R_CUT * H + d  # beyond, the two parts cancel to rounding
         kk, ll, X, Y = kk[near], ll[near], X[near], Y[near]
         vals = _love_square(X, Y, 0.5 * d) / (2.0 * math.pi)
-        # spline table of g_c on [0, r_tab], spacing <= H/40 (and fine enough for a domain much smaller than H)
-        r_tab = float(np.hypot(X, Y).max(initial=0.0)) + d
-        npts = max(65, math.ceil(r_tab / (_TABLE_STEP * H)) + 1)
-        rr = np.linspace(0.0, r_tab, npts)
-        spline = interpolate.CubicSpline(rr, layer_correction_kernel(layer, H, rr), bc_type=((1, 0.0), "not-a-knot"))
-        g_c = _uniform_spline(spline)
+        g_c = _g_c_spline(layer, H, float(np.hypot(X, Y).max(initial=0.0)) + d)
         xg, wg = special.roots_legendre(_CELL_GAUSS)
         ya, wa = 0.5 * d * xg, 0.5 * d * wg
         for i in range(_CELL_GAUSS):
