@@ -187,6 +187,29 @@ def test_q_mpmath_matches_table(exact03):
         assert float(exact03.q(tau)) == pytest.approx(float(exact03.q_numpy(tau)), abs=1e-10)
 
 
+def test_panel_sum_in_mpfr_is_mpmaths_to_the_bit(exact03):
+    """log Phi(p) of the panel rule (3.19)-(3.21): the node sum runs in gmpy2's MPFR; the same sum in mpmath's own
+    arithmetic (each operation rounded at mpmath's precision) gives the same bits, at several precisions and p."""
+    tr = exact03._transform
+
+    def mpmath_sum(p):
+        t2, wl = tr.mp_rule(mpmath.mp.dps + 5)
+        P = p * p
+        re, im = mpmath.re(P), mpmath.im(P)
+        sr = si = mpmath.mpf(0)
+        for a0, c in zip(t2, wl):
+            a = a0 + re
+            d = c / (a * a + im * im)
+            sr += d * a
+            si += d
+        return tr.norm.log_phi0_mp(p) + p * mpmath.mpc(sr, -im * si)
+
+    for dps in (15, 33):
+        with mpmath.workdps(dps):
+            for p in (mpmath.mpc(0.3, 0.2), mpmath.mpc(40, -100), mpmath.mpf(2)):
+                assert tr.log_phi_panel_mp(p) == mpmath_sum(p)
+
+
 def test_integral_equation_3_22(exact03):
     # int_0^oo qhat(tau') N(tau' - tau) dtau' = pi^2 A (tau + h), with N from (3.17)
     A = float(BondedLayer("3/10").A)
