@@ -30,6 +30,7 @@ RANK = {
     "thinlayer._checks": 1,      # argument validators: import only thinlayer.errors
     "thinlayer._series": 0,      # power-series arithmetic
     "thinlayer._lazy": 0,        # package names imported on first use (PEP 562)
+    "thinlayer._mpfr": 0,        # exact conversions between mpmath and gmpy2's MPFR: imports nothing of thinlayer
     "thinlayer._cache": 0,       # the disk cache of per-nu constants: imports nothing of thinlayer
     "thinlayer.symbols": 0,      # the paper's symbols
     "thinlayer.normal": 0,       # the normal form of printed formulas (LaTeX and text): imports nothing of thinlayer

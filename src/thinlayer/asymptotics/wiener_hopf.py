@@ -85,13 +85,13 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import Any, ClassVar
 
-import gmpy2
 import mpmath
 import numpy as np
 import sympy as sp
 
 from .._cache import cached
 from .._checks import InputError, InputTypeError, parse_nu
+from .._mpfr import stieltjes_sums, to_mpfr
 from ..display import RichDisplay, fmt
 from ..errors import boundary, boundary_methods
 from ..layers.kernels import BondedLayer, FrictionlessLayer, LayerKernel
@@ -593,34 +593,15 @@ class _Transform:
             self._mp_rules[dps] = (t2, wl)
         return self._mp_rules[dps]
 
-    def gmpy_rule(self, dps: int) -> tuple[list, list]:
-        """:meth:`mp_rule` as gmpy2 ``mpfr`` numbers, each exactly the mpmath number (its own precision)."""
-        if dps not in self._gmpy_rules:
-            t2, wl = self.mp_rule(dps)
-            self._gmpy_rules[dps] = ([_mpfr_exact(x) for x in t2], [_mpfr_exact(x) for x in wl])
-        return self._gmpy_rules[dps]
-
     def log_phi_panel_mp(self, p):
-        """``log Phi(p)`` by the panel rule at the current mpmath precision (real arithmetic per term).
-
-        The sum over the rule's nodes runs in gmpy2's MPFR at mpmath's working precision: every addition,
-        product and quotient is rounded to nearest at ``mpmath.mp.prec`` bits from exact operands, as mpmath's own
-        arithmetic rounds them, so the sums are mpmath's to the bit, about ten times faster.
-        """
-        dps, prec = mpmath.mp.dps + 5, mpmath.mp.prec
+        """``log Phi(p)`` by the panel rule at the current mpmath precision: the node sums in MPFR, mpmath's bits."""
+        dps = mpmath.mp.dps + 5
+        if dps not in self._gmpy_rules:  # the rule's nodes and weights, exactly, as MPFR numbers
+            self._gmpy_rules[dps] = tuple([to_mpfr(x) for x in v] for v in self.mp_rule(dps))
         P = p * p
         re, im = mpmath.re(P), mpmath.im(P)
-        im2 = im * im
-        t2, wl = self.gmpy_rule(dps)
-        with gmpy2.context(precision=prec):
-            r, i2 = _mpfr_exact(re), _mpfr_exact(im2)
-            sr = si = gmpy2.mpfr(0)
-            for a0, c in zip(t2, wl):
-                a = a0 + r
-                d = c / (a * a + i2)
-                sr += d * a
-                si += d
-        return self.norm.log_phi0_mp(p) + p * mpmath.mpc(_mpf_exact(sr), -im * _mpf_exact(si))
+        sr, si = stieltjes_sums(*self._gmpy_rules[dps], re, im * im)
+        return self.norm.log_phi0_mp(p) + p * mpmath.mpc(sr, -im * si)
 
     def log_phi_mp(self, p, dps: int):
         f = _log_ratio_over_t2(self.kern, self.norm, dps)
@@ -629,24 +610,6 @@ class _Transform:
         pts = [mpmath.mpf(0)] + [mpmath.mpf(s) for s in pts if s > 0] + [mpmath.inf]
         I = mpmath.quad(lambda t: f(t) * t * t / (t * t + p * p), pts)
         return self.norm.log_phi0_mp(p) + p * I / mpmath.pi
-
-
-def _mpfr_exact(x: mpmath.mpf) -> gmpy2.mpfr:
-    """A finite mpmath number as a gmpy2 ``mpfr`` of the same value (precision: the mantissa's bits)."""
-    sign, man, exp, bc = x._mpf_
-    if not man:
-        if exp:  # inf or nan
-            raise InputError(f"the panel rule needs finite numbers, got {x}")
-        return gmpy2.mpfr(0)
-    with gmpy2.context(precision=max(int(bc), 2)):  # the mantissa's bits: exact (a negation rounds too)
-        v = gmpy2.mul_2exp(gmpy2.mpfr(-man if sign else man), int(exp))
-    return v
-
-
-def _mpf_exact(v: gmpy2.mpfr) -> mpmath.mpf:
-    """A finite gmpy2 ``mpfr`` as an mpmath number (exact at mpmath's precision when v has no more bits)."""
-    man, exp = v.as_mantissa_exp()
-    return mpmath.mpf((int(man), int(exp)))
 
 
 def _qhat_dehoog(laplace, tau: float, dps: int) -> mpmath.mpf:
