@@ -61,6 +61,15 @@ def pytest_collection_finish(session):
     gc.enable()
 
 
+def pytest_sessionfinish(session):
+    """The session's garbage collected once, then what is left frozen: pytest's unraisable-exception check
+    collects five times more at exit (``gc_collect_harder``), each a walk of every object the worker still holds
+    (measured: 1.5 s after the last test for 0.3 M objects, 3.1 s for 0.9 M; 0.2 s with this).  Garbage cycles
+    are still collected, here, so a finaliser's unraisable exception is still reported."""
+    gc.collect()
+    gc.freeze()
+
+
 TESTS = os.path.dirname(os.path.abspath(__file__))
 _CACHE_ENV = "THINLAYER_CACHE_DIR"
 
