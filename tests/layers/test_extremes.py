@@ -110,3 +110,38 @@ def test_no_floating_point_warnings():
         for layer in LAYERS[:-1]:
             layer.L_numeric(U[U > 0], over_u=True)
             layer.L_numeric(U)
+
+
+def _kernel_in_mpmath_arithmetic(u, kappa, frictionless, over_u):
+    """L(u) of the module docstring of thinlayer.layers.numeric, every operation in mpmath (the construction the
+    engine used before its MPFR kernel): guard digits 3 log10(1/u) + 5 below u = 1, 5 above."""
+    u = mpmath.mpf(u)
+    extra = max(0, int(-3 * mpmath.log10(u)) + 5) if u < 1 else 5
+    with mpmath.extradps(extra):
+        E = mpmath.exp(-2 * u)
+        if frictionless:
+            a = -mpmath.expm1(-2 * u)
+            val = a * a / (-mpmath.expm1(-4 * u) + 4 * u * E)
+        else:
+            x = 2 * u
+            S = (mpmath.sinh(x) - x) * E if x < 40 else (1 - E * E) / 2 - x * E
+            val = (2 * kappa * S + 4 * u * (kappa - 1) * E) / (kappa * (1 + E * E) + (1 + kappa**2 + 4 * u * u) * E)
+        if over_u:
+            val = val / u
+    return +val
+
+
+@pytest.mark.parametrize("dps", [15, 20, 50])
+def test_mpfr_kernel_is_the_mpmath_kernel_to_the_bit(dps):
+    """(2.3) in the mpmath backend is computed in MPFR (gmpy2) at mpmath's precision plus the same guard digits: both
+    round every step to nearest, so the values are mpmath's own to the last bit, from u = 1e-12 to 1e3."""
+    rng = np.random.default_rng(dps)
+    with mpmath.workdps(dps):
+        for layer, frictionless in [(tl.BondedLayer("3/10"), False), (tl.BondedLayer(0.49), False),
+                                    (tl.FrictionlessLayer(), True)]:
+            k = None if frictionless else layer.kappa  # (2.3): a Rational, or an mpmath number at the layer's dps
+            kappa = k if k is None or isinstance(k, mpmath.mpf) else mpmath.mpf(int(k.p)) / int(k.q)
+            for u in 10.0 ** rng.uniform(-12, 3, 40):
+                for over_u in (False, True):
+                    got = layer.L_numeric(mpmath.mpf(u), "mpmath", over_u=over_u)
+                    assert got == _kernel_in_mpmath_arithmetic(u, kappa, frictionless, over_u), (layer, u, over_u)

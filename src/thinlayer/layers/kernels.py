@@ -20,6 +20,7 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from fractions import Fraction
+from functools import lru_cache
 from typing import Any, ClassVar
 
 import mpmath
@@ -428,9 +429,7 @@ class BondedLayer(LayerKernel):
         if backend == "numpy":
             return kernel_numeric.bonded_numpy(u, float(self.kappa), over_u)
         if backend == "mpmath":
-            k = self.kappa
-            k = mpmath.mpf(k.p) / k.q if isinstance(k, sp.Rational) else k
-            return kernel_numeric.bonded_mpmath(u, k, over_u)
+            return kernel_numeric.bonded_mpmath(u, _kappa_mpmath(self.nu, self.dps, mpmath.mp.prec), over_u)
         raise InputError(f"backend must be 'numpy' or 'mpmath', got {backend!r}")
 
     def __repr__(self) -> str:
@@ -441,6 +440,22 @@ class BondedLayer(LayerKernel):
         if self.parameter is not None:
             return [f"BondedLayer({self.parameter_name})"]
         return [f"BondedLayer(nu={fmt(self.nu, 15)})"]
+
+
+@lru_cache(maxsize=256)
+def _kappa_mpmath(nu: Any, dps: int, prec: int) -> mpmath.mpf:
+    """``kappa = 3 - 4 nu`` (2.3) as an mpmath number at ``prec`` bits, for a numeric nu: an exact rational's
+    correctly rounded, a float nu's (an mpmath number at the layer's ``dps``) rounded again.  Kept per (nu, dps,
+    precision): the mpmath kernel needs it at every node of a quadrature.
+    """
+    if isinstance(nu, loaded_types("sympy", "Rational")):
+        k = 3 - 4 * nu
+        with mpmath.workprec(prec):
+            return mpmath.mpf(int(k.p)) / int(k.q)
+    with mpmath.workdps(dps):  # as the property kappa computes it
+        k = 3 - 4 * nu
+    with mpmath.workprec(prec):
+        return mpmath.mpf(k)
 
 
 @boundary_methods

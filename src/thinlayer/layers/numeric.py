@@ -24,10 +24,13 @@ from __future__ import annotations
 
 import math
 
+import gmpy2
 import mpmath
 import numpy as np
+from mpmath.libmp import dps_to_prec
 
 from .._checks import InputError
+from .._mpfr import to_mpf, to_mpfr
 
 # Taylor coefficients of S(x)/x^3 = sum_k x^(2k) / (2k+3)!, enough for x <= 2 to 1e-19.
 _S_TERMS = 14
@@ -138,10 +141,21 @@ def _frictionless_numpy(u: np.ndarray, over_u: bool):
 
 
 def _extra_digits(u) -> int:
+    """Guard digits for L(u) at small u: ``3 log10(1/u) + 5`` (the cancellation in ``sinh x - x``), 5 for u >= 1."""
     u = abs(mpmath.mpf(u))
     if u == 0:
         return 0
-    return max(0, int(-3 * mpmath.log10(u)) + 5) if u < 1 else 5
+    if u >= 1:
+        return 5
+    f = float(u)  # a double's log10 where u is one (the count is a guard, not a result)
+    lg = math.log10(f) if f > 1e-300 else float(mpmath.log10(u))
+    return max(0, int(-3 * lg) + 5)
+
+
+def _mpfr(extra: int) -> gmpy2.context:
+    """An MPFR context at mpmath's working precision plus ``extra`` digits, with MPFR's whole exponent range."""
+    return gmpy2.context(precision=dps_to_prec(mpmath.mp.dps + extra), emin=gmpy2.get_emin_min(),
+                         emax=gmpy2.get_emax_max())
 
 
 def bonded_mpmath(u, kappa, over_u: bool = False):
@@ -156,16 +170,17 @@ def bonded_mpmath(u, kappa, over_u: bool = False):
         return 4 * (kappa - 1) / (kappa + 1) ** 2 if over_u else mpmath.mpf(0)
     if mpmath.isinf(u):
         return mpmath.mpf(0) if over_u else mpmath.mpf(1)
-    with mpmath.extradps(_extra_digits(u)):
-        x = 2 * u
-        E = mpmath.exp(-x)
-        S = (mpmath.sinh(x) - x) * E if x < 40 else (1 - E * E) / 2 - x * E
-        num = 2 * kappa * S + 4 * u * (kappa - 1) * E
-        den = kappa * (1 + E * E) + (1 + kappa**2 + 4 * u * u) * E
+    U, K = to_mpfr(u), to_mpfr(kappa)
+    with _mpfr(_extra_digits(u)):  # MPFR at mpmath's precision + guard digits: one rounding to mpmath's at the end
+        x = 2 * U
+        E = gmpy2.exp(-x)
+        S = (gmpy2.sinh(x) - x) * E if x < 40 else (1 - E * E) / 2 - x * E
+        num = 2 * K * S + 4 * U * (K - 1) * E
+        den = K * (1 + E * E) + (1 + K * K + 4 * U * U) * E
         val = num / den
         if over_u:
-            val = val / u
-    return +val
+            val = val / U
+    return to_mpf(val)
 
 
 def frictionless_mpmath(u, over_u: bool = False):
@@ -175,10 +190,11 @@ def frictionless_mpmath(u, over_u: bool = False):
         return mpmath.mpf(1) / 2 if over_u else mpmath.mpf(0)
     if mpmath.isinf(u):
         return mpmath.mpf(0) if over_u else mpmath.mpf(1)
-    with mpmath.extradps(_extra_digits(u)):
-        E = mpmath.exp(-2 * u)
-        a = -mpmath.expm1(-2 * u)
-        val = a * a / (-mpmath.expm1(-4 * u) + 4 * u * E)
+    U = to_mpfr(u)
+    with _mpfr(_extra_digits(u)):
+        E = gmpy2.exp(-2 * U)
+        a = -gmpy2.expm1(-2 * U)
+        val = a * a / (-gmpy2.expm1(-4 * U) + 4 * U * E)
         if over_u:
-            val = val / u
-    return +val
+            val = val / U
+    return to_mpf(val)
