@@ -115,9 +115,10 @@ def test_krein_identity():
 
 
 def test_even_bessel_transforms_by_quadrature():
-    """(-1)^m j_2m(t) = int_0^1 P_2m(y) cos(t y) dy, both branches (scipy below, recurrence above 1.5 (2n - 2) + 30)."""
+    """(-1)^m j_2m(t) = int_0^1 P_2m(y) cos(t y) dy on every branch: scipy below t = 1e-3, Miller's downward
+    recurrence below t = 2 (n - 1), the upward one above."""
     n = 12
-    t = np.array([0.0, 0.3, 5.0, 40.0, 55.0, 80.0, 400.0])
+    t = np.array([0.0, 5e-4, 2e-3, 0.3, 5.0, 21.9, 22.0, 40.0, 55.0, 80.0, 400.0])
     y, w = special.roots_legendre(800)
     y, w = 0.5 * (y + 1), 0.5 * w
     quad = np.array([[w @ (special.eval_legendre(2 * m, y) * np.cos(tt * y)) for m in range(n)] for tt in t])

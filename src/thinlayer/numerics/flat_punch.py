@@ -103,6 +103,7 @@ from .._lazy import lazy_module
 from ..display import RichDisplay
 from ..layers.kernels import LayerKernel
 from ._layer import U_MAX, numeric_layer_nu
+from ._spectral import spherical_jn_even
 
 special = lazy_module("scipy.special")  # scipy imported on first use
 
@@ -329,23 +330,18 @@ def _t_rule(layer: LayerKernel, lam: float) -> tuple[np.ndarray, np.ndarray]:
 def even_bessel_transforms(t: np.ndarray, n: int) -> np.ndarray:
     """``(-1)^m j_2m(t) = int_0^1 P_2m(y) cos(t y) dy`` for ``m < n``, shape ``(len(t), n)``.
 
-    scipy's ``spherical_jn`` where ``t <= 1.5 (2n - 2) + 30``; above, the upward recurrence
-    ``j_{k+1} = (2k + 1) j_k/t - j_{k-1}``, stable while the order stays below ``t``.
+    The recurrences over the order of :func:`thinlayer.numerics._spectral.spherical_jn_even` (upward where every
+    order oscillates, Miller's downward recurrence below), 6-8x faster than scipy's ``spherical_jn`` on a whole
+    rule and as accurate against mpmath (3e-16 absolute); scipy's ``spherical_jn`` below ``t = 1e-3``, where the
+    downward recurrence's rescaling would be slow to catch up.
     """
     t = np.asarray(t, dtype=float)
-    kmax = 2 * n - 2
     m = np.arange(n)
     out = np.empty((t.size, n))
-    big = t > 1.5 * kmax + 30.0
-    out[~big] = special.spherical_jn(2 * m[None, :], t[~big][:, None])
-    tb = t[big]
-    if tb.size:
-        jp, jc = np.sin(tb) / tb, np.sin(tb) / tb**2 - np.cos(tb) / tb
-        out[big, 0] = jp
-        for k in range(1, kmax):
-            jp, jc = jc, (2 * k + 1) / tb * jc - jp
-            if k % 2:  # jc is now j_{k+1}, k + 1 even
-                out[big, (k + 1) // 2] = jc
+    tiny = t < 1e-3
+    out[tiny] = special.spherical_jn(2 * m[None, :], t[tiny][:, None])
+    if not tiny.all():
+        out[~tiny] = spherical_jn_even(t[~tiny], n)
     return out * ((-1.0) ** m)[None, :]
 
 
