@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from typing import Any
 
 import numpy as np
@@ -132,6 +132,20 @@ def _compiled(expr: sp.Expr):
     return tuple(sp.lambdify(r, e, "numpy") for e in (expr, d1, d2))
 
 
+@lru_cache(maxsize=256)
+def _profile_of(tip: Any):
+    """Phi of a numeric tip compiled from its ``numeric_expr``, per tip (a subclass builds the expression anew at
+    each access).
+    """
+    return _compiled(tip.numeric_expr)[0]
+
+
+@lru_cache(maxsize=256)
+def _derivatives_of(tip: Any) -> tuple:
+    """``(Phi, Phi', Phi'')`` of a numeric tip compiled from its ``radial_expr``, per tip."""
+    return _compiled(tip.radial_expr)
+
+
 def _evaluate(fn, rr: np.ndarray) -> np.ndarray:
     with np.errstate(all="ignore"):  # the branches a Piecewise discards may be nan
         out = np.asarray(fn(rr), dtype=float)
@@ -169,10 +183,13 @@ class RadialTip(Tip):
         """Phi in ``x1, x2``: the profile at ``r = sqrt(x1^2 + x2^2)``."""
         return self.radial_expr.xreplace({r: sp.sqrt(S.x1**2 + S.x2**2)})
 
-    @property
+    @cached_property
     def parameters(self) -> tuple[sp.Symbol, ...]:
-        """The free symbols of Phi other than r, sorted by name."""
+        """The free symbols of Phi other than r, sorted by name (kept on the immutable tip: every numeric method asks
+        for it, and a subclass builds ``radial_expr`` anew at each access).
+        """
         return tuple(sorted(self.radial_expr.free_symbols - {r}, key=lambda q: q.name))
+
 
     @property
     def description(self) -> str:
@@ -211,19 +228,19 @@ class RadialTip(Tip):
         """``Phi(|r|)`` (numpy, vectorised), ``+inf`` where the tip is absent."""
         self._need_numbers("its profile")
         rr = np.abs(points(rr, "r"))
-        return _evaluate(_compiled(self.numeric_expr)[0], rr)
+        return _evaluate(_profile_of(self), rr)
 
     def radial_slope(self, rr: Any) -> np.ndarray:
         """``dPhi/dr`` at ``|r|`` (numpy, vectorised)."""
         self._need_numbers("its slope")
         rr = np.abs(points(rr, "r"))
-        return _evaluate(_compiled(self.radial_expr)[1], rr)
+        return _evaluate(_derivatives_of(self)[1], rr)
 
     def radial_curvature(self, rr: Any) -> np.ndarray:
         """``d^2 Phi/dr^2`` at ``|r|`` (numpy, vectorised; the one-sided value at a join)."""
         self._need_numbers("its curvature")
         rr = np.abs(points(rr, "r"))
-        return _evaluate(_compiled(self.radial_expr)[2], rr)
+        return _evaluate(_derivatives_of(self)[2], rr)
 
     def profile(self, x1: Any, x2: Any) -> np.ndarray:
         """Phi at the points ``(x1, x2)`` (numpy, broadcast): the profile at ``hypot(x1, x2)``."""
