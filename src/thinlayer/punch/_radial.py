@@ -190,7 +190,6 @@ class RadialTip(Tip):
         """
         return tuple(sorted(self.radial_expr.free_symbols - {r}, key=lambda q: q.name))
 
-
     @property
     def description(self) -> str:
         """One phrase for result summaries."""
