@@ -75,15 +75,21 @@ def test_force_by_mpmath_quadrature():
     assert abs(Pk / s.force - 1) < 1e-12 and abs(d - s.delta) < 1e-14 and abs(a1 - s.a1) < 1e-14
 
 
+def _disc_equals_the_sphere(law, order: int, radii, tol: float, H=0.01, R=1.0, w=0.02, mu=1.0) -> None:
+    """At R1 = R2 = R the elliptic law's state at the sphere's depth (J.11) of the same order (plus the m_1 shift
+    of (2.29)) has a1 = a2 = c and the sphere's force, to ``tol``."""
+    sph = thin_layer_jkr(0.3, order)
+    dm = law.m1 * H * H * 2 / R
+    for c in radii:
+        d, P = sph.evaluate(c, H, R, w, mu)
+        s = law.state(float(d) + dm, H, R, R, w, mu)
+        assert abs(s.a1 - c) < tol and abs(s.a2 - c) < tol and abs(s.force / float(P) - 1) < tol
+
+
 def test_sphere_limit_is_J11():
     """R1 = R2 = R (m_1 shift removed): the state at c = sqrt(2 R k) is (J.11) at order 0, to rounding."""
     H, R, w, mu = 0.01, 1.0, 0.02, 1.0
-    sph = thin_layer_jkr(0.3, 0)
-    dm = LAW.m1 * H * H * 2 / R
-    for c in (0.15, 0.3):
-        d, P = sph.evaluate(c, H, R, w, mu)
-        s = LAW.state(float(d) + dm, H, R, R, w, mu)
-        assert abs(s.a1 - c) < 1e-12 and abs(s.a2 - c) < 1e-12 and abs(s.force / float(P) - 1) < 1e-12
+    _disc_equals_the_sphere(LAW, 0, (0.15, 0.3), 1e-12)
     off = LAW.pull_off(H, R, R, w, mu)
     assert abs(off.force + 2 * math.pi * w * R) < 1e-12 and abs(thin_layer_jkr(0.3, 0).pull_off(H, R, w, mu)[1]
                                                                 - 2 * math.pi * w * R) < 1e-6
@@ -123,13 +129,7 @@ LAW1 = _LazyLaw(order=1)
 def test_first_order_disc_is_J11_order_1():
     """(J.30), (J.31) at R1 = R2: the fixed point is exact and the state is (J.11) at order 1 (derived separately, in
     (c, a_e = c + h* H)) to rounding, with the m_1 shift of (2.29) taken out of the depth."""
-    H, R, w, mu = 0.01, 1.0, 0.02, 1.0
-    sph = thin_layer_jkr(0.3, 1)
-    dm = LAW1.m1 * H * H * 2 / R
-    for c in (0.06, 0.3):
-        d, P = sph.evaluate(c, H, R, w, mu)
-        s = LAW1.state(float(d) + dm, H, R, R, w, mu)
-        assert abs(s.a1 - c) < 1e-13 and abs(s.a2 - c) < 1e-13 and abs(s.force / float(P) - 1) < 1e-13
+    _disc_equals_the_sphere(LAW1, 1, (0.06, 0.3), 1e-13)
 
 
 @pytest.mark.parametrize("c_over_H", [8.0, 20.0])

@@ -99,12 +99,14 @@ def layer_correction_kernel(layer: LayerKernel, H: float, r: Any) -> np.ndarray:
     return (out / (2.0 * math.pi * H)).reshape(r.shape)
 
 
-def _uniform_spline(spline: interpolate.CubicSpline) -> Callable[[np.ndarray], np.ndarray]:
-    """The cubic spline on its uniform knots, evaluated without a search: the interval is ``floor(r/step)``.
+def _uniform_spline(rr: np.ndarray, values: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
+    """The cubic spline of ``g_c`` through uniform knots ``rr`` (``g_c'(0) = 0``, not-a-knot at the far end),
+    evaluated without a search: the interval is ``floor(r/step)``.
 
-    The same piecewise cubic as ``spline(r)`` for ``0 <= r <= last knot`` (a point on a knot may take the
-    neighbouring piece: equal to rounding), several times faster on the ~10^6 points of a large grid.
+    The same piecewise cubic as scipy's ``CubicSpline(r)`` for ``0 <= r <= last knot`` (a point on a knot may take
+    the neighbouring piece: equal to rounding), several times faster on the ~10^6 points of a large grid.
     """
+    spline = interpolate.CubicSpline(rr, values, bc_type=((1, 0.0), "not-a-knot"))
     x, c = spline.x, spline.c
     inv, last = (len(x) - 1) / (x[-1] - x[0]), len(x) - 2
     c0, c1, c2, c3 = (np.ascontiguousarray(c[k]) for k in range(4))
@@ -148,8 +150,7 @@ def _g_c_spline(layer: LayerKernel, H: float, r_tab: float) -> Callable[[np.ndar
             return g_c
     npts = max(65, math.ceil(r_tab / (_TABLE_STEP * H)) + 1)
     rr = np.linspace(0.0, r_tab, npts)
-    return _uniform_spline(interpolate.CubicSpline(rr, layer_correction_kernel(layer, H, rr),
-                                                   bc_type=((1, 0.0), "not-a-knot")))
+    return _uniform_spline(rr, layer_correction_kernel(layer, H, rr))
 
 
 @lru_cache(maxsize=64)
@@ -161,7 +162,7 @@ def _layer_table(layer: LayerKernel, m: int) -> Callable[[np.ndarray], np.ndarra
     """
     knots = np.concatenate([_layer_segment(layer, k) for k in range(m)] + [_layer_segment(layer, m)[:1]])
     rr = np.arange(knots.size) * _TABLE_STEP
-    return _uniform_spline(interpolate.CubicSpline(rr, knots, bc_type=((1, 0.0), "not-a-knot")))
+    return _uniform_spline(rr, knots)
 
 
 @lru_cache(maxsize=4096)
